@@ -1,0 +1,220 @@
+#include "options.h"
+
+#include <errno.h>
+#include <getopt.h>
+#include <limits.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_KNOBS 16
+#define MAX_IMAGE_SIDE 16384
+
+enum { OPT_SEED = 256, OPT_KNOB = 512 };
+
+static bool parse_long(const char *s, long min, long max, long *out)
+{
+    char *end;
+    errno = 0;
+    long value = strtol(s, &end, 10);
+    if (errno || end == s || *end != '\0' || value < min || value > max)
+        return false;
+    *out = value;
+    return true;
+}
+
+static bool parse_size(const char *s, int *width, int *height)
+{
+    char *end;
+    errno = 0;
+    long w = strtol(s, &end, 10);
+    if (errno || end == s || (*end != 'x' && *end != 'X'))
+        return false;
+    long h;
+    if (!parse_long(end + 1, 1, MAX_IMAGE_SIDE, &h) || w < 1 || w > MAX_IMAGE_SIDE)
+        return false;
+    *width = (int)w;
+    *height = (int)h;
+    return true;
+}
+
+static bool is_square(long n)
+{
+    long root = 1;
+    while (root * root < n)
+        root++;
+    return root * root == n;
+}
+
+static bool set_knob(const knob *k, const char *value, FILE *err)
+{
+    switch (k->kind) {
+    case KNOB_CHOICE:
+        for (int c = 0; k->choices[c]; c++) {
+            if (strcmp(k->choices[c], value) == 0) {
+                *(int *)k->target = c;
+                return true;
+            }
+        }
+        fprintf(err, "--%s: '%s' is not one of:", k->name, value);
+        for (int c = 0; k->choices[c]; c++)
+            fprintf(err, " %s", k->choices[c]);
+        fputc('\n', err);
+        return false;
+    case KNOB_INT: {
+        long v;
+        if (!parse_long(value, INT_MIN, INT_MAX, &v)) {
+            fprintf(err, "--%s: '%s' is not an integer\n", k->name, value);
+            return false;
+        }
+        *(int *)k->target = (int)v;
+        return true;
+    }
+    case KNOB_REAL: {
+        char *end;
+        errno = 0;
+        double v = strtod(value, &end);
+        if (errno || end == value || *end != '\0' || !isfinite(v)) {
+            fprintf(err, "--%s: '%s' is not a finite number\n", k->name, value);
+            return false;
+        }
+        *(real *)k->target = (real)v;
+        return true;
+    }
+    }
+    return false;
+}
+
+static void print_knob_default(const knob *k, FILE *out)
+{
+    switch (k->kind) {
+    case KNOB_CHOICE:
+        fprintf(out, " (");
+        for (int c = 0; k->choices[c]; c++)
+            fprintf(out, "%s%s", c ? "|" : "", k->choices[c]);
+        fprintf(out, "; default %s)", k->choices[*(const int *)k->target]);
+        break;
+    case KNOB_INT:
+        fprintf(out, " (default %d)", *(const int *)k->target);
+        break;
+    case KNOB_REAL:
+        fprintf(out, " (default %g)", (double)*(const real *)k->target);
+        break;
+    }
+}
+
+static void print_help(const char *program, const char *summary, const knob *knobs, int n_knobs, FILE *out)
+{
+    fprintf(out,
+            "%s\n"
+            "usage: %s [options] [scene.xml]\n"
+            "  scene.xml           a scene file (see SCENES.md); without one, the built-in scene\n"
+            "  -o, --output FILE   the PNG to write\n"
+            "  -s, --size WxH      image size in pixels (default: the scene's)\n"
+            "  -n, --samples N     samples per pixel, a square number (default: the scene's, else 1)\n"
+            "  -j, --threads N     threads to render with (default: all cores)\n"
+            "      --seed N        seed for the sub-pixel sample positions (default 0)\n"
+            "  -q, --quiet         no progress line and no summary\n"
+            "  -h, --help          this text\n",
+            summary, program);
+    for (int k = 0; k < n_knobs; k++) {
+        int pad = 14 - (int)strlen(knobs[k].name);
+        fprintf(out, "      --%s=V%*s%s", knobs[k].name, pad > 1 ? pad : 1, "", knobs[k].help);
+        print_knob_default(&knobs[k], out);
+        fputc('\n', out);
+    }
+    fprintf(out, "real is %s in this build.\n", REAL_NAME);
+}
+
+options_result options_parse(int argc, char **argv, const char *summary, const knob *knobs, int n_knobs,
+                             render_options *opt, FILE *out, FILE *err)
+{
+    *opt = (render_options){0};
+    if (n_knobs > MAX_KNOBS) {
+        fprintf(err, "%s: too many knobs (%d > %d)\n", argv[0], n_knobs, MAX_KNOBS);
+        return OPTIONS_ERROR;
+    }
+    struct option longs[8 + MAX_KNOBS + 1] = {
+        {"output", required_argument, NULL, 'o'}, {"size", required_argument, NULL, 's'},
+        {"samples", required_argument, NULL, 'n'}, {"threads", required_argument, NULL, 'j'},
+        {"seed", required_argument, NULL, OPT_SEED}, {"quiet", no_argument, NULL, 'q'},
+        {"help", no_argument, NULL, 'h'},
+    };
+    int n_longs = 7;
+    for (int k = 0; k < n_knobs; k++)
+        longs[n_longs++] = (struct option){knobs[k].name, required_argument, NULL, OPT_KNOB + k};
+    longs[n_longs] = (struct option){0};
+
+    optind = 1; /* getopt keeps state: reset it so that tests can parse many times */
+    opterr = 0;
+    int c;
+    long value;
+    while ((c = getopt_long(argc, argv, ":o:s:n:j:qh", longs, NULL)) != -1) {
+        switch (c) {
+        case 'o':
+            opt->output = optarg;
+            break;
+        case 's':
+            if (!parse_size(optarg, &opt->width, &opt->height)) {
+                fprintf(err, "%s: --size: '%s' is not WxH with sides from 1 to %d\n", argv[0], optarg, MAX_IMAGE_SIDE);
+                return OPTIONS_ERROR;
+            }
+            break;
+        case 'n':
+            if (!parse_long(optarg, 1, 1L << 16, &value) || !is_square(value)) {
+                fprintf(err, "%s: --samples: '%s' is not a square number from 1 to 65536 (1, 4, 9, 16, ...)\n",
+                        argv[0], optarg);
+                return OPTIONS_ERROR;
+            }
+            opt->samples = (int)value;
+            break;
+        case 'j':
+            if (!parse_long(optarg, 1, 1024, &value)) {
+                fprintf(err, "%s: --threads: '%s' is not a number from 1 to 1024\n", argv[0], optarg);
+                return OPTIONS_ERROR;
+            }
+            opt->threads = (int)value;
+            break;
+        case OPT_SEED: {
+            char *end;
+            errno = 0;
+            unsigned long long seed = strtoull(optarg, &end, 10);
+            if (errno || end == optarg || *end || optarg[0] == '-') {
+                fprintf(err, "%s: --seed: '%s' is not a non-negative integer\n", argv[0], optarg);
+                return OPTIONS_ERROR;
+            }
+            opt->seed = (unsigned long)seed;
+            break;
+        }
+        case 'q':
+            opt->quiet = true;
+            break;
+        case 'h':
+            print_help(argv[0], summary, knobs, n_knobs, out);
+            return OPTIONS_EXIT;
+        case ':':
+            fprintf(err, "%s: %s needs a value (see --help)\n", argv[0], argv[optind - 1]);
+            return OPTIONS_ERROR;
+        case '?':
+            fprintf(err, "%s: unknown option '%s' (see --help)\n", argv[0], argv[optind - 1]);
+            return OPTIONS_ERROR;
+        default:
+            if (c >= OPT_KNOB && c < OPT_KNOB + n_knobs) {
+                if (!set_knob(&knobs[c - OPT_KNOB], optarg, err))
+                    return OPTIONS_ERROR;
+            }
+            break;
+        }
+    }
+    if (optind < argc)
+        opt->scene_path = argv[optind++];
+    if (optind < argc) {
+        fprintf(err, "%s: one scene file at most, but '%s' follows '%s'\n", argv[0], argv[optind], opt->scene_path);
+        return OPTIONS_ERROR;
+    }
+    return OPTIONS_OK;
+}
+
+const char *options_output(const render_options *opt, const char *fallback)
+{
+    return opt->output ? opt->output : fallback;
+}

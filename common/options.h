@@ -1,0 +1,55 @@
+/* options.h - the command line shared by every renderer.
+ *
+ *     render [options] [scene.xml]
+ *
+ * Every chapter's renderer takes the same options (output, size, samples per
+ * pixel, threads, seed, quiet, help) and adds its own accuracy knobs through
+ * a table of `knob`s, each a long option such as --sphere=robust.
+ */
+#ifndef RT_OPTIONS_H
+#define RT_OPTIONS_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "real.h"
+
+typedef struct {
+    const char *scene_path;  /* the positional argument; NULL: built-in scene */
+    const char *output;      /* -o; NULL: the renderer's default */
+    int width, height;       /* -s WxH; 0: from the scene, else the default */
+    int samples;             /* -n; samples per pixel, a square; 0: from the scene, else 1 */
+    int threads;             /* -j; 0: OpenMP's default (all cores) */
+    unsigned long seed;      /* --seed; jitters the sub-pixel samples */
+    bool quiet;              /* -q; no progress line, no summary */
+} render_options;
+
+typedef enum {
+    KNOB_CHOICE, /* target is an int: the index of the chosen word in choices */
+    KNOB_INT,    /* target is an int */
+    KNOB_REAL,   /* target is a real */
+} knob_kind;
+
+typedef struct {
+    const char *name;            /* the long option, without the dashes */
+    knob_kind kind;
+    void *target;                /* holds the default on entry */
+    const char *const *choices;  /* KNOB_CHOICE: the words, NULL-terminated */
+    const char *help;
+} knob;
+
+typedef enum {
+    OPTIONS_OK,    /* go on and render */
+    OPTIONS_EXIT,  /* --help was printed: exit 0 */
+    OPTIONS_ERROR, /* a message was printed: exit 2 */
+} options_result;
+
+/* Parses argv.  `summary` is the first line of --help.  Messages go to `out`
+ * (help) and `err` (errors); an error names the option and the problem. */
+options_result options_parse(int argc, char **argv, const char *summary, const knob *knobs, int n_knobs,
+                             render_options *opt, FILE *out, FILE *err);
+
+/* The output path: -o when given, otherwise `fallback`. */
+const char *options_output(const render_options *opt, const char *fallback);
+
+#endif

@@ -1,0 +1,94 @@
+#include "png_write.h"
+
+#include <errno.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <stb_image_write.h>
+
+#include "display.h"
+
+typedef struct {
+    FILE *file;
+    int failed;
+} png_sink;
+
+static void sink_write(void *context, void *data, int size)
+{
+    png_sink *sink = context;
+    if (!sink->failed && fwrite(data, 1, (size_t)size, sink->file) != (size_t)size)
+        sink->failed = 1;
+}
+
+/* Display bytes, top row first, as PNG wants them. */
+static uint8_t *encode_rows(const image *img, real exposure)
+{
+    uint8_t *bytes = malloc((size_t)img->width * (size_t)img->height * 3);
+    if (!bytes)
+        return NULL;
+    for (int j = 0; j < img->height; j++) {
+        uint8_t *row = bytes + (size_t)(img->height - 1 - j) * (size_t)img->width * 3;
+        for (int i = 0; i < img->width; i++) {
+            color c = *image_at(img, i, j);
+            row[3 * i + 0] = display_encode(c.r, exposure);
+            row[3 * i + 1] = display_encode(c.g, exposure);
+            row[3 * i + 2] = display_encode(c.b, exposure);
+        }
+    }
+    return bytes;
+}
+
+int png_write(const image *img, real exposure, const char *path, char *err, size_t err_size)
+{
+    uint8_t *bytes = encode_rows(img, exposure);
+    if (!bytes) {
+        snprintf(err, err_size, "%s: out of memory", path);
+        return -1;
+    }
+    size_t tmp_size = strlen(path) + sizeof ".tmp-XXXXXX";
+    char *tmp = malloc(tmp_size);
+    if (!tmp) {
+        free(bytes);
+        snprintf(err, err_size, "%s: out of memory", path);
+        return -1;
+    }
+    snprintf(tmp, tmp_size, "%s.tmp-XXXXXX", path);
+
+    int status = -1;
+    int fd = mkstemp(tmp);
+    if (fd < 0) {
+        snprintf(err, err_size, "%s: cannot create a file there: %s", path, strerror(errno));
+        goto done;
+    }
+    png_sink sink = {fdopen(fd, "wb"), 0};
+    if (!sink.file) {
+        snprintf(err, err_size, "%s: %s", path, strerror(errno));
+        close(fd);
+        unlink(tmp);
+        goto done;
+    }
+    int encoded = stbi_write_png_to_func(sink_write, &sink, img->width, img->height, 3, bytes, img->width * 3);
+    int flushed = fflush(sink.file) == 0 && fsync(fileno(sink.file)) == 0;
+    int closed = fclose(sink.file) == 0;
+    if (!encoded || sink.failed || !flushed || !closed) {
+        snprintf(err, err_size, "%s: writing the PNG failed: %s", path, errno ? strerror(errno) : "encoder error");
+        unlink(tmp);
+        goto done;
+    }
+    /* mkstemp creates the file 0600; a picture is for everyone to read. */
+    chmod(tmp, 0644);
+    if (rename(tmp, path) != 0) {
+        snprintf(err, err_size, "%s: %s", path, strerror(errno));
+        unlink(tmp);
+        goto done;
+    }
+    status = 0;
+done:
+    free(tmp);
+    free(bytes);
+    return status;
+}

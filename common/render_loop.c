@@ -1,0 +1,104 @@
+#include "render_loop.h"
+
+#include <omp.h>
+#include <stdio.h>
+#include <time.h>
+#include <unistd.h>
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+/* splitmix64: a small, well-mixed hash of a 64-bit state. */
+static uint64_t mix64(uint64_t z)
+{
+    z += 0x9e3779b97f4a7c15u;
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return z ^ (z >> 31);
+}
+
+/* A uniform number in [0, 1) from the top 24 bits, exact in float and double. */
+static real unit_from(uint64_t h) { return (real)(h >> 40) * (real)(1.0 / 16777216.0); }
+
+void render_sample_offset(unsigned long seed, int i, int j, int a, int b, int n, real *du, real *dv)
+{
+    if (n == 1) { /* one sample: the pixel centre, as in the lecture */
+        *du = *dv = (real)0.5;
+        return;
+    }
+    uint64_t h = mix64(mix64(mix64((uint64_t)seed) ^ (uint64_t)(uint32_t)i) ^ ((uint64_t)(uint32_t)j << 32 | (uint32_t)(a * n + b)));
+    *du = ((real)a + unit_from(h)) / (real)n;
+    *dv = ((real)b + unit_from(mix64(h))) / (real)n;
+}
+
+static int side_of(int samples)
+{
+    int n = 1;
+    while ((n + 1) * (n + 1) <= samples)
+        n++;
+    return n;
+}
+
+render_stats render_image(image *img, sample_fn sample, const void *scene, const render_options *opt)
+{
+    const int nx = img->width, ny = img->height;
+    const int n = side_of(opt->samples > 0 ? opt->samples : 1);
+    const real weight = (real)1 / (real)(n * n);
+    const int threads = opt->threads > 0 ? opt->threads : omp_get_max_threads();
+    const int show_progress = !opt->quiet && isatty(STDERR_FILENO);
+    const double start = now();
+    double last_report = start;
+    int rows_done = 0, reported = 0;
+    uint64_t rays = 0;
+
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) reduction(+ : rays)
+    for (int j = 0; j < ny; j++) {
+        uint64_t row_rays = 0;
+        for (int i = 0; i < nx; i++) {
+            color sum = {0, 0, 0};
+            for (int a = 0; a < n; a++) {
+                for (int b = 0; b < n; b++) {
+                    real du, dv;
+                    render_sample_offset(opt->seed, i, j, a, b, n, &du, &dv);
+                    real u = ((real)i + du) / (real)nx; /* u = (i + 0.5)/n_x for one sample */
+                    real v = ((real)j + dv) / (real)ny; /* v = (j + 0.5)/n_y */
+                    sum = color_add(sum, sample(scene, u, v, &row_rays));
+                }
+            }
+            *image_at(img, i, j) = color_scale(sum, weight);
+        }
+        rays += row_rays;
+        if (show_progress) {
+            int done;
+#pragma omp atomic capture
+            done = ++rows_done;
+            if (omp_get_thread_num() == 0) {
+                double t = now();
+                if (t - start > 1.0 && t - last_report > 0.25) {
+                    last_report = t;
+                    reported = 1;
+                    fprintf(stderr, "\rrendering: %3d%%", (int)(100L * done / ny));
+                    fflush(stderr);
+                }
+            }
+        }
+    }
+    if (reported)
+        fprintf(stderr, "\r                \r");
+    return (render_stats){rays, now() - start};
+}
+
+void render_summary(FILE *out, const char *name, const image *img, const render_options *opt,
+                    render_stats stats, const char *output)
+{
+    if (opt->quiet)
+        return;
+    int threads = opt->threads > 0 ? opt->threads : omp_get_max_threads();
+    fprintf(out, "%s: %dx%d, %d spp, %llu rays, %.3f s, %d thread%s -> %s\n", name, img->width, img->height,
+            opt->samples > 0 ? opt->samples : 1, (unsigned long long)stats.rays, stats.seconds, threads,
+            threads == 1 ? "" : "s", output);
+}

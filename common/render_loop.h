@@ -1,0 +1,43 @@
+/* render_loop.h - the lecture's image-order loop, over rows in parallel.
+ *
+ *     for 0 <= j < n_y
+ *         for 0 <= i < n_x
+ *             image(i, j) = average of sample(u, v) over the pixel's samples
+ *
+ * With one sample per pixel, (u, v) is the pixel centre of the lecture's
+ * "pixel-to-image mapping": u = (i + 0.5)/n_x, v = (j + 0.5)/n_y.  With
+ * N = n^2 samples the pixel is split into n x n strata and each sample is
+ * jittered inside its stratum by a hash of (seed, i, j, stratum), so every
+ * pixel's value depends on nothing but its own coordinates: the image is
+ * byte-identical for any number of threads.
+ */
+#ifndef RT_RENDER_LOOP_H
+#define RT_RENDER_LOOP_H
+
+#include <stdint.h>
+
+#include "image.h"
+#include "options.h"
+
+/* Radiance seen through normalized image position (u, v) in [0,1]^2.  Adds
+ * the number of rays it cast to *rays. */
+typedef color (*sample_fn)(const void *scene, real u, real v, uint64_t *rays);
+
+typedef struct {
+    uint64_t rays;
+    double seconds;
+} render_stats;
+
+/* Fills img (already sized) using opt->samples (0 counts as 1), opt->threads
+ * and opt->seed.  Shows a progress line on stderr when stderr is a terminal,
+ * the render takes more than about a second, and opt->quiet is false. */
+render_stats render_image(image *img, sample_fn sample, const void *scene, const render_options *opt);
+
+/* The one-line summary: "<name>: 512x512, 1 spp, 262144 rays, 0.05 s, 2 threads -> out.png". */
+void render_summary(FILE *out, const char *name, const image *img, const render_options *opt,
+                    render_stats stats, const char *output);
+
+/* The sample position inside a pixel: stratum (a, b) of n x n, jittered. */
+void render_sample_offset(unsigned long seed, int i, int j, int a, int b, int n, real *du, real *dv);
+
+#endif

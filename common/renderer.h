@@ -1,0 +1,38 @@
+/* renderer.h - the main() that every chapter's renderer shares.
+ *
+ * A chapter describes its stage in a `renderer` and calls renderer_main():
+ * it parses the shared options and the chapter's knobs, loads the scene file
+ * (or builds the built-in scene), lets the chapter prepare what it traces,
+ * renders, writes the PNG, and prints the one-line summary.
+ *
+ * Exit status: 0 on success, 1 for a bad scene or an unwritable output (with
+ * one line naming the file, the line and the problem), 2 for a bad option.
+ */
+#ifndef RT_RENDERER_H
+#define RT_RENDERER_H
+
+#include "options.h"
+#include "render_loop.h"
+#include "scene.h"
+
+typedef struct {
+    const char *name;    /* "01_camera_rays": the default output is name.png */
+    const char *summary; /* first line of --help */
+    const knob *knobs;
+    int n_knobs;
+    unsigned modelled; /* the scene_features this stage models; the rest are named as ignored */
+    int default_width, default_height;
+
+    /* Fills `desc` (already scene_init'ed) with the built-in scene. */
+    int (*builtin)(scene *desc);
+    /* Builds what the stage traces from the description.  Returns NULL with
+     * "file:line: problem" in err when the description cannot be rendered
+     * (a degenerate camera, say). */
+    void *(*prepare)(const scene *desc, char *err, size_t err_size);
+    sample_fn sample;
+    void (*release)(void *prepared);
+} renderer;
+
+int renderer_main(const renderer *r, int argc, char **argv);
+
+#endif

@@ -1,0 +1,48 @@
+/* vec3.h - three-component vectors: points, directions and normals.
+ *
+ * Small inline functions, one operation each, so that the intersection code
+ * reads like the lecture's equations: vec3_dot(d, p) is d . p.
+ */
+#ifndef RT_VEC3_H
+#define RT_VEC3_H
+
+#include <stdbool.h>
+
+#include "real.h"
+
+typedef struct {
+    real x, y, z;
+} vec3;
+
+static inline vec3 vec3_make(real x, real y, real z) { return (vec3){x, y, z}; }
+static inline vec3 vec3_add(vec3 a, vec3 b) { return (vec3){a.x + b.x, a.y + b.y, a.z + b.z}; }
+static inline vec3 vec3_sub(vec3 a, vec3 b) { return (vec3){a.x - b.x, a.y - b.y, a.z - b.z}; }
+static inline vec3 vec3_neg(vec3 a) { return (vec3){-a.x, -a.y, -a.z}; }
+static inline vec3 vec3_scale(vec3 a, real s) { return (vec3){s * a.x, s * a.y, s * a.z}; }
+/* Component-wise product (for colours and scale factors). */
+static inline vec3 vec3_mul(vec3 a, vec3 b) { return (vec3){a.x * b.x, a.y * b.y, a.z * b.z}; }
+
+static inline real vec3_dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+
+/* a x b, right-handed: (1,0,0) x (0,1,0) = (0,0,1). */
+static inline vec3 vec3_cross(vec3 a, vec3 b)
+{
+    return (vec3){a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+
+static inline real vec3_length_squared(vec3 a) { return vec3_dot(a, a); }
+static inline real vec3_length(vec3 a) { return real_sqrt(vec3_dot(a, a)); }
+
+/* a / |a|.  The zero vector has no direction: callers check the length first
+ * where a zero vector can occur (vec3_normalize of zero gives NaNs). */
+static inline vec3 vec3_normalize(vec3 a) { return vec3_scale(a, (real)1 / vec3_length(a)); }
+
+/* The largest absolute component: a cheap scale for relative tolerances. */
+static inline real vec3_max_abs(vec3 a)
+{
+    return real_fmax(real_abs(a.x), real_fmax(real_abs(a.y), real_abs(a.z)));
+}
+
+static inline bool vec3_is_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+
+#endif

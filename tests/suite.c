@@ -1,0 +1,75 @@
+#include "suite.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+void check_close(double expected, double actual, double tolerance, const char *what, const char *file, int line)
+{
+    double error = actual - expected;
+    if (!(error <= tolerance && -error <= tolerance)) { /* also fails on NaN */
+        print_error("%s = %.17g, expected %.17g within %.3g (off by %.3g)\n", what, actual, expected, tolerance,
+                    error);
+        _fail(file, line);
+    }
+}
+
+void check_vec3_close(vec3 expected, vec3 actual, double tolerance, const char *what, const char *file, int line)
+{
+    const double e[3] = {expected.x, expected.y, expected.z}, a[3] = {actual.x, actual.y, actual.z};
+    for (int k = 0; k < 3; k++) {
+        double error = a[k] - e[k];
+        if (!(error <= tolerance && -error <= tolerance)) {
+            print_error("%s = (%.17g, %.17g, %.17g), expected (%.17g, %.17g, %.17g) within %.3g per component\n",
+                        what, a[0], a[1], a[2], e[0], e[1], e[2], tolerance);
+            _fail(file, line);
+        }
+    }
+}
+
+const char *cornell_data(void)
+{
+    static const char *const candidates[] = {"../shared/cornell/sp17-ray1/data", NULL};
+    const char *env = getenv("RT_CORNELL");
+    struct stat st;
+    if (env && stat(env, &st) == 0 && S_ISDIR(st.st_mode))
+        return env;
+    for (int k = 0; candidates[k]; k++)
+        if (stat(candidates[k], &st) == 0 && S_ISDIR(st.st_mode))
+            return candidates[k];
+    return NULL;
+}
+
+int suite_main(const char *name, const graded_test *tests, size_t n, int argc, char **argv)
+{
+    struct CMUnitTest *plain = calloc(n ? n : 1, sizeof *plain);
+    if (!plain)
+        return 1;
+    size_t count = 0;
+    const char *only = NULL;
+    if (argc == 2 && strcmp(argv[1], "--list") == 0) {
+        for (size_t k = 0; k < n; k++)
+            printf("%s %d\n", tests[k].test.name, tests[k].points);
+        free(plain);
+        return 0;
+    }
+    if (argc == 3 && strcmp(argv[1], "--only") == 0)
+        only = argv[2];
+    else if (argc != 1) {
+        fprintf(stderr, "usage: %s [--list | --only TEST]\n", argv[0]);
+        free(plain);
+        return 2;
+    }
+    for (size_t k = 0; k < n; k++)
+        if (!only || strcmp(tests[k].test.name, only) == 0)
+            plain[count++] = tests[k].test;
+    if (only && count == 0) {
+        fprintf(stderr, "%s: no test named '%s' (see --list)\n", argv[0], only);
+        free(plain);
+        return 2;
+    }
+    int failed = _cmocka_run_group_tests(name, plain, count, NULL, NULL);
+    free(plain);
+    return failed;
+}

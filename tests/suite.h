@@ -1,0 +1,56 @@
+/* suite.h - what every cmocka suite of the project shares.
+ *
+ * A suite declares its tests with the points each is worth (the grading
+ * weights sit next to the tests) and ends with SUITE_MAIN:
+ *
+ *     static const graded_test tests[] = {
+ *         GRADED(test_centre_ray, 2),
+ *         GRADED(test_corner_rays, 3),
+ *     };
+ *     SUITE_MAIN("01_camera_rays", tests)
+ *
+ * The binary runs all its tests; `--list` prints "name points" a line and
+ * `--only NAME` runs one test, which is how grading isolates each test.
+ *
+ * Debian's cmocka 1.1.5 has no assert for doubles with a tolerance:
+ * assert_close() prints the expected and actual values and the tolerance.
+ */
+#ifndef RT_TESTS_SUITE_H
+#define RT_TESTS_SUITE_H
+
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include <cmocka.h>
+
+#include "vec3.h"
+
+typedef struct {
+    struct CMUnitTest test;
+    int points;
+} graded_test;
+
+#define GRADED(function, points) {cmocka_unit_test(function), (points)}
+
+int suite_main(const char *name, const graded_test *tests, size_t n, int argc, char **argv);
+
+#define SUITE_MAIN(name, tests)                                                                                    \
+    int main(int argc, char **argv) { return suite_main(name, tests, sizeof(tests) / sizeof((tests)[0]), argc, argv); }
+
+/* |actual - expected| <= tolerance, or the test fails printing all three. */
+#define assert_close(expected, actual, tolerance)                                                                  \
+    check_close((double)(expected), (double)(actual), (double)(tolerance), #actual, __FILE__, __LINE__)
+void check_close(double expected, double actual, double tolerance, const char *what, const char *file, int line);
+
+/* Each component within tolerance. */
+#define assert_vec3_close(expected, actual, tolerance)                                                             \
+    check_vec3_close((expected), (actual), (double)(tolerance), #actual, __FILE__, __LINE__)
+void check_vec3_close(vec3 expected, vec3 actual, double tolerance, const char *what, const char *file, int line);
+
+/* The folder of the Cornell corpus (../shared/cornell/sp17-ray1/data, or
+ * $RT_CORNELL), or NULL when it is absent: tests that use it skip then. */
+const char *cornell_data(void);
+
+#endif
