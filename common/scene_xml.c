@@ -641,8 +641,10 @@ static void XMLCALL on_start(void *data, const char *name, const char **atts)
     int line = current_line(r);
     element_id parent = r->depth ? r->stack[r->depth - 1] : E_NONE;
     int found = -1;
+    /* A shader inside a surface has the children of a top-level shader. */
+    element_id table_parent = parent == E_SURFACE_SHADER ? E_SHADER : parent;
     for (size_t k = 0; k < sizeof elements / sizeof elements[0]; k++)
-        if (elements[k].parent == parent && strcasecmp(elements[k].name, name) == 0)
+        if (elements[k].parent == table_parent && strcasecmp(elements[k].name, name) == 0)
             found = (int)k;
     if (found < 0) {
         if (parent == E_NONE)
@@ -758,7 +760,9 @@ int scene_load(const char *path, scene *s, char *err, size_t err_size)
     r.folder = folder_of(path);
     r.parser = XML_ParserCreate(NULL);
     s->path = strdup(path);
-    if (!r.folder || !r.parser || !s->path) {
+    r.text_cap = 256;
+    r.text = calloc(r.text_cap, 1); /* an element without text reads as "" */
+    if (!r.folder || !r.parser || !s->path || !r.text) {
         snprintf(err, err_size, "%s: out of memory", path);
         r.failed = true;
     }
