@@ -1,0 +1,87 @@
+/* sphere.c - chapter 02: the ray-sphere intersection, two ways.
+ *
+ * Notation (README.md, equations (1)-(5)): the ray is p + t d, the sphere has
+ * centre c and radius R, and f = p - c is the ray's origin seen from the
+ * centre.  Putting x = p + t d into (x - c).(x - c) - R^2 = 0 gives
+ *     A t^2 + 2 B t + C = 0,   A = d.d,  B = d.f,  C = f.f - R^2      (1)
+ * Both formulas below return its two roots; sphere_intersect() picks one.
+ */
+#include "02_sphere/sphere.h"
+
+/* The lecture's algebraic solution, for any d (not only a unit d):
+ *     t = (-d.f -+ sqrt((d.f)^2 - (d.d)(f.f - R^2))) / (d.d)          (2)
+ * Returns false when the discriminant is negative (the ray misses). */
+static bool textbook_roots(const sphere *s, ray r, real *t0, real *t1)
+{
+    /* TODO textbook: the lecture's quadratic formula (2), "Ray-sphere intersection: algebraic".
+     *     f = p - c,  A = d.d,  B = d.f,  C = f.f - R^2,  discriminant B^2 - A C
+     *     no root when the discriminant is negative (or NaN: test !(disc >= 0));
+     *     else t0 = (-B - sqrt(disc)) / A,  t1 = (-B + sqrt(disc)) / A */
+    (void)s;
+    (void)r;
+    *t0 = *t1 = 0;
+    return false;
+}
+
+/* The same roots, computed so that they keep their digits:
+ *   - the discriminant from the lecture's geometric form (3)-(4): the
+ *     perpendicular l from the centre to the line is formed first, and
+ *     R^2 - l.l no longer subtracts two huge, nearly equal numbers;
+ *   - the roots from the stable pair (5): the one of larger magnitude by
+ *     adding numbers of the same sign, the other from the product of the
+ *     roots, t0 t1 = C / A (Vieta), so neither cancels. */
+static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
+{
+    vec3 f = vec3_sub(r.p, s->center);
+    real A = vec3_dot(r.d, r.d);
+    real B = vec3_dot(r.d, f);
+    /* TODO robust_discriminant: the discriminant from the geometric form, "Ray-sphere intersection: geometric".
+     *     t_m = -B / A                the parameter of the point of the line closest to c      (3)
+     *     l = f + t_m d               the perpendicular from c to the line, |l| = l_m
+     *     disc = A (R^2 - l.l)        equal to B^2 - A C, without its cancellation             (4)
+     * Keep l as a vector: l.l is small when the ray passes near c, B^2 and A C are not. */
+    (void)f;
+    (void)B;
+    real disc = -1;
+    if (!(disc >= 0)) /* a miss, or NaN from d = 0 */
+        return false;
+    /* TODO robust_roots: the stable pair of roots (5)
+     *     q = -(B + sign(B) sqrt(disc))    B and sign(B) sqrt(disc) have the same sign: no cancellation
+     *     t0 = q / A,  t1 = C / q          (C = f.f - R^2; when q = 0 both roots are 0: t1 = t0)
+     * Which of t0, t1 is nearer depends on the sign of B; sphere_intersect() sorts them. */
+    (void)A;
+    (void)disc;
+    *t0 = *t1 = 0;
+    return false;
+}
+
+/* The outward unit normal at a point x of the sphere. */
+static vec3 sphere_normal(const sphere *s, vec3 x)
+{
+    /* TODO normal: the outward unit normal at the hit point x:
+     *     n = (x - c) / |x - c|
+     * |x - c| is R up to rounding; dividing by the computed length makes n a unit vector all the same.
+     * x - c is never zero at a hit (it has length R), but guard it so that no NaN leaves this function. */
+    (void)s;
+    (void)x;
+    return vec3_make(0, 0, 0);
+}
+
+/* snippet: nearest */
+bool sphere_intersect(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula, real *t, vec3 *n)
+{
+    real t0, t1;
+    bool real_roots = formula == SPHERE_TEXTBOOK ? textbook_roots(s, r, &t0, &t1) : robust_roots(s, r, &t0, &t1);
+    if (!real_roots)
+        return false;
+    real near = real_fmin(t0, t1), far = real_fmax(t0, t1);
+    /* The nearest root inside the open window (t_min, t_max): the far one
+     * when the near one is before t_min (p is inside the sphere). */
+    real hit = near > t_min && near < t_max ? near : far > t_min && far < t_max ? far : REAL_INFINITY;
+    if (hit == REAL_INFINITY)
+        return false;
+    *t = hit;
+    *n = sphere_normal(s, ray_at(r, hit));
+    return true;
+}
+/* end snippet */
