@@ -1,0 +1,104 @@
+/* The render loop (common/render_loop.h): pixel centres, samples, threads. */
+#include <string.h>
+
+#include "render_loop.h"
+#include "suite.h"
+
+/* A "scene" that returns the sample position as a colour. */
+static color position(const void *scene, real u, real v, uint64_t *rays)
+{
+    (void)scene;
+    ++*rays;
+    return color_make(u, v, 0);
+}
+
+/* A pattern with no structure a wrong pixel could hide in. */
+static color pattern(const void *scene, real u, real v, uint64_t *rays)
+{
+    (void)scene;
+    *rays += 2;
+    return color_make(real_sqrt(u * 7 + v), u * v, (real)(u > v));
+}
+
+static void test_one_sample_is_the_pixel_centre(void **state)
+{
+    (void)state;
+    image img;
+    assert_int_equal(0, image_init(&img, 4, 2));
+    render_options opt = {.samples = 1, .threads = 1, .quiet = true};
+    render_stats stats = render_image(&img, position, NULL, &opt);
+    assert_int_equal(8, stats.rays);
+    for (int j = 0; j < 2; j++) {
+        for (int i = 0; i < 4; i++) {
+            /* u = (i + 0.5)/n_x, v = (j + 0.5)/n_y: exact in binary for n = 4, 2 */
+            assert_close((i + 0.5) / 4, image_at(&img, i, j)->r, 0);
+            assert_close((j + 0.5) / 2, image_at(&img, i, j)->g, 0);
+        }
+    }
+    image_free(&img);
+}
+
+static void test_stratified_samples_stay_in_their_strata(void **state)
+{
+    (void)state;
+    for (int i = 0; i < 5; i++) {
+        for (int a = 0; a < 3; a++) {
+            for (int b = 0; b < 3; b++) {
+                real du, dv;
+                render_sample_offset(7, i, 2 * i, a, b, 3, &du, &dv);
+                assert_true(du >= (real)a / 3 && du < (real)(a + 1) / 3);
+                assert_true(dv >= (real)b / 3 && dv < (real)(b + 1) / 3);
+            }
+        }
+    }
+    real du, dv;
+    render_sample_offset(7, 1, 1, 0, 0, 1, &du, &dv); /* one sample: the centre */
+    assert_close(0.5, du, 0);
+    assert_close(0.5, dv, 0);
+}
+
+static void test_samples_average_to_the_pixel_mean(void **state)
+{
+    (void)state;
+    /* u is linear, so the mean of 16 jittered samples over one pixel is its
+     * centre within the jitter's spread: 1/(2*4) of a pixel per stratum,
+     * averaged over 4 independent columns: well inside 1/8 pixel. */
+    image img;
+    assert_int_equal(0, image_init(&img, 1, 1));
+    render_options opt = {.samples = 16, .threads = 1, .quiet = true};
+    render_stats stats = render_image(&img, position, NULL, &opt);
+    assert_int_equal(16, stats.rays);
+    assert_close(0.5, image_at(&img, 0, 0)->r, 1.0 / 8);
+    assert_close(0.5, image_at(&img, 0, 0)->g, 1.0 / 8);
+    image_free(&img);
+}
+
+static void test_any_thread_count_gives_the_same_image(void **state)
+{
+    (void)state;
+    image one, two, seeded;
+    assert_int_equal(0, image_init(&one, 37, 23));
+    assert_int_equal(0, image_init(&two, 37, 23));
+    assert_int_equal(0, image_init(&seeded, 37, 23));
+    render_options opt = {.samples = 4, .threads = 1, .seed = 3, .quiet = true};
+    render_stats s1 = render_image(&one, pattern, NULL, &opt);
+    opt.threads = 2;
+    render_stats s2 = render_image(&two, pattern, NULL, &opt);
+    assert_int_equal(2 * 37 * 23 * 4, s1.rays);
+    assert_int_equal(s1.rays, s2.rays);
+    assert_memory_equal(one.pixels, two.pixels, sizeof(color) * 37 * 23);
+    opt.seed = 4; /* another seed moves the samples */
+    render_image(&seeded, pattern, NULL, &opt);
+    assert_memory_not_equal(one.pixels, seeded.pixels, sizeof(color) * 37 * 23);
+    image_free(&one);
+    image_free(&two);
+    image_free(&seeded);
+}
+
+static const graded_test tests[] = {
+    GRADED(test_one_sample_is_the_pixel_centre, 0),
+    GRADED(test_stratified_samples_stay_in_their_strata, 0),
+    GRADED(test_samples_average_to_the_pixel_mean, 0),
+    GRADED(test_any_thread_count_gives_the_same_image, 0),
+};
+SUITE_MAIN("common_render", tests)
