@@ -1,0 +1,22 @@
+/* closest_hit.h - chapter 04: the first surface along a ray.
+ *
+ * The lecture's "Intersection against many shapes": loop over the list,
+ * ignore the surfaces the ray misses, and keep the closest hit seen so far
+ * by shrinking the end of the ray segment to it.  This is linear in the
+ * number of surfaces; chapter 11's grid replaces it behind the same
+ * signature, so a renderer swaps the one for the other in one line.
+ */
+#ifndef CH04_CLOSEST_HIT_H
+#define CH04_CLOSEST_HIT_H
+
+#include <stdbool.h>
+
+#include "04_many_shapes/surface.h"
+
+/* The hit with the smallest t in (t_min, t_max) over every surface of the
+ * list.  True when there is one; then *hit is complete, with hit->surface
+ * its index in the list.  Surfaces hit at exactly the same t: the first in
+ * the list wins.  *hit is left unchanged when nothing is hit. */
+bool surfaces_intersect(const surface_list *list, ray r, real t_min, real t_max, hit_record *hit);
+
+#endif

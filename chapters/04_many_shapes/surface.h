@@ -1,0 +1,68 @@
+/* surface.h - chapter 04: the list of surfaces a ray is tested against.
+ *
+ * The lecture's "surfaceList": every sphere and every triangle of the scene,
+ * side by side.  A Box of the scene file becomes 12 triangles and a Mesh its
+ * faces, so the list knows only the two shapes of chapters 02 and 03.
+ *
+ * Geometry knows nothing of shading (DESIGN.md, principle 2): a surface
+ * carries its shape and the index of its scene shader, and the renderer
+ * looks the colour up.  The list also carries the accuracy knobs of the two
+ * intersection tests, so that every call uses the same ones.
+ */
+#ifndef CH04_SURFACE_H
+#define CH04_SURFACE_H
+
+#include <stdbool.h>
+
+#include "02_sphere/sphere.h"
+#include "03_triangle/triangle.h"
+#include "ray.h"
+
+typedef enum { SHAPE_SPHERE, SHAPE_TRIANGLE } shape_kind;
+
+/* snippet: surface */
+typedef struct {
+    shape_kind kind;
+    union {
+        sphere sphere;     /* SHAPE_SPHERE */
+        triangle triangle; /* SHAPE_TRIANGLE */
+    };
+    int shader; /* index into scene.shaders; -1: none (white) */
+    int source; /* index into scene.surfaces: the Sphere, Box, Mesh or Triangle it came from */
+} surface;
+
+typedef struct {
+    surface *items;
+    int n, capacity;
+    sphere_formula sphere_formula; /* --sphere: passed to every sphere_intersect */
+    triangle_test triangle_test;   /* --triangle: passed to every triangle_intersect */
+} surface_list;
+/* end snippet */
+
+/* snippet: hit_record */
+typedef struct {
+    real t;           /* the ray parameter: the hit is at p + t d */
+    vec3 point;       /* p + t d */
+    vec3 normal;      /* unit normal of the surface at point, NOT turned towards the ray:
+                       * a sphere's points outwards, a triangle's is normalize((b - a) x (c - a)) */
+    int surface;      /* index into the surface_list */
+    int source;       /* index into scene.surfaces */
+    int shader;       /* index into scene.shaders; -1: none */
+    real beta, gamma; /* a triangle's barycentric coordinates of point; 0 for a sphere */
+} hit_record;
+/* end snippet */
+
+/* An empty list with the given knobs. */
+void surface_list_init(surface_list *list, sphere_formula formula, triangle_test test);
+void surface_list_free(surface_list *list);
+
+/* Append one surface; returns its index, or -1 when out of memory. */
+int surface_list_add_sphere(surface_list *list, sphere s, int shader, int source);
+int surface_list_add_triangle(surface_list *list, triangle tri, int shader, int source);
+
+/* One surface against the ray, with the list's knobs: true when it is hit at
+ * some t in (t_min, t_max); then *hit holds everything but hit->surface,
+ * which only the list knows.  *hit is left unchanged on a miss. */
+bool surface_intersect(const surface *s, const surface_list *list, ray r, real t_min, real t_max, hit_record *hit);
+
+#endif

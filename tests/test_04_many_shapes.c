@@ -1,0 +1,434 @@
+/* Chapter 04: the surface list, the closest hit and the flat colours. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+#include "04_many_shapes/box.h"
+#include "04_many_shapes/closest_hit.h"
+#include "04_many_shapes/flat_shading.h"
+#include "04_many_shapes/scene_surfaces.h"
+#include "scene_build.h"
+#include "suite.h"
+
+/* A result computed from exact inputs in a few roundings (a square root, a
+ * division, a 3x3 determinant) is within a few ulps: 16 REAL_EPSILON relative
+ * to its size leaves room for each of them. */
+#define TOL(size) (16 * REAL_EPSILON * (size))
+
+static const sphere_formula formulas[] = {SPHERE_ROBUST, SPHERE_TEXTBOOK};
+static const triangle_test tests_of_triangles[] = {TRIANGLE_CRAMER, TRIANGLE_WATERTIGHT};
+
+/* ---- the closest hit, whatever the order of the list -------------------------- */
+
+/* Four shapes on the z axis, seen by a ray from z = 10 looking down -z.
+ * Along the ray (t = 10 - z) they are met at:
+ *   front:  the triangle in z = 2            t = 8
+ *   ball:   the unit sphere at the origin    t = 9 (in) and 11 (out)
+ *   inner:  the triangle in z = 0.5          t = 9.5 (inside the ball)
+ *   back:   the sphere of radius 1.5 at z=-3 t = 11.5 and 14.5 */
+enum { FRONT, BALL, INNER, BACK, N_SHAPES };
+static const ray down_z = {{0, 0, 10}, {0, 0, -1}};
+
+static void add_shape(surface_list *list, int which)
+{
+    /* The shader index is the shape's name too, so that it can be checked. */
+    switch (which) {
+    case FRONT:
+        surface_list_add_triangle(list, (triangle){{-1, -1, 2}, {1, -1, 2}, {0, 1, 2}}, which, which);
+        break;
+    case BALL:
+        surface_list_add_sphere(list, (sphere){{0, 0, 0}, 1}, which, which);
+        break;
+    case INNER:
+        surface_list_add_triangle(list, (triangle){{-1, -1, 0.5}, {1, -1, 0.5}, {0, 1, 0.5}}, which, which);
+        break;
+    case BACK:
+        surface_list_add_sphere(list, (sphere){{0, 0, -3}, 1.5}, which, which);
+        break;
+    }
+}
+
+/* Every ordering of the four shapes, with both sphere formulas and both
+ * triangle tests, and a ray that starts ever further along: the hit is the
+ * closest one after t_min, whichever position the shape has in the list. */
+static void test_closest_hit_in_any_order(void **state)
+{
+    (void)state;
+    static const struct {
+        real t_min;
+        int shape;
+        real t;
+    } expected[] = {
+        {0, FRONT, 8}, {8.5, BALL, 9}, {9.2, INNER, 9.5}, {10, BALL, 11}, {11.2, BACK, 11.5}, {12, BACK, 14.5},
+    };
+    int order[N_SHAPES] = {0, 1, 2, 3};
+    for (int perm = 0; perm < 24; perm++) {
+        /* The perm-th permutation, from its factorial-base digits. */
+        int pool[N_SHAPES] = {0, 1, 2, 3}, left = N_SHAPES, code = perm;
+        for (int k = 0; k < N_SHAPES; k++) {
+            int pick = code % left;
+            code /= left;
+            order[k] = pool[pick];
+            for (int m = pick; m < left - 1; m++)
+                pool[m] = pool[m + 1];
+            left--;
+        }
+        for (int f = 0; f < 2; f++) {
+            for (int g = 0; g < 2; g++) {
+                surface_list list;
+                surface_list_init(&list, formulas[f], tests_of_triangles[g]);
+                for (int k = 0; k < N_SHAPES; k++)
+                    add_shape(&list, order[k]);
+                for (size_t e = 0; e < sizeof expected / sizeof expected[0]; e++) {
+                    hit_record hit;
+                    if (!surfaces_intersect(&list, down_z, expected[e].t_min, REAL_INFINITY, &hit))
+                        fail_msg("order %d%d%d%d, t_min %g: no hit", order[0], order[1], order[2], order[3],
+                                 (double)expected[e].t_min);
+                    assert_int_equal(expected[e].shape, hit.source);
+                    assert_int_equal(expected[e].shape, hit.shader);
+                    assert_true(hit.surface >= 0 && hit.surface < list.n);
+                    assert_int_equal(expected[e].shape, order[hit.surface]);
+                    assert_close(expected[e].t, hit.t, TOL(16));
+                }
+                hit_record hit;
+                assert_false(surfaces_intersect(&list, down_z, 15, REAL_INFINITY, &hit));
+                surface_list_free(&list);
+            }
+        }
+    }
+}
+
+/* The window (t_min, t_max) is open at both ends and bounds every surface. */
+static void test_t_window(void **state)
+{
+    (void)state;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    for (int k = N_SHAPES - 1; k >= 0; k--)
+        add_shape(&list, k);
+    hit_record hit;
+    assert_false(surfaces_intersect(&list, down_z, 0, 7.5, &hit));  /* ends before the first shape */
+    assert_false(surfaces_intersect(&list, down_z, 0, 8, &hit));    /* t_max itself is outside */
+    assert_true(surfaces_intersect(&list, down_z, 0, 8.5, &hit));
+    assert_int_equal(FRONT, hit.source);
+    assert_true(surfaces_intersect(&list, down_z, 8, 20, &hit)); /* t_min itself is outside */
+    assert_int_equal(BALL, hit.source);
+    assert_close(9, hit.t, TOL(16));
+    assert_false(surfaces_intersect(&list, down_z, 9.6, 10.9, &hit)); /* inside the ball, between hits */
+    /* Everything lies behind a ray that starts at z = 10 and looks up +z. */
+    const ray up_z = {{0, 0, 10}, {0, 0, 1}};
+    assert_false(surfaces_intersect(&list, up_z, 0, REAL_INFINITY, &hit));
+    surface_list_free(&list);
+}
+
+/* An empty list is hit by nothing; one surface is hit where it is. */
+static void test_empty_and_single(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    char err[256];
+    assert_int_equal(0, surface_list_from_scene(&list, &desc, err, sizeof err));
+    assert_int_equal(0, list.n);
+    hit_record hit = {.t = 42, .surface = 7};
+    assert_false(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
+    assert_close(42, hit.t, 0); /* a miss leaves the record alone */
+    assert_int_equal(7, hit.surface);
+
+    add_shape(&list, BACK);
+    assert_true(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
+    assert_int_equal(0, hit.surface);
+    assert_close(11.5, hit.t, TOL(16));
+    surface_list_free(&list);
+    scene_free(&desc);
+}
+
+/* Two surfaces at the same place are hit at the same t.  The loop accepts
+ * only t < t_best (the window is open), so the FIRST of them in the list
+ * keeps the hit: the answer depends on the order of the list, and on
+ * nothing else, so every run and every thread count give the same image. */
+static void test_coincident_surfaces_first_wins(void **state)
+{
+    (void)state;
+    const sphere ball = {{0, 0, 0}, 1};
+    const triangle tri = {{-1, -1, 2}, {1, -1, 2}, {0, 1, 2}};
+    for (int g = 0; g < 2; g++) {
+        for (int first = 0; first < 2; first++) {
+            surface_list list;
+            surface_list_init(&list, SPHERE_ROBUST, tests_of_triangles[g]);
+            /* Shader 10 + first is listed first. */
+            surface_list_add_sphere(&list, ball, 10 + first, 0);
+            surface_list_add_sphere(&list, ball, 11 - first, 1);
+            hit_record hit;
+            assert_true(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
+            assert_int_equal(0, hit.surface);
+            assert_int_equal(10 + first, hit.shader);
+            /* The same with two copies of a triangle in front of them. */
+            surface_list_add_triangle(&list, tri, 20 + first, 2);
+            surface_list_add_triangle(&list, tri, 21 - first, 3);
+            assert_true(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
+            assert_int_equal(2, hit.surface);
+            assert_int_equal(20 + first, hit.shader);
+            surface_list_free(&list);
+        }
+    }
+}
+
+/* ---- the hit record ------------------------------------------------------------- */
+
+/* A triangle's hit carries its barycentric coordinates, the point p + t d
+ * and the normal (b - a) x (c - a); a sphere's its outward normal. */
+static void test_hit_record_fields(void **state)
+{
+    (void)state;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    surface_list_add_sphere(&list, (sphere){{3, 0, 0}, 0.5}, 4, 8);
+    surface_list_add_triangle(&list, (triangle){{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, 5, 9);
+    hit_record hit;
+    /* x = a + beta (b - a) + gamma (c - a) = (2 beta, 2 gamma, 0) = (0.5, 0.6, 0) */
+    const ray r = {{0.5, 0.6, 1}, {0, 0, -2}};
+    assert_true(surfaces_intersect(&list, r, 0, REAL_INFINITY, &hit));
+    assert_int_equal(1, hit.surface);
+    assert_int_equal(9, hit.source);
+    assert_int_equal(5, hit.shader);
+    assert_close(0.5, hit.t, TOL(1));
+    assert_close(0.25, hit.beta, TOL(1));
+    assert_close(0.3, hit.gamma, TOL(1));
+    assert_vec3_close(vec3_make(0.5, 0.6, 0), hit.point, TOL(1));
+    assert_vec3_close(vec3_make(0, 0, 1), hit.normal, TOL(1));
+    /* From below the triangle: the normal is the triangle's, not turned to the ray. */
+    const ray from_below = {{0.5, 0.6, -1}, {0, 0, 1}};
+    assert_true(surfaces_intersect(&list, from_below, 0, REAL_INFINITY, &hit));
+    assert_vec3_close(vec3_make(0, 0, 1), hit.normal, TOL(1));
+
+    /* The sphere, met from +y at its top: point (3, 0.5, 0), normal +y. */
+    const ray down = {{3, 4, 0}, {0, -1, 0}};
+    assert_true(surfaces_intersect(&list, down, 0, REAL_INFINITY, &hit));
+    assert_int_equal(0, hit.surface);
+    assert_int_equal(8, hit.source);
+    assert_int_equal(4, hit.shader);
+    assert_close(3.5, hit.t, TOL(4));
+    assert_vec3_close(vec3_make(3, 0.5, 0), hit.point, TOL(4));
+    assert_vec3_close(vec3_make(0, 1, 0), hit.normal, TOL(1));
+    assert_close(0, hit.beta, 0);
+    assert_close(0, hit.gamma, 0);
+    surface_list_free(&list);
+}
+
+/* ---- boxes ------------------------------------------------------------------------ */
+
+/* A box is 12 triangles, two per face, every normal pointing out of the box,
+ * and together they cover each face exactly once. */
+static void test_box_triangles_outward(void **state)
+{
+    (void)state;
+    const vec3 lo = {-1, -2, -3}, hi = {2, 3, 4};
+    const vec3 centre = vec3_scale(vec3_add(lo, hi), 0.5);
+    const vec3 size = vec3_sub(hi, lo);
+    triangle faces[BOX_TRIANGLES];
+    box_triangles(lo, hi, faces);
+    real area[3][2] = {{0}}; /* per axis and side */
+    for (int f = 0; f < BOX_TRIANGLES; f++) {
+        const triangle *tri = &faces[f];
+        vec3 n = triangle_normal(tri);
+        /* the normal is a unit axis vector: one component is +-1 */
+        int axis = real_abs(n.x) > (real)0.5 ? 0 : real_abs(n.y) > (real)0.5 ? 1 : 2;
+        assert_close(1, vec3_max_abs(n), TOL(1));
+        assert_close(1, vec3_length(n), TOL(1));
+        /* outward: from the box's centre towards the triangle */
+        vec3 centroid = vec3_scale(vec3_add(tri->a, vec3_add(tri->b, tri->c)), (real)1 / 3);
+        assert_true(vec3_dot(n, vec3_sub(centroid, centre)) > 0);
+        /* every vertex is a corner of the box */
+        const vec3 v[3] = {tri->a, tri->b, tri->c};
+        for (int k = 0; k < 3; k++) {
+            assert_true(v[k].x == lo.x || v[k].x == hi.x);
+            assert_true(v[k].y == lo.y || v[k].y == hi.y);
+            assert_true(v[k].z == lo.z || v[k].z == hi.z);
+        }
+        real n_axis = axis == 0 ? n.x : axis == 1 ? n.y : n.z;
+        area[axis][n_axis > 0] += vec3_length(vec3_cross(vec3_sub(tri->b, tri->a), vec3_sub(tri->c, tri->a))) / 2;
+    }
+    const real face_area[3] = {size.y * size.z, size.z * size.x, size.x * size.y};
+    for (int axis = 0; axis < 3; axis++)
+        for (int side = 0; side < 2; side++)
+            assert_close(face_area[axis], area[axis][side], TOL(face_area[axis]));
+}
+
+/* A Box of a scene file becomes 12 triangles of that surface, and a ray
+ * from outside along each axis meets it with the normal facing back at it. */
+static void test_box_in_scene(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = -1, .center = {0, 9, 0}, .radius = 1});
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_BOX, .shader = -1, .min_pt = {-1, -1, -1},
+                                             .max_pt = {1, 1, 1}});
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    char err[256];
+    assert_int_equal(0, surface_list_from_scene(&list, &desc, err, sizeof err));
+    assert_int_equal(1 + 12, list.n);
+    for (int k = 1; k < list.n; k++) {
+        assert_int_equal(SHAPE_TRIANGLE, list.items[k].kind);
+        assert_int_equal(1, list.items[k].source);
+    }
+    const vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int a = 0; a < 3; a++) {
+        for (int s = -1; s <= 1; s += 2) {
+            /* from outside the face at +-axis, slightly off-centre so as not to
+             * hit the diagonal every face is split along, looking in */
+            vec3 outward = vec3_scale(axes[a], s);
+            vec3 off = vec3_scale(axes[(a + 1) % 3], (real)0.3);
+            ray r = {vec3_add(vec3_scale(outward, 5), off), vec3_neg(outward)};
+            hit_record hit;
+            for (int g = 0; g < 2; g++) {
+                list.triangle_test = tests_of_triangles[g];
+                assert_true(surfaces_intersect(&list, r, 0, REAL_INFINITY, &hit));
+                assert_int_equal(1, hit.source);
+                assert_close(4, hit.t, TOL(4));
+                assert_vec3_close(outward, hit.normal, TOL(1));
+            }
+        }
+    }
+    surface_list_free(&list);
+    scene_free(&desc);
+}
+
+/* ---- flat colours ------------------------------------------------------------------- */
+
+/* RGBNormals maps a unit normal n to (n + 1) / 2; other shaders show their
+ * diffuseColor; no shader is white. */
+static void test_flat_colors(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    int normals = scene_add_shader(&desc, scene_default_shader(SHADER_RGB_NORMALS));
+    scene_shader red = scene_default_shader(SHADER_PHONG);
+    red.diffuse_color = color_make((real)0.8, (real)0.1, (real)0.2);
+    int phong = scene_add_shader(&desc, red);
+    static const struct {
+        vec3 n;
+        color c;
+    } known[] = {
+        {{1, 0, 0}, {1, 0.5, 0.5}},  {{-1, 0, 0}, {0, 0.5, 0.5}}, {{0, 1, 0}, {0.5, 1, 0.5}},
+        {{0, -1, 0}, {0.5, 0, 0.5}}, {{0, 0, 1}, {0.5, 0.5, 1}},  {{0, 0, -1}, {0.5, 0.5, 0}},
+        {{0.6, -0.8, 0}, {0.8, 0.1, 0.5}},
+    };
+    for (size_t k = 0; k < sizeof known / sizeof known[0]; k++) {
+        hit_record hit = {.normal = known[k].n, .shader = normals};
+        color c = flat_color(&desc, &hit);
+        assert_close(known[k].c.r, c.r, TOL(1));
+        assert_close(known[k].c.g, c.g, TOL(1));
+        assert_close(known[k].c.b, c.b, TOL(1));
+        hit.shader = phong; /* the colour does not depend on the normal */
+        c = flat_color(&desc, &hit);
+        assert_close((real)0.8, c.r, 0);
+        assert_close((real)0.1, c.g, 0);
+        assert_close((real)0.2, c.b, 0);
+        hit.shader = -1;
+        c = flat_color(&desc, &hit);
+        assert_true(c.r == 1 && c.g == 1 && c.b == 1);
+    }
+    scene_free(&desc);
+}
+
+/* ---- a scene file, end to end ---------------------------------------------------------- */
+
+static char folder[64];
+
+static void write_file(const char *name, const char *text)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/%s", folder, name);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+}
+
+static const char scene_text[] =
+    "<scene>\n"
+    "  <backColor>.1 .2 .3</backColor>\n"
+    "  <shader name=\"red\" type=\"Lambertian\"><diffuseColor>1 0 0</diffuseColor></shader>\n"
+    "  <shader name=\"n\" type=\"RGBNormals\"/>\n"
+    "  <surface type=\"Sphere\"><shader ref=\"red\"/><center>0 0 -5</center><radius>1</radius></surface>\n"
+    "  <surface type=\"Box\"><minPt>2 -1 -6</minPt><maxPt>4 1 -4</maxPt></surface>\n"
+    "  <surface type=\"Mesh\"><shader ref=\"n\"/><data>quad.obj</data></surface>\n"
+    "  <surface type=\"Triangle\"><shader ref=\"red\"/><v0>-1 3 -5</v0><v1>1 3 -5</v1><v2>0 5 -5</v2>"
+    "</surface>\n"
+    "</scene>\n";
+
+/* One quad, split into two triangles by the reader; it faces +z. */
+static const char quad_obj[] = "v -4 -1 -5\nv -2 -1 -5\nv -2 1 -5\nv -4 1 -5\nf 1 2 3 4\n";
+
+/* A scene file with every kind of surface: the list has them all, in the
+ * file's order, and trace_flat colours each by its shader. */
+static void test_scene_file(void **state)
+{
+    (void)state;
+    strcpy(folder, "/tmp/rt-ch04-XXXXXX");
+    assert_non_null(mkdtemp(folder));
+    write_file("scene.xml", scene_text);
+    write_file("quad.obj", quad_obj);
+    char path[256], err[512] = "";
+    snprintf(path, sizeof path, "%s/scene.xml", folder);
+    scene desc;
+    int status = scene_load(path, &desc, err, sizeof err);
+    char command[128];
+    snprintf(command, sizeof command, "rm -rf '%s'", folder);
+    if (system(command) != 0)
+        fprintf(stderr, "could not remove %s\n", folder);
+    if (status != 0)
+        fail_msg("%s", err);
+
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    assert_int_equal(0, surface_list_from_scene(&list, &desc, err, sizeof err));
+    assert_int_equal(1 + 12 + 2 + 1, list.n);
+    static const int source[16] = {0, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 1, 2, 2, 3};
+    for (int k = 0; k < list.n; k++) {
+        assert_int_equal(source[k], list.items[k].source);
+        assert_int_equal(desc.surfaces[source[k]].shader, list.items[k].shader);
+    }
+
+    const vec3 eye = {0, 0, 0};
+    static const struct {
+        vec3 target;
+        color c;
+    } looks[] = {
+        {{0, 0, -5}, {1, 0, 0}},       /* the sphere: red */
+        {{3, 0, -5}, {1, 1, 1}},       /* the box: no shader, white */
+        {{-3, 0, -5}, {0.5, 0.5, 1}},  /* the mesh: RGBNormals of +z */
+        {{0, 3.5, -5}, {1, 0, 0}},     /* the triangle: red */
+        {{0, -3, -5}, {0.1, 0.2, 0.3}}, /* nothing: backColor */
+    };
+    for (size_t k = 0; k < sizeof looks / sizeof looks[0]; k++) {
+        ray r = {eye, vec3_sub(looks[k].target, eye)};
+        color c = trace_flat(&list, &desc, r, 0, REAL_INFINITY);
+        assert_close(looks[k].c.r, c.r, TOL(1));
+        assert_close(looks[k].c.g, c.g, TOL(1));
+        assert_close(looks[k].c.b, c.b, TOL(1));
+    }
+    surface_list_free(&list);
+    scene_free(&desc);
+}
+
+static const graded_test tests[] = {
+    GRADED(test_closest_hit_in_any_order, 5),
+    GRADED(test_t_window, 3),
+    GRADED(test_empty_and_single, 1),
+    GRADED(test_coincident_surfaces_first_wins, 2),
+    GRADED(test_hit_record_fields, 3),
+    GRADED(test_box_triangles_outward, 2),
+    GRADED(test_box_in_scene, 2),
+    GRADED(test_flat_colors, 1),
+    GRADED(test_scene_file, 2),
+};
+
+SUITE_MAIN("04_many_shapes", tests)
