@@ -59,7 +59,8 @@ RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
 IMAGES := $(foreach c,$(CHAPTERS),out/$c.png)
 
-.PHONY: all renderers tests test test-suites deps help clean
+.PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
+        figure-renderers figures check-figures snippets check-snippets check
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -92,6 +93,115 @@ $(BUILD)/tests/test_common_%: $(call objs,tests/test_common_%.c $(TEST_SUPPORT) 
 	@mkdir -p $(@D)
 	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 
+# ---- skeletons: the students' files, generated from the solutions ---------------
+
+SOLUTION_FILES := $(sort $(wildcard solutions/[0-9][0-9]_*/*.c))
+
+# Writes chapters/NN_name/FILE.c from solutions/NN_name/FILE.c by tools/skeleton.awk.
+skeletons:
+	@tools/skeletons.sh write $(SOLUTION_FILES)
+
+check-skeletons:
+	@tools/skeletons.sh check $(SOLUTION_FILES)
+
+# ---- grading --------------------------------------------------------------------
+#
+# Chapter N is graded with a suite linked with the student's stage files of
+# chapter N (SOURCE=chapters) and the solutions of every other chapter, so an
+# early mistake costs points in its own chapter only.  tools/grade runs each
+# test alone (`SUITE --only NAME`) with a time limit.  SOURCE=solutions
+# grades the solutions instead, and fails unless they get full marks.
+
+SOURCE ?= chapters
+TIMEOUT ?= 10
+CHAPTER ?=
+GRADE_BUILD ?= build-grade$(compiler)
+GRADE_JSON ?= $(GRADE_BUILD)/results.json
+GRADE_JUNIT ?= $(GRADE_BUILD)/junit.xml
+ifeq ($(filter $(SOURCE),chapters solutions),)
+$(error SOURCE must be chapters or solutions, not '$(SOURCE)')
+endif
+
+# The chapters to grade: those with a suite, or only CHAPTER (01 or 01_camera_rays).
+GRADE_CHAPTERS := $(foreach t,$(CHAPTER_TESTS),$(if $(or $(if $(CHAPTER),,all),$(filter $(CHAPTER),$(t:test_%=%) $(call num,$(t:test_%=%)))),$(t:test_%=%)))
+GRADE_DIR = $(BUILD)/grade-$(SOURCE)
+# The stage files of chapters 1..$1, the student's own for chapter $1 itself.
+grade_stages = $(foreach c,$(call upto,$1),$(call stage_src,$c,$(if $(and $(filter $c,$1),$(filter chapters,$(SOURCE))),1,0)))
+
+define grade_rules
+$(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call grade_stages,$1) $(COMMON_SRC))
+	@mkdir -p $$(@D)
+	$$(CC) $$(LDFLAGS) $$^ $$(LDLIBS) -lcmocka -o $$@
+endef
+$(foreach c,$(CHAPTER_TESTS:test_%=%),$(eval $(call grade_rules,$c)))
+
+$(BUILD)/tools/%: $(BUILD)/obj/tools/%.o
+	@mkdir -p $(@D)
+	$(CC) $^ -o $@
+
+grade:
+	@$(MAKE) --no-print-directory -s BUILD=$(GRADE_BUILD) STUDENT=0 REAL=double SANITIZE=0 grade-run
+
+# Run by `grade` in the grading build.  A chapter whose reference suite (all
+# solutions) does not build is not graded; a student's suite that does not
+# compile fails that chapter's tests only.
+grade-run: $(BUILD)/tools/grade
+	@mkdir -p $(GRADE_DIR); set -- ; missing=""; \
+	for c in $(GRADE_CHAPTERS); do \
+	    if ! $(MAKE) --no-print-directory -s $(BUILD)/tests/test_$$c >$(GRADE_DIR)/reference_$$c.log 2>&1; then \
+	        echo "$$c: not graded, its reference suite does not build (see $(GRADE_DIR)/reference_$$c.log)"; \
+	        missing="$$missing $$c"; continue; \
+	    fi; \
+	    rm -f $(GRADE_DIR)/test_$$c; \
+	    $(MAKE) --no-print-directory -s $(GRADE_DIR)/test_$$c >$(GRADE_DIR)/test_$$c.log 2>&1 || { \
+	        echo "$$c: the files of $(SOURCE)/$$c/ do not compile:"; tail -n 20 $(GRADE_DIR)/test_$$c.log; }; \
+	    set -- "$$@" $$c $(GRADE_DIR)/test_$$c $(BUILD)/tests/test_$$c $(GRADE_DIR)/test_$$c.log; \
+	done; \
+	echo "grading $(SOURCE)/ (each chapter with the solutions of the others; $(TIMEOUT) s per test)"; \
+	$(BUILD)/tools/grade --timeout $(TIMEOUT) --json $(GRADE_JSON) --junit $(GRADE_JUNIT) \
+	    $(if $(filter solutions,$(SOURCE)),--require-full) "$$@" || exit 1; \
+	echo "wrote $(GRADE_JSON) (Gradescope) and $(GRADE_JUNIT) (JUnit)"; \
+	if [ -n "$$missing" ]; then echo "not graded:$$missing"; exit 1; fi
+
+# A Gradescope autograder: the project, setup.sh and run_autograder in one zip.
+AUTOGRADER ?= $(GRADE_BUILD)/autograder$(if $(CHAPTER),-$(CHAPTER)).zip
+autograder:
+	@tools/autograder.sh $(AUTOGRADER) "$(CHAPTER)" "$(TIMEOUT)"
+
+# ---- figures: the lecture figures of each chapter, rendered by its solution --------
+
+FIGURE_LISTS := $(sort $(wildcard chapters/[0-9][0-9]_*/figures.txt))
+# The builds the figures come from: BUILD when given, else the plain double
+# build (FIG_BUILD) and its float twin (FIG_BUILD-float).
+FIG_BUILD ?= $(if $(filter command line environment,$(origin BUILD)),$(BUILD),build$(compiler))
+# "double/01_camera_rays" for each renderer a figure needs.
+FIG_NEEDS := $(if $(FIGURE_LISTS),$(shell awk 'NF >= 2 && $$1 !~ /^\#/ { n = split(FILENAME, p, "/"); print $$2 "/" p[n - 1] }' $(FIGURE_LISTS) | sort -u))
+FIG_DOUBLE := $(patsubst double/%,$(FIG_BUILD)/%/render,$(filter double/%,$(FIG_NEEDS)))
+FIG_FLOAT := $(patsubst float/%,$(FIG_BUILD)-float/%/render,$(filter float/%,$(FIG_NEEDS)))
+
+figure-renderers:
+	@$(if $(FIG_DOUBLE),$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_DOUBLE))
+	@$(if $(FIG_FLOAT),$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=float BUILD=$(FIG_BUILD)-float $(FIG_FLOAT))
+
+figures: figure-renderers
+	@tools/figures.sh render $(FIG_BUILD) $(FIGURE_LISTS)
+
+check-figures: figure-renderers
+	@tools/figures.sh check $(FIG_BUILD) $(FIGURE_LISTS)
+
+# ---- snippets: the code shown in the texts, taken from the source ----------------
+
+SNIPPET_TEXTS := $(sort $(wildcard chapters/[0-9][0-9]_*/README.md docs/*.md))
+
+snippets:
+	@tools/snippets.sh fill $(SNIPPET_TEXTS)
+
+check-snippets:
+	@tools/snippets.sh check $(SNIPPET_TEXTS)
+
+# Text, skeletons and figures agree with their sources.
+check: check-skeletons check-snippets check-figures
+
 # ---- tests ----------------------------------------------------------------------
 
 # One build's suites: build them all, run them all, and count.
@@ -106,17 +216,29 @@ test:
 	$(MAKE) --no-print-directory REAL=float test-suites
 	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" test-suites
 	@tools/sum-results.sh $(BUILD) $(BUILD)-float $(BUILD)-asan
+	$(MAKE) --no-print-directory check
 
 # ---- help -----------------------------------------------------------------------
 
 help:
 	@echo "make                 build every chapter and render its built-in scene into out/"
-	@echo "make test            all suites: double, float (REAL=float) and sanitizer builds"
+	@echo "make STUDENT=1       the same from the student's files in chapters/ (into build-student/)"
+	@echo "make test            all suites: double, float (REAL=float) and sanitizer builds, then make check"
 	@echo "make renderers       build every chapter's renderer into $(BUILD)/NN_name/render"
 	@echo "make tests           build the test suites of this build"
 	@echo "make test-suites     run the suites of this build only"
+	@echo "make grade           grade the student's files: chapter N with the solutions of the others,"
+	@echo "                     each test alone with a time limit; a score table, $(GRADE_JSON)"
+	@echo "                     (Gradescope) and $(GRADE_JUNIT) (JUnit)"
+	@echo "  CHAPTER=01         grade one chapter;  SOURCE=solutions  grade the solutions (must be full marks)"
+	@echo "  TIMEOUT=10         seconds per test"
+	@echo "make autograder      a Gradescope autograder zip (CHAPTER=01: one chapter) into $(GRADE_BUILD)/"
+	@echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
+	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
+	@echo "make snippets        fill the code blocks of the READMEs from the source"
+	@echo "make check           check-skeletons, check-snippets, check-figures: fail naming what is stale"
 	@echo "make clean           remove build*/ and out/"
-	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang"
+	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
 	@echo "chapters: $(CHAPTERS)"
 
 clean:

@@ -1,0 +1,93 @@
+#!/bin/sh
+# figures.sh render|check BUILD LIST... - the lecture figures of the chapters.
+#
+# Each LIST is a chapters/NN_name/figures.txt; each of its lines (blank lines
+# and lines starting with # aside) is
+#
+#     OUTPUT.png REAL ARGS...
+#
+# and is rendered by the chapter's renderer of the REAL (double or float)
+# build, BUILD/NN_name/render or BUILD-float/NN_name/render, as
+#
+#     render -q -o docs/figures/OUTPUT.png ARGS...
+#
+# @CORNELL@ in ARGS is the Cornell corpus folder; a figure that needs it is
+# skipped, with a note, when the folder is absent.  `render` writes into
+# docs/figures/; `check` renders into a temporary folder and fails naming
+# every committed figure that is stale (not byte for byte the same) or missing.
+mode=$1
+build=$2
+shift 2
+case "$mode" in render|check) ;; *) echo "usage: $0 render|check BUILD LIST..." >&2; exit 2 ;; esac
+cornell=${RT_CORNELL:-../shared/cornell/sp17-ray1/data}
+figures=docs/figures
+if [ "$mode" = check ]; then
+    out=$(mktemp -d) || exit 1
+    trap 'rm -rf "$out"' EXIT
+else
+    out=$figures
+    mkdir -p "$out"
+fi
+status=0
+count=0
+for list in "$@"; do
+    chapter=$(basename "$(dirname "$list")")
+    lineno=0
+    while IFS= read -r line || [ -n "$line" ]; do
+        lineno=$((lineno + 1))
+        case "$line" in ''|'#'*) continue ;; esac
+        set -f
+        # shellcheck disable=SC2086
+        set -- $line
+        set +f
+        name=$1
+        real=$2
+        case "$real" in
+            double) renderer=$build/$chapter/render ;;
+            float) renderer=$build-float/$chapter/render ;;
+            *) echo "$list:$lineno: the build must be double or float, not '$real'" >&2; status=1; continue ;;
+        esac
+        case "$name" in
+            *.png) ;;
+            *) echo "$list:$lineno: '$name' is not a .png name" >&2; status=1; continue ;;
+        esac
+        shift 2
+        needs_cornell=0
+        for arg in "$@"; do
+            case "$arg" in *@CORNELL@*) needs_cornell=1 ;; esac
+        done
+        if [ "$needs_cornell" = 1 ] && [ ! -d "$cornell" ]; then
+            echo "$name: skipped, the Cornell corpus ($cornell) is absent"
+            continue
+        fi
+        # Expand @CORNELL@ in place, keeping each argument a single word.
+        first=1
+        for arg in "$@"; do
+            expanded=$(printf '%s\n' "$arg" | sed "s|@CORNELL@|$cornell|g")
+            if [ "$first" = 1 ]; then set --; first=0; fi
+            set -- "$@" "$expanded"
+        done
+        [ "$first" = 1 ] && set --
+        if ! "$renderer" -q -o "$out/$name" "$@" </dev/null; then
+            echo "$list:$lineno: $renderer failed to render $name" >&2
+            status=1
+            continue
+        fi
+        count=$((count + 1))
+        if [ "$mode" = check ]; then
+            if [ ! -e "$figures/$name" ]; then
+                echo "$figures/$name: missing (listed in $list; run make figures)" >&2
+                status=1
+            elif ! cmp -s "$out/$name" "$figures/$name"; then
+                echo "$figures/$name: stale, it differs from what $list:$lineno renders (run make figures)" >&2
+                status=1
+            fi
+        else
+            echo "rendered $out/$name"
+        fi
+    done <"$list"
+done
+if [ "$mode" = check ] && [ "$status" = 0 ]; then
+    echo "figures: all $count rendered figures match docs/figures/"
+fi
+exit $status
