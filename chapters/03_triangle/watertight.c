@@ -1,0 +1,72 @@
+/* watertight.c - chapter 03: Woo, Benthin and Wald's watertight test (2013). */
+#include "03_triangle/watertight.h"
+
+static real component(vec3 v, int k) { return k == 0 ? v.x : k == 1 ? v.y : v.z; }
+
+/* The axis along which |d| is largest. */
+static int largest_axis(vec3 d)
+{
+    real x = real_abs(d.x), y = real_abs(d.y), z = real_abs(d.z);
+    return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
+}
+
+bool triangle_intersect_watertight(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
+{
+    /* snippet: watertight_shear */
+    /* 1. Ray space: the axis where d is largest becomes z, the other two follow
+     *    cyclically (swapped when d_z < 0, which keeps the triangle's winding). */
+    int kz = largest_axis(r.d), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    real dz = component(r.d, kz);
+    if (!(dz != 0 && isfinite(dz)))
+        return false; /* no direction at all */
+    if (dz < 0) {
+        int swap = kx;
+        kx = ky;
+        ky = swap;
+    }
+    /* The shear that maps d to (0, 0, 1): x' = x - S_x z, y' = y - S_y z, z' = S_z z. */
+    real sx = component(r.d, kx) / dz, sy = component(r.d, ky) / dz, sz = 1 / dz;
+
+    /* 2. The vertices relative to p, sheared: the ray is now the positive z axis. */
+    vec3 a = vec3_sub(tri->a, r.p), b = vec3_sub(tri->b, r.p), c = vec3_sub(tri->c, r.p);
+    real ax = component(a, kx) - sx * component(a, kz), ay = component(a, ky) - sy * component(a, kz);
+    real bx = component(b, kx) - sx * component(b, kz), by = component(b, ky) - sy * component(b, kz);
+    real cx = component(c, kx) - sx * component(c, kz), cy = component(c, ky) - sy * component(c, kz);
+    /* end snippet */
+
+    /* snippet: watertight_edges */
+    /* 3. The edge functions: twice the signed areas of the triangles that the
+     *    origin (the ray) makes with each edge.  U belongs to edge bc (so to a),
+     *    V to edge ca, W to edge ab.  Each is a function of its edge alone. */
+    real u = cx * by - cy * bx;
+    real v = ax * cy - ay * cx;
+    real w = bx * ay - by * ax;
+#ifdef RT_REAL_FLOAT
+    /* A zero may be a rounded-away sign.  The products of two floats are exact
+     * in double, so the differences have the right sign there. */
+    if (u == 0 || v == 0 || w == 0) {
+        u = (real)((double)cx * by - (double)cy * bx);
+        v = (real)((double)ax * cy - (double)ay * cx);
+        w = (real)((double)bx * ay - (double)by * ax);
+    }
+#endif
+    /* Closed edges: inside when no sign disagrees (zeros agree with both). */
+    if ((u < 0 || v < 0 || w < 0) && (u > 0 || v > 0 || w > 0))
+        return false;
+    /* end snippet */
+
+    /* snippet: watertight_t */
+    /* 4. u + v + w is the sheared triangle's doubled area: 0 when the ray lies
+     *    in its plane or the triangle is degenerate.  The hit point is
+     *    (u a + v b + w c) / det, so t is the same mix of the vertices' z'. */
+    real det = u + v + w;
+    if (det == 0 || !isfinite(det))
+        return false;
+    real az = sz * component(a, kz), bz = sz * component(b, kz), cz = sz * component(c, kz);
+    real t = (u * az + v * bz + w * cz) / det;
+    if (!(t > t_min && t < t_max))
+        return false;
+    *hit = (triangle_hit){.t = t, .beta = v / det, .gamma = w / det};
+    return true;
+    /* end snippet */
+}

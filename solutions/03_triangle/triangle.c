@@ -1,0 +1,70 @@
+/* triangle.c - chapter 03: the barycentric ray-triangle intersection. */
+#include "03_triangle/triangle.h"
+
+#include "03_triangle/watertight.h"
+
+real det3(vec3 c0, vec3 c1, vec3 c2) { return vec3_dot(c0, vec3_cross(c1, c2)); }
+
+/* The lecture's slide "Barycentric ray-triangle intersection":
+ *     p + t d = a + beta (b - a) + gamma (c - a)
+ * is, collected by unknown,
+ *     [a - b   a - c   d] [beta gamma t]^T = a - p,
+ * three linear equations in beta, gamma and t. */
+static bool cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
+{
+    /* EXERCISE cramer: solve the 3x3 system by Cramer's rule.  With A = [a - b   a - c   d]
+     * and det3(c0, c1, c2) the determinant of the matrix with those columns:
+     *     M     = det3(a - b, a - c, d)
+     *     beta  = det3(a - p, a - c, d) / M     (column 1 replaced by the right side a - p)
+     *     gamma = det3(a - b, a - p, d) / M     (column 2 replaced)
+     *     t     = det3(a - b, a - c, a - p) / M (column 3 replaced)
+     * M == 0 means no single solution (a ray parallel to the plane, or a degenerate
+     * triangle): return false before dividing.  Hit when t_min < t < t_max and the point
+     * is inside, edges included: beta >= 0, gamma >= 0, beta + gamma <= 1.
+     * Write the comparisons so that a NaN fails them: !(t > t_min && t < t_max). */
+    vec3 a_b = vec3_sub(tri->a, tri->b);
+    vec3 a_c = vec3_sub(tri->a, tri->c);
+    vec3 a_p = vec3_sub(tri->a, r.p);
+    real M = det3(a_b, a_c, r.d);
+    if (M == 0 || !isfinite(M))
+        return false;
+    real t = det3(a_b, a_c, a_p) / M;
+    if (!(t > t_min && t < t_max))
+        return false;
+    real gamma = det3(a_b, a_p, r.d) / M;
+    if (!(gamma >= 0 && gamma <= 1))
+        return false;
+    real beta = det3(a_p, a_c, r.d) / M;
+    if (!(beta >= 0 && beta + gamma <= 1))
+        return false;
+    *hit = (triangle_hit){.t = t, .beta = beta, .gamma = gamma};
+    return true;
+    /* STUB
+    (void)tri;
+    (void)r;
+    (void)t_min;
+    (void)t_max;
+    (void)hit;
+    return false;
+    END EXERCISE */
+}
+
+/* snippet: dispatch */
+bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, triangle_test test, triangle_hit *hit)
+{
+    if (test == TRIANGLE_WATERTIGHT)
+        return triangle_intersect_watertight(tri, r, t_min, t_max, hit);
+    return cramer(tri, r, t_min, t_max, hit);
+}
+/* end snippet */
+
+vec3 triangle_normal(const triangle *tri)
+{
+    vec3 n = vec3_cross(vec3_sub(tri->b, tri->a), vec3_sub(tri->c, tri->a));
+    real largest = vec3_max_abs(n);
+    if (!(largest > 0 && isfinite(largest)))
+        return vec3_make(0, 0, 0); /* collinear or coincident vertices: no plane */
+    /* Scaled to a largest component of 1 first, so that the squares in
+     * |n| neither overflow nor underflow. */
+    return vec3_normalize(vec3_scale(n, 1 / largest));
+}
