@@ -170,7 +170,7 @@ autograder:
 
 # ---- figures: the lecture figures of each chapter, rendered by its solution --------
 
-FIGURE_LISTS := $(sort $(wildcard chapters/[0-9][0-9]_*/figures.txt))
+FIGURE_LISTS := $(sort $(wildcard chapters/$(if $(CHAPTER),$(CHAPTER:%_=%)*,[0-9][0-9]_*)/figures.txt))
 # The builds the figures come from: BUILD when given, else the plain double
 # build (FIG_BUILD) and its float twin (FIG_BUILD-float).
 FIG_BUILD ?= $(if $(filter command line environment,$(origin BUILD)),$(BUILD),build$(compiler))
