@@ -64,8 +64,10 @@ render_stats render_image(image *img, sample_fn sample, const void *scene, const
                 for (int b = 0; b < n; b++) {
                     real du, dv;
                     render_sample_offset(opt->seed, i, j, a, b, n, &du, &dv);
+                    /* snippet: pixel_to_image */
                     real u = ((real)i + du) / (real)nx; /* u = (i + 0.5)/n_x for one sample */
                     real v = ((real)j + dv) / (real)ny; /* v = (j + 0.5)/n_y */
+                    /* end snippet */
                     sum = color_add(sum, sample(scene, u, v, &row_rays));
                 }
             }

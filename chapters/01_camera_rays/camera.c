@@ -5,6 +5,7 @@
  * huge or tiny components neither overflow nor underflow in the dot product. */
 static vec3 unit(vec3 a) { return vec3_normalize(vec3_scale(a, 1 / vec3_max_abs(a))); }
 
+/* snippet: basis */
 void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
 {
     /* TODO basis: the camera's orthonormal basis (lecture, "Specifying views"; SCENES.md <camera>):
@@ -18,6 +19,7 @@ void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
     *v = vec3_make(0, 0, 0);
     *w = vec3_make(0, 0, 0);
 }
+/* end snippet */
 
 const char *camera_init(camera *cam, const scene_camera *desc)
 {
@@ -46,6 +48,7 @@ const char *camera_init(camera *cam, const scene_camera *desc)
     return NULL;
 }
 
+/* snippet: camera_ray */
 ray camera_ray(const camera *cam, real u, real v)
 {
     /* Where (u, v) lies on the image rectangle, in the basis u, v, centred
@@ -69,3 +72,4 @@ ray camera_ray(const camera *cam, real u, real v)
     }
     return r;
 }
+/* end snippet */

@@ -5,6 +5,7 @@
  * huge or tiny components neither overflow nor underflow in the dot product. */
 static vec3 unit(vec3 a) { return vec3_normalize(vec3_scale(a, 1 / vec3_max_abs(a))); }
 
+/* snippet: basis */
 void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
 {
     /* EXERCISE basis: the camera's orthonormal basis (lecture, "Specifying views"; SCENES.md <camera>):
@@ -23,6 +24,7 @@ void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
     *w = vec3_make(0, 0, 0);
     END EXERCISE */
 }
+/* end snippet */
 
 const char *camera_init(camera *cam, const scene_camera *desc)
 {
@@ -51,6 +53,7 @@ const char *camera_init(camera *cam, const scene_camera *desc)
     return NULL;
 }
 
+/* snippet: camera_ray */
 ray camera_ray(const camera *cam, real u, real v)
 {
     /* Where (u, v) lies on the image rectangle, in the basis u, v, centred
@@ -82,3 +85,4 @@ ray camera_ray(const camera *cam, real u, real v)
     }
     return r;
 }
+/* end snippet */
