@@ -62,6 +62,11 @@ bool triangle_intersect_watertight(const triangle *tri, ray r, real t_min, real 
     real det = u + v + w;
     if (det == 0 || !isfinite(det))
         return false;
+    /* The shear rounds, so a degenerate triangle (collinear or coincident
+     * vertices) may still show a sliver of area here: ask the triangle itself.
+     * Only rays that pass the edge tests pay for this cross product. */
+    if (vec3_max_abs(vec3_cross(vec3_sub(tri->b, tri->a), vec3_sub(tri->c, tri->a))) == 0)
+        return false;
     real az = sz * component(a, kz), bz = sz * component(b, kz), cz = sz * component(c, kz);
     real t = (u * az + v * bz + w * cz) / det;
     if (!(t > t_min && t < t_max))
