@@ -118,18 +118,21 @@ static void test_vertices_and_edge_midpoints(void **state)
         }
 }
 
-/* Just outside each edge, by 1/64 of the triangle: a miss. */
+/* Just outside each edge, by 1/64 of the triangle: a miss; just inside: a hit. */
 static void test_just_outside(void **state)
 {
     (void)state;
-    const real out = (real)-1 / 64;
+    const real out = (real)-1 / 64, in = (real)1 / 64;
     const struct {
         real beta, gamma;
-    } targets[] = {{0.5, out}, {out, 0.5}, {0.5 - out, 0.5}, {out, out}, {1 - out, 0}};
+    } outside[] = {{0.5, out}, {out, 0.5}, {0.5 - out, 0.5}, {out, out}, {1 - out, 0}},
+      inside[] = {{0.5, in}, {in, 0.5}, {0.5 - in, 0.5}, {in, in}, {1 - 2 * in, in}};
     for (int k = 0; k < N_TESTS; k++)
-        for (size_t j = 0; j < sizeof targets / sizeof targets[0]; j++) {
-            vec3 x = point_at(&flat, targets[j].beta, targets[j].gamma);
+        for (size_t j = 0; j < sizeof outside / sizeof outside[0]; j++) {
+            vec3 x = point_at(&flat, outside[j].beta, outside[j].gamma);
             expect_miss(&flat, (ray){above, vec3_sub(x, above)}, 0, REAL_INFINITY, both[k]);
+            x = point_at(&flat, inside[j].beta, inside[j].gamma);
+            expect_hit(&flat, (ray){above, vec3_sub(x, above)}, both[k], 1, inside[j].beta, inside[j].gamma, 0);
         }
 }
 
@@ -142,6 +145,10 @@ static void test_parallel_ray(void **state)
         expect_miss(&flat, (ray){vec3_make(0, 0, 3), along}, 0, REAL_INFINITY, both[k]);      /* beside */
         expect_miss(&flat, (ray){vec3_make(0, 1.5, 2), along}, 0, REAL_INFINITY, both[k]);    /* in the plane */
         expect_miss(&tilted, (ray){tilted.a, vec3_sub(tilted.c, tilted.b)}, -1, 1, both[k]); /* in the plane */
+        /* ... while a ray that leaves the plane by the least amount hits. */
+        vec3 x = point_at(&flat, (real)0.25, (real)0.25);
+        vec3 p = vec3_add(x, vec3_make(-8, 0, (real)1 / 1024));
+        expect_hit(&flat, (ray){p, vec3_sub(x, p)}, both[k], 1, (real)0.25, (real)0.25, 0);
     }
 }
 
@@ -164,6 +171,11 @@ static void test_degenerate_triangles(void **state)
                 expect_miss(tri, (ray){above, vec3_sub(targets[i], above)}, 0, REAL_INFINITY, both[k]);
             assert_true(vec3_length(triangle_normal(tri)) == 0);
         }
+    /* Moving one vertex of the first by 1/8 makes it a triangle: now it is hit. */
+    const triangle sliver = {{1, 1, 2}, {3, (real)2.125, 2}, {5, 3, 2}};
+    vec3 x = point_at(&sliver, (real)0.5, (real)0.25);
+    for (int k = 0; k < N_TESTS; k++)
+        expect_hit(&sliver, (ray){above, vec3_sub(x, above)}, both[k], 1, (real)0.5, (real)0.25, 0);
 }
 
 /* A triangle with legs of 1e-6 one unit away is hit like any other: no
