@@ -213,8 +213,8 @@ test-suites: $(TEST_BINS)
 test:
 	@rm -f build*/test-results.txt
 	$(MAKE) --no-print-directory test-suites
-	$(MAKE) --no-print-directory REAL=float test-suites
-	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" test-suites
+	$(MAKE) --no-print-directory REAL=float BUILD=$(BUILD)-float test-suites
+	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-suites
 	@tools/sum-results.sh $(BUILD) $(BUILD)-float $(BUILD)-asan
 	$(MAKE) --no-print-directory check
 

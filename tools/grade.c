@@ -210,16 +210,20 @@ static char *read_file(const char *path)
     return buf_take(&b);
 }
 
-/* Prints the lines of a failed test's output that say why (cmocka's ERROR
- * and LINE lines, or the grader's own note), at most four. */
+/* Prints the lines of a failed test's output that say why (the test's
+ * messages, cmocka's ERROR and LINE lines, the grader's note), at most five. */
 static void print_reason(const char *output)
 {
     int shown = 0;
-    for (const char *line = output; *line && shown < 4;) {
+    for (const char *line = output; *line && shown < 5;) {
         const char *end = strchr(line, '\n');
         size_t n = end ? (size_t)(end - line) : strlen(line);
-        if (strncmp(line, "[  ERROR   ]", 12) == 0 || strncmp(line, "[   LINE   ]", 12) == 0 ||
-            strncmp(line, "grade: ", 7) == 0) {
+        static const char *const framing[] = {"[==", "[ RUN", "[       OK", "[  FAILED", "[  PASSED", "[  SKIPPED",
+                                              " 1 FAILED TEST", NULL};
+        int show = n > 0;
+        for (int k = 0; show && framing[k]; k++)
+            show = strncmp(line, framing[k], strlen(framing[k])) != 0;
+        if (show) {
             printf("        %.*s\n", (int)(n > 200 ? 200 : n), line);
             shown++;
         }
