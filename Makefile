@@ -144,7 +144,8 @@ grade:
 
 # Run by `grade` in the grading build.  A chapter whose reference suite (all
 # solutions) does not build is not graded; a student's suite that does not
-# compile fails that chapter's tests only.
+# compile fails that chapter's tests only.  The student's objects are always
+# rebuilt: a file copied in with an old time stamp is not taken for up to date.
 grade-run: $(BUILD)/tools/grade
 	@mkdir -p $(GRADE_DIR); set -- ; missing=""; \
 	for c in $(GRADE_CHAPTERS); do \
@@ -152,7 +153,7 @@ grade-run: $(BUILD)/tools/grade
 	        echo "$$c: not graded, its reference suite does not build (see $(GRADE_DIR)/reference_$$c.log)"; \
 	        missing="$$missing $$c"; continue; \
 	    fi; \
-	    rm -f $(GRADE_DIR)/test_$$c; \
+	    rm -f $(GRADE_DIR)/test_$$c $(BUILD)/obj/chapters/$$c/*.o; \
 	    $(MAKE) --no-print-directory -s $(GRADE_DIR)/test_$$c >$(GRADE_DIR)/test_$$c.log 2>&1 || { \
 	        echo "$$c: the files of $(SOURCE)/$$c/ do not compile:"; tail -n 20 $(GRADE_DIR)/test_$$c.log; }; \
 	    set -- "$$@" $$c $(GRADE_DIR)/test_$$c $(BUILD)/tests/test_$$c $(GRADE_DIR)/test_$$c.log; \
