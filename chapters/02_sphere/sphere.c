@@ -30,6 +30,7 @@ static bool textbook_roots(const sphere *s, ray r, real *t0, real *t1)
  *   - the roots from the stable pair (5): the one of larger magnitude by
  *     adding numbers of the same sign, the other from the product of the
  *     roots, t0 t1 = C / A (Vieta), so neither cancels. */
+/* snippet: robust */
 static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
 {
     vec3 f = vec3_sub(r.p, s->center);
@@ -54,6 +55,7 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     *t0 = *t1 = 0;
     return false;
 }
+/* end snippet */
 
 /* The outward unit normal at a point x of the sphere. */
 static vec3 sphere_normal(const sphere *s, vec3 x)
