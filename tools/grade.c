@@ -469,7 +469,7 @@ int main(int argc, char **argv)
     snprintf(points, sizeof points, "%d/%d", score, max_score);
     printf("%-24s %8s %8s\n", "total", tests, points);
     if (n_results == 0)
-        printf("(no chapter has a test suite yet: nothing to grade)\n");
+        printf("(nothing to grade: none of these chapters has a test suite yet)\n");
 
     if (json && write_json(json, score, max_score) != 0) {
         fprintf(stderr, "grade: cannot write %s\n", json);
