@@ -254,8 +254,9 @@ static void test_far_spheres(void **state)
                       "textbook %3d of %d wrong, %3d off, worst %.1e R\n",
                       ratio, robust.wrong, robust.off_sphere, robust.worst, robust.worst_r, textbook.wrong,
                       textbook.rays, textbook.off_sphere, textbook.worst_r);
-        assert_int_equal(0, robust.wrong);
-        assert_int_equal(0, robust.off_sphere);
+        if (robust.wrong || robust.off_sphere)
+            fail_msg("D/R = %g: the robust formula classified %d of %d rays wrong and put %d hits off the sphere",
+                     ratio, robust.wrong, robust.rays, robust.off_sphere);
     }
 }
 
