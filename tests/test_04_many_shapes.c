@@ -4,10 +4,14 @@
 #include <string.h>
 #include <unistd.h>
 
+#include <stb_image.h>
+
+#include "01_camera_rays/camera.h"
 #include "04_many_shapes/box.h"
 #include "04_many_shapes/closest_hit.h"
 #include "04_many_shapes/flat_shading.h"
 #include "04_many_shapes/scene_surfaces.h"
+#include "display.h"
 #include "scene_build.h"
 #include "suite.h"
 
@@ -419,6 +423,54 @@ static void test_scene_file(void **state)
     scene_free(&desc);
 }
 
+/* ---- the course's reference image ---------------------------------------------------------- */
+
+/* The course's two-boxes-rgb-normals.xml, traced pixel by pixel through the
+ * pixel centres (u, v) = ((i + 0.5)/n_x, (j + 0.5)/n_y), encoded for display
+ * and compared with the course's own reference image: every byte the same.
+ * Skipped (and worth no points) when the Cornell corpus is absent. */
+static void test_two_boxes_reference(void **state)
+{
+    (void)state;
+    const char *data = cornell_data();
+    if (!data)
+        skip();
+    char path[512], reference[512], err[512] = "";
+    snprintf(path, sizeof path, "%s/scenes/ray1/two-boxes-rgb-normals.xml", data);
+    snprintf(reference, sizeof reference, "%s/scenes/ray1/reference/two-boxes-rgb-normals.xml.png", data);
+    scene desc;
+    if (scene_load(path, &desc, err, sizeof err) != 0)
+        fail_msg("%s", err);
+    int width, height, channels;
+    unsigned char *expected = stbi_load(reference, &width, &height, &channels, 3);
+    assert_non_null(expected);
+    assert_int_equal(desc.width, width);
+    assert_int_equal(desc.height, height);
+    camera cam;
+    assert_null(camera_init(&cam, &desc.camera));
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    assert_int_equal(0, surface_list_from_scene(&list, &desc, err, sizeof err));
+    assert_int_equal(24, list.n);
+    long differ = 0;
+    for (int row = 0; row < height; row++) {
+        int j = height - 1 - row; /* the PNG stores the top row first; j counts from the bottom */
+        for (int i = 0; i < width; i++) {
+            ray r = camera_ray(&cam, ((real)i + (real)0.5) / (real)width, ((real)j + (real)0.5) / (real)height);
+            color c = trace_flat(&list, &desc, r, 0, REAL_INFINITY);
+            const unsigned char *px = expected + 3 * ((long)row * width + i);
+            differ += display_encode(c.r, desc.exposure) != px[0];
+            differ += display_encode(c.g, desc.exposure) != px[1];
+            differ += display_encode(c.b, desc.exposure) != px[2];
+        }
+    }
+    stbi_image_free(expected);
+    surface_list_free(&list);
+    scene_free(&desc);
+    if (differ)
+        fail_msg("%ld of %d bytes differ from the course's reference image", differ, 3 * width * height);
+}
+
 static const graded_test tests[] = {
     GRADED(test_closest_hit_in_any_order, 5),
     GRADED(test_t_window, 3),
@@ -429,6 +481,7 @@ static const graded_test tests[] = {
     GRADED(test_box_in_scene, 2),
     GRADED(test_flat_colors, 1),
     GRADED(test_scene_file, 2),
+    GRADED(test_two_boxes_reference, 0),
 };
 
 SUITE_MAIN("04_many_shapes", tests)
