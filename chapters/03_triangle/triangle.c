@@ -3,8 +3,6 @@
 
 #include "03_triangle/watertight.h"
 
-real det3(vec3 c0, vec3 c1, vec3 c2) { return vec3_dot(c0, vec3_cross(c1, c2)); }
-
 /* The lecture's slide "Barycentric ray-triangle intersection":
  *     p + t d = a + beta (b - a) + gamma (c - a)
  * is, collected by unknown,

@@ -51,7 +51,7 @@ vec3 triangle_normal(const triangle *tri);
 /* snippet: det3 */
 /* The determinant of the 3x3 matrix with columns c0, c1, c2, as the scalar
  * triple product det[c0 c1 c2] = c0 . (c1 x c2). */
-real det3(vec3 c0, vec3 c1, vec3 c2);
+static inline real det3(vec3 c0, vec3 c1, vec3 c2) { return vec3_dot(c0, vec3_cross(c1, c2)); }
 /* end snippet */
 
 #endif
