@@ -36,8 +36,8 @@ bool triangle_intersect_watertight(const triangle *tri, ray r, real t_min, real 
 
     /* snippet: watertight_edges */
     /* 3. The edge functions: twice the signed areas of the triangles that the
-     *    origin (the ray) makes with each edge.  U belongs to edge bc (so to a),
-     *    V to edge ca, W to edge ab.  Each is a function of its edge alone. */
+     *    origin (the ray) makes with each edge.  u belongs to edge bc (so to a),
+     *    v to edge ca, w to edge ab.  Each is a function of its edge alone. */
     real u = cx * by - cy * bx;
     real v = ax * cy - ay * cx;
     real w = bx * ay - by * ax;
