@@ -35,7 +35,7 @@ static int cracks_steps = 0;
 static const knob knobs[] = {
     {"triangle", KNOB_CHOICE, &test, triangle_choices, "the ray-triangle test"},
     {"show", KNOB_CHOICE, &show, show_choices, "what to colour each pixel by"},
-    {"cracks", KNOB_INT, &cracks_steps, NULL, "count the edge rays that slip through an icosahedron, N per edge"},
+    {"cracks", KNOB_INT, &cracks_steps, NULL, "first count the rays at an icosahedron's edges, in steps of 1/V, that slip through (0: off)"},
 };
 
 /* --show=cracks: how close to an edge, in barycentric units, a pixel is
