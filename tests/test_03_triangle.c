@@ -306,7 +306,8 @@ static void test_normal(void **state)
     /* Legs of 1e15 and 1e-15: |n|^2 would overflow or underflow in float without care. */
     const real scales[] = {(real)1e15, (real)1e-15};
     for (int k = 0; k < 2; k++) {
-        triangle s = {vec3_scale(tilted.a, scales[k]), vec3_scale(tilted.b, scales[k]), vec3_scale(tilted.c, scales[k])};
+        real f = scales[k];
+        triangle s = {vec3_scale(tilted.a, f), vec3_scale(tilted.b, f), vec3_scale(tilted.c, f)};
         assert_vec3_close(expected, triangle_normal(&s), TOL);
     }
 }

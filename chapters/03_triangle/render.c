@@ -35,7 +35,8 @@ static int cracks_steps = 0;
 static const knob knobs[] = {
     {"triangle", KNOB_CHOICE, &test, triangle_choices, "the ray-triangle test"},
     {"show", KNOB_CHOICE, &show, show_choices, "what to colour each pixel by"},
-    {"cracks", KNOB_INT, &cracks_steps, NULL, "first count the rays at an icosahedron's edges, in steps of 1/V, that slip through (0: off)"},
+    {"cracks", KNOB_INT, &cracks_steps, NULL,
+     "first count the rays at an icosahedron's edges, in steps of 1/V, that slip through (0: off)"},
 };
 
 /* --show=cracks: how close to an edge, in barycentric units, a pixel is
@@ -116,7 +117,8 @@ static color sample(const void *scene, real u, real v, uint64_t *rays)
 
 static int add_triangle(scene *desc, vec3 v0, vec3 v1, vec3 v2)
 {
-    return scene_add_surface(desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = -1, .v0 = v0, .v1 = v1, .v2 = v2});
+    scene_surface surface = {.kind = SURFACE_TRIANGLE, .shader = -1, .v0 = v0, .v1 = v1, .v2 = v2};
+    return scene_add_surface(desc, surface);
 }
 
 static int add_icosahedron(scene *desc, vec3 centre, real radius)
@@ -171,7 +173,8 @@ static void count_cracks(const char *name)
     crack_count c = icosahedron_cracks(vec3_make(0, 0, 0), 1, 100, cracks_steps, (triangle_test)test);
     clock_gettime(CLOCK_MONOTONIC, &t1);
     double seconds = (double)(t1.tv_sec - t0.tv_sec) + 1e-9 * (double)(t1.tv_nsec - t0.tv_nsec);
-    fprintf(stderr, "%s: --triangle=%s (%s): %ld of %ld rays aimed at edges and vertices from inside slip through, %.3f s\n",
+    fprintf(stderr,
+            "%s: --triangle=%s (%s): %ld of %ld rays aimed at edges and vertices from inside slip through, %.3f s\n",
             name, triangle_choices[test], REAL_NAME, c.misses, c.rays, seconds);
 }
 
