@@ -399,7 +399,7 @@ static void test_near_edge(void **state)
 }
 
 static const graded_test tests[] = {
-    GRADED(test_det3, 1),
+    GRADED(test_det3, 0), /* handed out complete: no points */
     GRADED(test_centroid, 3),
     GRADED(test_vertices_and_edge_midpoints, 3),
     GRADED(test_just_outside, 2),
@@ -410,11 +410,11 @@ static const graded_test tests[] = {
     GRADED(test_grazing_rays, 2),
     GRADED(test_t_window, 2),
     GRADED(test_hit_point_is_consistent, 2),
-    GRADED(test_normal, 1),
-    GRADED(test_icosahedron_is_closed, 1),
+    GRADED(test_normal, 0), /* handed out complete: no points */
+    GRADED(test_icosahedron_is_closed, 0), /* handed out complete: no points */
     GRADED(test_icosahedron_from_inside, 2),
-    GRADED(test_watertight_has_no_cracks, 1),
-    GRADED(test_near_edge, 1),
+    GRADED(test_watertight_has_no_cracks, 0), /* handed out complete: no points */
+    GRADED(test_near_edge, 0), /* handed out complete: no points */
 };
 
 SUITE_MAIN("03_triangle", tests)

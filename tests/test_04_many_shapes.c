@@ -477,9 +477,9 @@ static const graded_test tests[] = {
     GRADED(test_empty_and_single, 1),
     GRADED(test_coincident_surfaces_first_wins, 2),
     GRADED(test_hit_record_fields, 3),
-    GRADED(test_box_triangles_outward, 2),
+    GRADED(test_box_triangles_outward, 0), /* handed out complete: no points */
     GRADED(test_box_in_scene, 2),
-    GRADED(test_flat_colors, 1),
+    GRADED(test_flat_colors, 0), /* handed out complete: no points */
     GRADED(test_scene_file, 2),
     GRADED(test_two_boxes_reference, 0),
 };
