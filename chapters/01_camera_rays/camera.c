@@ -1,6 +1,8 @@
 /* camera.c - chapter 01: the camera basis and eye rays. */
 #include "01_camera_rays/camera.h"
 
+#include <stdio.h>
+
 /* Scales a by its largest component before normalizing, so that vectors with
  * huge or tiny components neither overflow nor underflow in the dot product. */
 static vec3 unit(vec3 a) { return vec3_normalize(vec3_scale(a, 1 / vec3_max_abs(a))); }
@@ -49,6 +51,15 @@ const char *camera_init(camera *cam, const scene_camera *desc)
 }
 
 /* snippet: camera_ray */
+bool camera_from_scene(camera *cam, const scene *desc, char *err, size_t err_size)
+{
+    const char *problem = camera_init(cam, &desc->camera);
+    if (problem)
+        snprintf(err, err_size, "%s:%d: camera: %s", desc->path ? desc->path : "built-in scene", desc->camera.line,
+                 problem);
+    return problem == NULL;
+}
+
 ray camera_ray(const camera *cam, real u, real v)
 {
     /* Where (u, v) lies on the image rectangle, in the basis u, v, centred

@@ -9,6 +9,9 @@
 #ifndef CH01_CAMERA_H
 #define CH01_CAMERA_H
 
+#include <stdbool.h>
+#include <stddef.h>
+
 #include "ray.h"
 #include "scene.h"
 
@@ -26,6 +29,10 @@ typedef struct {
  * NULL, or the problem when the camera is degenerate: a zero viewDir or
  * viewUp, viewUp parallel to viewDir, or a size that is not positive. */
 const char *camera_init(camera *cam, const scene_camera *desc);
+
+/* camera_init on a whole scene description: returns true, or false with
+ * "file:line: camera: problem" in err (the line of the <camera> element). */
+bool camera_from_scene(camera *cam, const scene *desc, char *err, size_t err_size);
 
 /* The orthonormal basis from the view direction and the up vector:
  *     w = -viewDir / |viewDir|,  u = (viewDir x viewUp) / |viewDir x viewUp|,  v = w x u.

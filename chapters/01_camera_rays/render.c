@@ -68,10 +68,11 @@ static int builtin(scene *desc)
 static void *prepare(const scene *desc, char *err, size_t err_size)
 {
     camera *cam = malloc(sizeof *cam);
-    const char *problem = cam ? camera_init(cam, &desc->camera) : "out of memory";
-    if (problem) {
-        snprintf(err, err_size, "%s:%d: camera: %s", desc->path ? desc->path : "built-in scene", desc->camera.line,
-                 problem);
+    if (!cam) {
+        snprintf(err, err_size, "out of memory");
+        return NULL;
+    }
+    if (!camera_from_scene(cam, desc, err, err_size)) {
         free(cam);
         return NULL;
     }

@@ -87,9 +87,7 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
         release(st);
         return NULL;
     }
-    const char *problem = camera_init(&st->cam, &desc->camera);
-    if (problem) {
-        snprintf(err, err_size, "%s:%d: camera: %s", where, desc->camera.line, problem);
+    if (!camera_from_scene(&st->cam, desc, err, err_size)) {
         release(st);
         return NULL;
     }

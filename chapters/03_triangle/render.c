@@ -194,9 +194,11 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
         return NULL;
     }
     stage *s = calloc(1, sizeof *s);
-    const char *problem = s ? camera_init(&s->cam, &desc->camera) : "out of memory";
-    if (problem) {
-        snprintf(err, err_size, "%s:%d: camera: %s", where, desc->camera.line, problem);
+    if (!s) {
+        snprintf(err, err_size, "%s: out of memory", where);
+        return NULL;
+    }
+    if (!camera_from_scene(&s->cam, desc, err, err_size)) {
         free(s);
         return NULL;
     }

@@ -63,10 +63,7 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
     }
     st->desc = desc;
     surface_list_init(&st->list, sphere_formulas[sphere_choice], triangle_tests[triangle_choice]);
-    const char *problem = camera_init(&st->cam, &desc->camera);
-    if (problem) {
-        snprintf(err, err_size, "%s:%d: camera: %s", desc->path ? desc->path : "built-in scene", desc->camera.line,
-                 problem);
+    if (!camera_from_scene(&st->cam, desc, err, err_size)) {
         release(st);
         return NULL;
     }
