@@ -50,7 +50,6 @@ const char *camera_init(camera *cam, const scene_camera *desc)
     return NULL;
 }
 
-/* snippet: camera_ray */
 bool camera_from_scene(camera *cam, const scene *desc, char *err, size_t err_size)
 {
     const char *problem = camera_init(cam, &desc->camera);
@@ -60,6 +59,7 @@ bool camera_from_scene(camera *cam, const scene *desc, char *err, size_t err_siz
     return problem == NULL;
 }
 
+/* snippet: camera_ray */
 ray camera_ray(const camera *cam, real u, real v)
 {
     /* Where (u, v) lies on the image rectangle, in the basis u, v, centred
