@@ -28,13 +28,15 @@ static int read_numbers(obj_reader *r, const char *s, real *out, int n, int opti
     for (int k = 0; k < n; k++) {
         errno = 0;
         double x = strtod(s, &end);
-        if (end == s || errno == ERANGE || !isfinite(x))
+        if (end == s || errno == ERANGE || !isfinite(x) || real_abs((real)x) > REAL_MAX / 4)
             return fail(r, "missing or malformed number", NULL);
         out[k] = (real)x;
         s = end;
     }
     for (int k = 0; k < optional_extra; k++) {
-        strtod(s, &end);
+        double w = strtod(s, &end);
+        if (end != s && !isfinite(w))
+            return fail(r, "missing or malformed number", NULL);
         s = end;
     }
     while (*s == ' ' || *s == '\t' || *s == '\r' || *s == '\n')
@@ -63,6 +65,7 @@ static int read_corner(obj_reader *r, const char **s, const mesh *m, int *v, int
 {
     char *end;
     long index[3] = {0, 0, 0};
+    bool given[3] = {false, false, false};
     const char *p = *s;
     for (int part = 0; part < 3; part++) {
         if (part > 0) {
@@ -76,13 +79,17 @@ static int read_corner(obj_reader *r, const char **s, const mesh *m, int *v, int
         index[part] = strtol(p, &end, 10);
         if (end == p || errno)
             return fail(r, "malformed face corner near: ", *s);
+        given[part] = true;
         p = end;
     }
-    *v = resolve_index(r, index[0], m->n_positions, "vertex");
-    *vt = index[1] ? resolve_index(r, index[1], m->n_uvs, "texture coordinate") : -1;
-    *vn = index[2] ? resolve_index(r, index[2], m->n_normals, "normal") : -1;
-    if (*v < 0 || (index[1] && *vt < 0) || (index[2] && *vn < 0))
-        return -1;
+    static const char *const what[3] = {"vertex", "texture coordinate", "normal"};
+    const int count[3] = {m->n_positions, m->n_uvs, m->n_normals};
+    int *resolved[3] = {v, vt, vn};
+    for (int part = 0; part < 3; part++) {
+        *resolved[part] = -1;
+        if (given[part] && (*resolved[part] = resolve_index(r, index[part], count[part], what[part])) < 0)
+            return -1; /* the first bad index is the one named */
+    }
     *s = p;
     return 0;
 }

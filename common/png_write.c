@@ -71,6 +71,7 @@ int png_write(const image *img, real exposure, const char *path, char *err, size
         unlink(tmp);
         goto done;
     }
+    errno = 0;
     int encoded = stbi_write_png_to_func(sink_write, &sink, img->width, img->height, 3, bytes, img->width * 3);
     int flushed = fflush(sink.file) == 0 && fsync(fileno(sink.file)) == 0;
     int closed = fclose(sink.file) == 0;

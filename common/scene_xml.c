@@ -376,11 +376,12 @@ static void end_leaf(reader *r, element_id id)
     case E_AMBIENT: parse_color(r, &s->ambient); break;
     case E_SAMPLES:
         if (parse_real_min(r, &sample_count, 1, false)) {
-            int n = (int)real_sqrt(sample_count);
-            if ((real)(n * n) != sample_count || sample_count > 65536)
+            long n = sample_count <= 65536 ? (long)real_sqrt(sample_count) : 0;
+            if (n == 0 || (real)(n * n) != sample_count)
                 fail_at(r, line_of_top(r), "<samples> must be a square number from 1 to 65536, not %g",
                         (double)sample_count);
-            s->samples = (int)sample_count;
+            else
+                s->samples = (int)sample_count;
         }
         break;
     case E_VIEW_POINT: parse_vec3(r, &s->camera.view_point); break;

@@ -244,6 +244,8 @@ static void test_number_errors(void **state)
     expect_error("<scene>\n<image>320</image></scene>", 2, "two integers");
     expect_error("<scene>\n<image>320.5 200</image></scene>", 2, "two integers");
     expect_error("<scene>\n<samples>3</samples></scene>", 2, "square number");
+    expect_error("<scene>\n<samples>4294967296</samples></scene>", 2, "square number"); /* 65536^2: no overflow */
+    expect_error("<scene>\n<samples>1e30</samples></scene>", 2, "square number");
     expect_error("<scene>\n<shader type=\"Phong\">\n<exponent>-1</exponent></shader></scene>", 3, "at least 0");
     expect_error("<scene>\n<shader type=\"Glass\">\n<refractiveIndex>0</refractiveIndex></shader></scene>", 3,
                  "greater than 0");
@@ -282,6 +284,17 @@ static void test_file_errors(void **state)
     write_file("bad3.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n");
     expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad3.obj</data></surface></scene>", 3,
                  "bad3.obj:3: a face needs at least 3 corners");
+    write_file("bad5.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/0 2/1 3/1\n");
+    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad5.obj</data></surface></scene>", 3,
+                 "bad5.obj:5: face refers to a missing texture coordinate index 0");
+    /* the first bad index is named: the texture coordinate, not the normal */
+    write_file("bad6.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2/3 2/2/3 3/2/3\n");
+    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad6.obj</data></surface></scene>", 3,
+                 "bad6.obj:4: face refers to a missing texture coordinate index 2");
+    /* a coordinate beyond what `real` holds (only float: 1e39 > FLT_MAX) */
+    write_file("bad7.obj", REAL_MAX < 1e39 ? "v 1e39 0 0\n" : "v 1e400 0 0\n");
+    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad7.obj</data></surface></scene>", 3,
+                 "bad7.obj:1: missing or malformed number");
     write_file("bad4.obj", "v 0 0 0\ncurv 1 2\n");
     expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad4.obj</data></surface></scene>", 3,
                  "bad4.obj:2: unknown statement: curv");

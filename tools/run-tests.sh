@@ -13,11 +13,16 @@ skipped=0
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT
 for suite in "$@"; do
-    total=$("$suite" --list | wc -l)
+    if ! total=$("$suite" --list | wc -l) || [ "$total" -eq 0 ]; then
+        echo "$suite: cannot list its tests: counted as one failed test" >&2
+        failed=$((failed + 1))
+        continue
+    fi
     "$suite" 2>&1 | tee "$log"
     status=${PIPESTATUS[0]}
-    if [ "$status" -gt "$total" ] || [ "$status" -lt 0 ]; then
-        echo "$suite: crashed (exit status $status): all $total tests count as failed" >&2
+    ran=$(sed -n 's/^\[==========\] \([0-9]*\) test(s) run\.$/\1/p' "$log")
+    if [ "$status" -gt "$total" ] || [ "${ran:-0}" -ne "$total" ]; then
+        echo "$suite: crashed (exit status $status) after ${ran:-0} of $total tests: all count as failed" >&2
         status=$total
     fi
     s=$(sed -n 's/^\[  SKIPPED \] \([0-9]*\) test(s), listed below:$/\1/p' "$log")
