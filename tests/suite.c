@@ -33,11 +33,16 @@ const char *cornell_data(void)
     static const char *const candidates[] = {"../shared/cornell/sp17-ray1/data", NULL};
     const char *env = getenv("RT_CORNELL");
     struct stat st;
-    if (env && stat(env, &st) == 0 && S_ISDIR(st.st_mode))
-        return env;
+    if (env) {
+        if (stat(env, &st) == 0 && S_ISDIR(st.st_mode))
+            return env;
+        fail_msg("RT_CORNELL=%s is not a folder", env);
+    }
     for (int k = 0; candidates[k]; k++)
         if (stat(candidates[k], &st) == 0 && S_ISDIR(st.st_mode))
             return candidates[k];
+    if (getenv("RT_REQUIRE_CORNELL"))
+        fail_msg("RT_REQUIRE_CORNELL is set but the Cornell corpus is not at %s", candidates[0]);
     return NULL;
 }
 

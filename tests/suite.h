@@ -50,7 +50,9 @@ void check_close(double expected, double actual, double tolerance, const char *w
 void check_vec3_close(vec3 expected, vec3 actual, double tolerance, const char *what, const char *file, int line);
 
 /* The folder of the Cornell corpus (../shared/cornell/sp17-ray1/data, or
- * $RT_CORNELL), or NULL when it is absent: tests that use it skip then. */
+ * $RT_CORNELL), or NULL when it is absent: tests that use it skip then.
+ * With RT_REQUIRE_CORNELL set (CI, where the corpus is always beside the
+ * clone), an absent corpus fails the test instead. */
 const char *cornell_data(void);
 
 #endif
