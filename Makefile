@@ -57,7 +57,9 @@ ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS)
 
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
-IMAGES := $(foreach c,$(CHAPTERS),out/$c.png)
+# The built-in scenes' images: out/, or out-student/ for the student build.
+OUT := out$(if $(filter 1,$(STUDENT)),-student)
+IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
         figure-renderers figures check-figures snippets check-snippets check
@@ -79,8 +81,8 @@ $(BUILD)/$1/render: $(call objs,chapters/$1/render.c $(call stages_upto,$1) $(CO
 	@mkdir -p $$(@D)
 	$$(CC) $$(LDFLAGS) $$^ $$(LDLIBS) -o $$@
 
-out/$1.png: $(BUILD)/$1/render
-	@mkdir -p out
+$(OUT)/$1.png: $(BUILD)/$1/render
+	@mkdir -p $(OUT)
 	$(BUILD)/$1/render -o $$@
 
 $(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call stages_upto,$1) $(COMMON_SRC))
@@ -238,11 +240,11 @@ help:
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
 	@echo "make check           check-skeletons, check-snippets, check-figures: fail naming what is stale"
-	@echo "make clean           remove build*/ and out/"
+	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
 	@echo "chapters: $(CHAPTERS)"
 
 clean:
-	rm -rf build build-* out
+	rm -rf build build-* out out-student
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
