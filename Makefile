@@ -62,7 +62,7 @@ OUT := out$(if $(filter 1,$(STUDENT)),-student)
 IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
-        figure-renderers figures check-figures snippets check-snippets check
+        figure-renderers figures check-figures snippets check-snippets check bench bench-tools
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -221,6 +221,31 @@ test:
 	@tools/sum-results.sh $(BUILD) $(BUILD)-float $(BUILD)-asan
 	$(MAKE) --no-print-directory check
 
+# ---- bench: the speed/accuracy measurements of docs/measurements.md ----------------
+#
+# Not part of `make test`: timings never are.  Builds the double and float
+# renderers and the bench's tools, then bench/bench.sh measures and writes
+# docs/measurements.md and docs/figures/bench_*.png (BENCH_REPS=5 rounds).
+
+BENCH_BUILD ?= build$(compiler)
+BENCH_TOOLS := $(addprefix $(BUILD)/bench-tools/,imgcmp tessellate checker scene2pov)
+
+$(BUILD)/bench-tools/scene2pov: $(call objs,bench/scene2pov.c $(COMMON_SRC))
+	@mkdir -p $(@D)
+	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+$(BUILD)/bench-tools/%: $(BUILD)/obj/bench/%.o
+	@mkdir -p $(@D)
+	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
+bench-tools: $(BENCH_TOOLS)
+
+bench:
+	@tools/deps.sh "$(CC)" bench
+	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(BENCH_BUILD) renderers bench-tools
+	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=float BUILD=$(BENCH_BUILD)-float renderers
+	@CC="$(CC)" bench/bench.sh $(BENCH_BUILD) $(BENCH_BUILD)-float $(BENCH_BUILD)/bench-tools
+
 # ---- help -----------------------------------------------------------------------
 
 help:
@@ -240,6 +265,8 @@ help:
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
 	@echo "make check           check-skeletons, check-snippets, check-figures: fail naming what is stale"
+	@echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
+	@echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"
 	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
 	@echo "chapters: $(CHAPTERS)"
