@@ -244,7 +244,7 @@ if [ ${#growth_chapters[@]} -gt 0 ]; then
 EOF
         settings_clear
         for c in "${growth_chapters[@]}"; do
-            size=$(calibrated_size "$build/$c/render" "$work/growth/sphere_$n.xml")
+            size=$(min_side=8 calibrated_size "$build/$c/render" "$work/growth/sphere_$n.xml")
             setting "$c" "$work/growth/img_${c}_$n.png" "$build/$c/render" -j 1 -s "$size" "$work/growth/sphere_$n.xml"
         done
         measure "growth_$n" "$([ "$n" -ge 1000000 ] && echo 3 || echo "$reps")"
@@ -305,6 +305,8 @@ load_after=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
 
 # ---- plots and the page -----------------------------------------------------------------
 
+note "plots"
 . "$here/plots.sh"
+note "page"
 . "$here/page.sh"
 note "bench: wrote $page and $(ls "$figures"/bench_*.png 2>/dev/null | wc -l) figures in ${SECONDS} s"

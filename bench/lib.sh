@@ -112,8 +112,8 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a == "-" || b == "-" || b + 0 == 
 
 # calibrated_size COMMAND...: a size "WxH" with the aspect of the command's
 # own image at which it renders in about $target seconds on one thread
-# (clamped to sides of 16 to 2048 pixels).  Runs the command once at its own
-# size on one thread.
+# (clamped to sides of $min_side, default 16, to 2048 pixels).  Runs the
+# command once at its own size on one thread.
 calibrated_size() {
     local img=$work/calibrate.png log=$work/calibrate.log
     # shellcheck disable=SC2048,SC2086
@@ -124,12 +124,12 @@ calibrated_size() {
     local t
     t=$(summary_of "$log" | awk '{ print $1 }')
     read -r w h < <("$tools/imgcmp" size "$img")
-    awk -v t="${t:-0}" -v w="$w" -v h="$h" -v target="$target" 'BEGIN {
+    awk -v t="${t:-0}" -v w="$w" -v h="$h" -v target="$target" -v m="${min_side:-16}" 'BEGIN {
         if (t < 0.001) t = 0.001
         f = sqrt(target / t)
         W = int(w * f + 0.5); H = int(h * f + 0.5)
         if (W > 2048) { H = int(H * 2048 / W); W = 2048 } if (H > 2048) { W = int(W * 2048 / H); H = 2048 }
-        if (W < 16) W = 16; if (H < 16) H = 16
+        if (W < m) W = m; if (H < m) H = m
         printf "%dx%d\n", W, H
     }'
 }

@@ -63,7 +63,9 @@ awk -F'\t' '{ print }' "$knob_rows" "$common_rows" | while IFS=$'\t' read -r id 
 done
 awk -F'\t' -v latest="$(num "$latest")" '$1 == latest || $1 == "stages" {
     split($7, r, "-")
-    printf "| `precision.%s` | REAL (build) | float (double: **ref**) | %s | %.3f (%.3f-%.3f) | %s | %s | %s | | | | | |\n", $1, ($1 == "stages" ? "scene of all stages, " $3 : $3), $6, r[1], r[2], $8, $9, $10 }' "$precision_rows"
+    share = ($9 == "-" ? "-" : $9 + 0 == 0 ? "0" : $9 + 0 < 0.01 ? sprintf("%.4f", $9) : sprintf("%.2f", $9))
+    printf "| `precision.%s` | REAL (build) | float (double: **ref**) | %s | %.3f (%.3f-%.3f) | %s | %s | %s | | | | | |\n",
+        $1, ($1 == "stages" ? "scene of all stages, " $3 : $3), $6, r[1], r[2], $8, share, $10 }' "$precision_rows"
 cat <<EOF
 
 Threads: "x default" is against the default, all $cores cores, and the image must not change at all

@@ -1,7 +1,7 @@
 # plots.sh - the figures of bench/bench.sh (sourced): gnuplot, PNG, into docs/figures/bench_*.png.
 #
 #   bench_knobs_NN.png   chapter NN's knobs: time against error, one point per setting
-#   bench_knobs_all.png  samples per pixel, threads and precision, in the latest chapter
+#   bench_knobs_all.png  samples per pixel and precision, in the latest chapter (threads: bench_scaling)
 #   bench_growth.png     time per ray against triangles, log-log, with the fitted slopes
 #   bench_scaling.png    time against image size and samples per pixel; thread speed-up
 #   bench_stages.png     the scene of all stages, rendered by every chapter
@@ -26,10 +26,13 @@ set grid
 set key top right box opaque
 set yrange [$(awk -v m="$ymax" 'BEGIN { if (m == 0) print "-1:10"; else printf "%g:%g", -0.08 * m, 1.25 * m }')]
 set offsets graph 0.12, graph 0.12, 0, 0
+$(awk '$1 > 0 { if (min == "" || $1 < min) min = $1; if ($1 > max) max = $1 }
+      END { if (min != "" && max / min > 4) print "set logscale x; set offsets 0, 0, 0, 0; set xrange [" min / 1.5 ":" max * 2.5 "]" }' "$data")
 plot "$data" using (\$5 == 0 ? \$1 : 1/0):2 with points pt 7 ps 1.6 lc rgb "#1f77b4" title "built-in scene of the chapter", \
      "$data" using (\$5 == 1 ? \$1 : 1/0):2 with points pt 9 ps 1.8 lc rgb "#d62728" title "scene of all stages (latest chapter with the knob)", \
      "$data" using (\$4 == 1 ? \$1 : 1/0):2 with points pt 4 ps 3.2 lw 2 lc rgb "black" title "default setting", \
-     "$data" using 1:2:3 with labels offset char 1.2, char 0.9 left font "sans,10" notitle
+     "$data" using (\$5 == 0 ? \$1 : 1/0):2:3 with labels offset char 1.2, char 0.9 left font "sans,10" tc rgb "#1f77b4" notitle, \
+     "$data" using (\$5 == 1 ? \$1 : 1/0):2:3 with labels offset char 1.2, char -0.9 left font "sans,10" tc rgb "#d62728" notitle
 EOF
 }
 
@@ -46,7 +49,7 @@ done
 
 data=$work/plot_knobs_all.dat
 {
-    awk -F'\t' '{ label = $3 "=" $4
+    awk -F'\t' '$3 != "threads" { label = $3 "=" $4
         if ($10 != "-") print $10, $11, label, $5, 0
         if ($16 != "-") print $16, $17, label, $5, 1 }' "$common_rows"
     awk -F'\t' -v latest="$(num "$latest")" '$1 == latest && $8 != "-" { print $8, $9, "float", 0, 0 }
@@ -54,7 +57,7 @@ data=$work/plot_knobs_all.dat
     awk -F'\t' -v latest="$(num "$latest")" '$1 == latest { print 1, 0, "double", 1, 0 }
         $1 == "stages" { print 1, 0, "double", 1, 1 }' "$precision_rows"
 } >"$data"
-knob_plot "$figures/bench_knobs_all.png" "Every chapter's knobs, in $(title "$latest"): samples per pixel, threads, precision" "$data"
+knob_plot "$figures/bench_knobs_all.png" "Every renderer's knobs, in $(title "$latest"): samples per pixel, precision" "$data"
 
 # Growth: time per ray against triangles, with a least-squares line through
 # the points from about 1000 triangles up (fewer, and the eye ray's own cost shows).

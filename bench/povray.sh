@@ -35,7 +35,7 @@ else
         read -r W H < <("$tools/imgcmp" size "$ref")
         pov_pixels=$((W * H))
         kind=$("$tools/scene2pov" "$xml" "$work/pov/$s.pov") || { note "pov $s: cannot translate"; continue; }
-        povopts="+W$W +H$H -D +FN -A File_Gamma=2.2 -GA"
+        povopts="+W$W +H$H -D +FN -A File_Gamma=2.2"
         timed=$work/pov/$s.pov
         if [ "$kind" = colour ]; then
             # One render per channel; each traces the whole scene, so one of them is timed.

@@ -46,8 +46,8 @@ int main(int argc, char **argv)
     const double pi = 3.14159265358979323846;
     /* Vertices: the two poles, then (stacks - 1) rings of (slices + 1): the seam is duplicated so that
      * texture coordinates run from 0 to 1. */
-    fprintf(f, "# sphere (centre %g %g %g, radius %g), %ld stacks, %ld slices\n", centre[0], centre[1], centre[2], radius,
-            stacks, slices);
+    fprintf(f, "# sphere (centre %g %g %g, radius %g), %ld stacks, %ld slices\n", centre[0], centre[1], centre[2],
+            radius, stacks, slices);
     fprintf(f, "v %.9g %.9g %.9g\nvn 0 1 0\nvt 0.5 1\n", centre[0], centre[1] + radius, centre[2]);
     fprintf(f, "v %.9g %.9g %.9g\nvn 0 -1 0\nvt 0.5 0\n", centre[0], centre[1] - radius, centre[2]);
     for (long i = 1; i < stacks; i++) {
