@@ -176,8 +176,11 @@ knob_plan() {
                 v[++nv] = sprintf("%g", d / 10); v[++nv] = d; v[++nv] = sprintf("%g", d * 10)
             }
         }
-        found_d = 0; for (k = 1; k <= nv; k++) if (v[k] == d || (kind == "number" && v[k] + 0 == d + 0)) found_d = 1
+        # The default under the name --help gives it (1e-3 in the list is 0.001 there).
+        found_d = 0
+        for (k = 1; k <= nv; k++) if (v[k] == d || (kind == "number" && v[k] + 0 == d + 0)) { found_d = 1; v[k] = d }
         if (!found_d) v[++nv] = d
+        if (kind == "number" && ref != "max" && ref != "min" && ref != "" && ref + 0 == d + 0) ref = d
         if (kind == "number")
             for (i = 2; i <= nv; i++) { x = v[i]; for (j = i - 1; j >= 1 && v[j] + 0 > x + 0; j--) v[j + 1] = v[j]; v[j + 1] = x }
         if (ref == "max" || ref == "min") {

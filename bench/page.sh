@@ -188,6 +188,7 @@ elif [ -s "$pov_rows" ]; then
         line="- $s: POV-Ray parses it in ${parse:-?} s."
         [ "$kind" = colour ] && line="$line Its specular colour is not grey: POV-Ray rendered it once per channel (the times are of one channel's render, which traces the whole scene)."
         [ "$chapter" = "-" ] && line="$line No chapter models it yet: the latest, $why."
+        case " $slow " in *" $s "*) line="$line $chapter took more than 3 s on it, so it ran once, on 2 threads." ;; esac
         echo "$line"
     done <"$pov_rows"
 fi
