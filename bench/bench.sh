@@ -11,6 +11,7 @@
 # Environment: BENCH_REPS (rounds per timing, default 5), BENCH_TARGET (the
 # seconds one timed render is sized to take on one thread, default 0.2),
 # BENCH_MAX_TRIANGLES (largest tessellated sphere, default 1000000),
+# BENCH_CUT (seconds after which timings take 3 rounds at most, default 300),
 # RT_CORNELL (the course's data folder, default ../shared/cornell/sp17-ray1/data).
 set -u
 if [ $# -ne 3 ]; then
@@ -21,6 +22,7 @@ build=$1 fbuild=$2 tools=$3
 reps=${BENCH_REPS:-5}
 target=${BENCH_TARGET:-0.2}
 max_triangles=${BENCH_MAX_TRIANGLES:-1000000}
+budget_cut=${BENCH_CUT:-300}
 cornell=${RT_CORNELL:-../shared/cornell/sp17-ray1/data}
 figures=docs/figures
 page=docs/measurements.md
@@ -251,11 +253,10 @@ EOF
         for c in "${growth_chapters[@]}"; do
             tm=$(field "growth_$n" "$c" 2) rays=$(field "growth_$n" "$c" 5)
             [ "$tm" = "-" ] && continue
-            printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$c" "$t" "$tm" "$rays" \
-                "$(awk -v t="$tm" -v r="$rays" 'BEGIN { printf "%.4g", 1e6 * t / r }')" \
-                "$(awk -v t="$(field "growth_$n" "$c" 3)" -v r="$rays" 'BEGIN { printf "%.4g", 1e6 * t / r }')" \
-                "$(awk -v t="$(field "growth_$n" "$c" 4)" -v r="$rays" 'BEGIN { printf "%.4g", 1e6 * t / r }')" \
-                >>"$growth_rows"
+            # Microseconds per ray: three significant digits, no exponent.
+            us() { awk -v t="$1" -v r="$rays" 'BEGIN { x = 1e6 * t / r; d = x >= 100 ? 0 : x >= 10 ? 1 : 2; printf "%.*f", d, x }'; }
+            printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$c" "$t" "$tm" "$rays" "$(us "$tm")" \
+                "$(us "$(field "growth_$n" "$c" 3)")" "$(us "$(field "growth_$n" "$c" 4)")" >>"$growth_rows"
         done
         rm -f "$work/growth/sphere_$n.obj"
     done
@@ -279,6 +280,7 @@ strip_list=$work/strip.txt
 : >"$strip_list"
 for c in "${chapters[@]}"; do
     log=$work/strip_$c.log
+    echo "$build/$c/render $stage_scene -o OUT.png" >>"$work/commands.txt"
     if "$build/$c/render" -o "$work/img/stage_$c.png" "$stage_scene" >"$log" 2>&1; then
         ignores=$(sed -n 's/.*: ignores: //p' "$log" | head -n 1)
         printf '%s\t%s\t%s\n' "$c" "$work/img/stage_$c.png" "$ignores" >>"$strip_list"

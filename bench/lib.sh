@@ -44,8 +44,19 @@ setting() {
 #   LABEL  MEDIAN_S  MIN_S  MAX_S  RAYS  IMAGE  STATUS
 # (STATUS ok, or the first line the renderer printed when it failed), and
 # adds every command line to $work/commands.txt.  One progress line per setting.
+# Past $budget_cut seconds (default 300) every measurement takes at most 3
+# rounds, so that the bench keeps within its ten minutes as chapters add
+# knobs; $reduced_at records when that began.
+reduced_at=""
 measure() {
     local group=$1 rounds=$2 n=${#S_LABEL[@]} k r log status parse=${MEASURE_PARSE:-summary_of}
+    if [ "$SECONDS" -gt "${budget_cut:-300}" ] && [ "$rounds" -gt 3 ]; then
+        rounds=3
+        if [ -z "$reduced_at" ]; then
+            reduced_at=$SECONDS
+            note "more than ${budget_cut:-300} s: 3 rounds per timing from here on"
+        fi
+    fi
     local times=$work/$group.times
     : >"$times"
     local failed=()

@@ -23,7 +23,7 @@ column of each table, as \`04.sphere=textbook\`).
 | cores | $cores |
 | compiler | $compiler, \`-O2 -ffp-contract=off\` (the Makefile's flags) |
 | chapters | ${chapters[*]} |
-| rounds per timing | $reps, side by side |
+| rounds per timing | $reps, side by side$([ -n "$reduced_at" ] && echo " (3 from ${reduced_at} s into the run on, to keep within ten minutes)") |
 | load average (1, 5, 15 min) | $load_before before, $load_after after |
 | POV-Ray | ${pov_version:-not used} |
 | command | \`make bench\` (the commands it ran are listed at the end) |
@@ -104,8 +104,8 @@ cat <<EOF
 
 ### Triangles
 
-A sphere tessellated into 100 to $(awk -v m="$max_triangles" 'BEGIN { printf "%d", m }') triangles (bench/tessellate.c), seen
-whole, on one thread: the time per eye ray, for the linear scan (the first chapter that renders meshes)
+A sphere tessellated into $(awk -F'\t' 'NR == 1 { lo = $2 } { hi = $2 } END { printf "%s to %s", lo, hi }' "$growth_rows")
+triangles (bench/tessellate.c), seen whole, on one thread: the time per eye ray, for the linear scan (the first chapter that renders meshes)
 $(case " ${growth_chapters[*]:-} " in *grid*) echo "and the grid" ;; *) echo "(the grid of chapter 11 joins this plot when it exists)" ;; esac).
 The slope is fitted by least squares to log(time) against log(triangles) from about 1000 triangles up: 1 is
 linear growth.

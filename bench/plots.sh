@@ -39,12 +39,16 @@ EOF
 awk -F'\t' '{ print $2 }' "$knob_rows" | sort -u | while read -r c; do
     [ -n "$c" ] || continue
     data=$work/plot_knobs_$c.dat
-    awk -F'\t' -v c="$c" '$2 == c {
-        label = $3 "=" $4
+    # Labels: the value alone when the chapter adds one knob (named in the title), else knob=value.
+    knob_names=$(awk -F'\t' -v c="$c" '$2 == c { print $3 }' "$knob_rows" | sort -u)
+    one=$([ "$(echo "$knob_names" | wc -l)" = 1 ] && echo 1 || echo 0)
+    awk -F'\t' -v c="$c" -v one="$one" '$2 == c {
+        label = one ? $4 : $3 "=" $4
         if ($10 != "-") print $10, ($11 == "-" ? "-" : $11), label, $5, 0
         if ($16 != "-") print $16, ($17 == "-" ? "-" : $17), label, $5, 1
     }' "$knob_rows" >"$data"
-    knob_plot "$figures/bench_knobs_$(num "$c").png" "Chapter $(title "$c"): the knobs it adds, cost against error" "$data"
+    what=$([ "$one" = 1 ] && echo "--$knob_names" || echo "the knobs it adds")
+    knob_plot "$figures/bench_knobs_$(num "$c").png" "Chapter $(title "$c"): $what, cost against error" "$data"
 done
 
 data=$work/plot_knobs_all.dat

@@ -36,12 +36,14 @@ else
         read -r W H < <("$tools/imgcmp" size "$ref")
         pov_pixels=$((W * H))
         kind=$("$tools/scene2pov" "$xml" "$work/pov/$s.pov") || { note "pov $s: cannot translate"; continue; }
+        echo "$tools/scene2pov $xml $work/pov/$s.pov" >>"$work/commands.txt"
         povopts="+W$W +H$H -D +FN -A File_Gamma=2.2"
         timed=$work/pov/$s.pov
         if [ "$kind" = colour ]; then
             # One render per channel; each traces the whole scene, so one of them is timed.
             for ch in r g b; do
                 "$tools/scene2pov" "$xml" "$work/pov/${s}_$ch.pov" $ch >/dev/null
+                echo "$tools/scene2pov $xml $work/pov/${s}_$ch.pov $ch" >>"$work/commands.txt"
                 povray "+I$work/pov/${s}_$ch.pov" "+O$work/pov/${s}_$ch.png" $povopts +WT2 >"$work/pov/${s}_$ch.log" 2>&1
             done
             "$tools/imgcmp" merge "$work/pov/${s}_r.png" "$work/pov/${s}_g.png" "$work/pov/${s}_b.png" \
