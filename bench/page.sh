@@ -139,7 +139,8 @@ t1=$(field threads_stage "-j 1" 2) tn=$(field threads_stage "-j $cores" 2)
 cat <<EOF
 
 On $cores threads the scene of all stages renders $(ratio "$t1" "$tn") times as fast as on one (medians;
-the other users of the machine take their share of its cores).
+the other users of the machine take their share of its cores).$(awk -v l="${load_before%% *}" -v c="$cores" 'BEGIN {
+    if (l + 0 > c + 0) printf "  The load average was %s on %d cores when the run began: the\nthreads competed with other work, and the speed-up shows that more than the renderer'"'"'s scaling.", l, c }')
 
 ![Time against size, samples and threads](figures/bench_scaling.png)
 

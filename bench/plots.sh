@@ -118,7 +118,7 @@ set xlabel "rays cast (all kinds)"
 set ylabel "render time (s)"
 set logscale xy
 set grid
-set key top left box opaque
+set key bottom right box opaque
 plot "$work/scale_sizes.dat" using 1:2:3:4 with yerrorlines pt 7 lc rgb "#1f77b4" title "image size x1/4 to x2 per side, 1 spp", \
      "$work/scale_spp.dat" using 1:2:3:4 with yerrorlines pt 9 lc rgb "#d62728" title "1, 4, 16 samples per pixel, half size"
 unset logscale
