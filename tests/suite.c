@@ -29,6 +29,18 @@ void check_vec3_close(vec3 expected, vec3 actual, double tolerance, const char *
     }
 }
 
+const char *describe(const char *format, ...)
+{
+    static char buffers[8][600];
+    static int next;
+    char *out = buffers[next++ % 8];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(out, sizeof buffers[0], format, args);
+    va_end(args);
+    return out;
+}
+
 /* A suspect matches when it is as close to the got value as the expected
  * value had to be, or within a few roundings of its own size. */
 static int near(double a, double b, double tolerance)

@@ -73,6 +73,10 @@ void check_close_why(double expected, double actual, double tolerance, const cha
 void check_vec3_why(vec3 expected, vec3 actual, double tolerance, const char *input, const char *hint,
                     const suspect_vec3 *suspects, size_t n, const char *file, int line);
 
+/* printf into one of eight static buffers in turn: the input of a check,
+ * for its message, which may be built from the one before. */
+const char *describe(const char *format, ...) __attribute__((format(printf, 1, 2)));
+
 /* The folder of the Cornell corpus (../shared/cornell/sp17-ray1/data, or
  * $RT_CORNELL), or NULL when it is absent: tests that use it skip then.
  * With RT_REQUIRE_CORNELL set (CI, where the corpus is always beside the

@@ -4,7 +4,6 @@
  * by hand, so a wrong camera_basis costs the basis tests only.  A failure
  * names the input, the expected value, the value got and the likely mistake
  * (assert_vec3_why, tests/suite.h). */
-#include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -43,20 +42,6 @@ static camera make(scene_camera desc)
     return cam;
 }
 
-/* The input of a check, for its failure message: one of four buffers in
- * turn, so that a message may be built from the one before. */
-static const char *say(const char *format, ...)
-{
-    static char buffers[4][512];
-    static int next;
-    char *out = buffers[next++ % 4];
-    va_list args;
-    va_start(args, format);
-    vsnprintf(out, sizeof buffers[0], format, args);
-    va_end(args);
-    return out;
-}
-
 #define N(a) (sizeof(a) / sizeof((a)[0]))
 
 /* ---- the pixel-to-image mapping ------------------------------------------- */
@@ -88,10 +73,10 @@ static void expect_pixel(int i, int j, int nx, int ny, real du, real dv)
         {(j + (double)du) / ny, "du and dv swapped: dv goes with j"},
         {(double)(j / ny), "integer division: j / n_y is 0 in C for ints; convert to real first"},
     };
-    assert_close_why(eu, u, 4 * EPS * eu, say("pixel_to_image(i=%d, j=%d, nx=%d, ny=%d, du=%g, dv=%g): u", i, j, nx, ny,
+    assert_close_why(eu, u, 4 * EPS * eu, describe("pixel_to_image(i=%d, j=%d, nx=%d, ny=%d, du=%g, dv=%g): u", i, j, nx, ny,
                                           (double)du, (double)dv),
                      "u = (i + du) / n_x", su, N(su));
-    assert_close_why(ev, v, 4 * EPS * ev, say("pixel_to_image(i=%d, j=%d, nx=%d, ny=%d, du=%g, dv=%g): v", i, j, nx, ny,
+    assert_close_why(ev, v, 4 * EPS * ev, describe("pixel_to_image(i=%d, j=%d, nx=%d, ny=%d, du=%g, dv=%g): v", i, j, nx, ny,
                                           (double)du, (double)dv),
                      "v = (j + dv) / n_y", sv, N(sv));
 }
@@ -140,20 +125,20 @@ static void test_basis_lecture_camera(void **state)
         {vec3_neg(dir), "w not normalized: w = -viewDir / |viewDir|"},
         {vec3_normalize(vec3_cross(up, dir)), "w computed as u"},
     };
-    assert_vec3_why(ew, w, 8 * EPS, say("%s: w", in), "w = -viewDir / |viewDir|", sw, N(sw));
+    assert_vec3_why(ew, w, 8 * EPS, describe("%s: w", in), "w = -viewDir / |viewDir|", sw, N(sw));
     const suspect_vec3 su[] = {
         {vec3_neg(eu), "u points left: u = viewDir x viewUp (the order of the cross product matters)"},
         {vec3_cross(dir, up), "u not normalized: |viewDir x viewUp| is 1 only for perpendicular unit vectors"},
         {vec3_cross(vec3_normalize(dir), up),
          "u not normalized: viewDir and viewUp are not perpendicular, so their cross product is shorter than 1"},
     };
-    assert_vec3_why(eu, u, 8 * EPS, say("%s: u", in), "u = (viewDir x viewUp) / |viewDir x viewUp|", su, N(su));
+    assert_vec3_why(eu, u, 8 * EPS, describe("%s: u", in), "u = (viewDir x viewUp) / |viewDir x viewUp|", su, N(su));
     const suspect_vec3 sv[] = {
         {vec3_neg(ev), "v points down: v = w x u (u x w is its negative)"},
         {up, "v taken as viewUp: viewUp only says which way is up; v = w x u is perpendicular to w"},
         {vec3_cross(vec3_neg(ew), eu), "v computed with the wrong sign of w"},
     };
-    assert_vec3_why(ev, v, 8 * EPS, say("%s: v", in), "v = w x u", sv, N(sv));
+    assert_vec3_why(ev, v, 8 * EPS, describe("%s: v", in), "v = w x u", sv, N(sv));
 }
 
 /* ---- the rays, with a basis built here ------------------------------------ */
@@ -190,7 +175,7 @@ static void expect_perspective(const camera *cam, real u, real v)
     ray r = camera_ray(cam, u, v);
     real us = (u - (real)0.5) * cam->width, vs = (v - (real)0.5) * cam->height;
     const vec3 ed = combine(-cam->d, cam->w, us, cam->u, vs, cam->v);
-    const char *in = say("camera_ray(perspective, e = (%g, %g, %g), d = %g, %g x %g; u = %g, v = %g)", cam->e.x,
+    const char *in = describe("camera_ray(perspective, e = (%g, %g, %g), d = %g, %g x %g; u = %g, v = %g)", cam->e.x,
                          cam->e.y, cam->e.z, (double)cam->d, (double)cam->width, (double)cam->height, (double)u,
                          (double)v);
     char where[600];
@@ -236,7 +221,7 @@ static void expect_orthographic(const camera *cam, real u, real v)
     real us = (u - (real)0.5) * cam->width, vs = (v - (real)0.5) * cam->height;
     const vec3 offset = combine(0, cam->w, us, cam->u, vs, cam->v);
     const vec3 ep = vec3_add(cam->e, offset);
-    const char *in = say("camera_ray(orthographic, e = (%g, %g, %g), %g x %g; u = %g, v = %g)", cam->e.x, cam->e.y,
+    const char *in = describe("camera_ray(orthographic, e = (%g, %g, %g), %g x %g; u = %g, v = %g)", cam->e.x, cam->e.y,
                          cam->e.z, (double)cam->width, (double)cam->height, (double)u, (double)v);
     char where[600];
     snprintf(where, sizeof where, "%s: p", in);
@@ -282,15 +267,15 @@ static void expect_orthonormal_right_handed(camera cam, vec3 dir, vec3 up)
     snprintf(in, sizeof in, "camera_basis(viewDir = (%g, %g, %g), viewUp = (%g, %g, %g))", (double)dir.x,
              (double)dir.y, (double)dir.z, (double)up.x, (double)up.y, (double)up.z);
     const char *unit = "a basis vector is not of unit length: normalize u and w with unit() (v = w x u is then unit)";
-    assert_close_why(1, vec3_dot(cam.u, cam.u), 8 * EPS, say("%s: u.u", in), unit, NULL, 0);
-    assert_close_why(1, vec3_dot(cam.v, cam.v), 8 * EPS, say("%s: v.v", in), unit, NULL, 0);
-    assert_close_why(1, vec3_dot(cam.w, cam.w), 8 * EPS, say("%s: w.w", in), unit, NULL, 0);
+    assert_close_why(1, vec3_dot(cam.u, cam.u), 8 * EPS, describe("%s: u.u", in), unit, NULL, 0);
+    assert_close_why(1, vec3_dot(cam.v, cam.v), 8 * EPS, describe("%s: v.v", in), unit, NULL, 0);
+    assert_close_why(1, vec3_dot(cam.w, cam.w), 8 * EPS, describe("%s: w.w", in), unit, NULL, 0);
     const char *perp = "not perpendicular: u = viewDir x viewUp and v = w x u, not viewUp itself";
-    assert_close_why(0, vec3_dot(cam.u, cam.v), 8 * EPS, say("%s: u.v", in), perp, NULL, 0);
-    assert_close_why(0, vec3_dot(cam.v, cam.w), 8 * EPS, say("%s: v.w", in), perp, NULL, 0);
-    assert_close_why(0, vec3_dot(cam.w, cam.u), 8 * EPS, say("%s: w.u", in), perp, NULL, 0);
+    assert_close_why(0, vec3_dot(cam.u, cam.v), 8 * EPS, describe("%s: u.v", in), perp, NULL, 0);
+    assert_close_why(0, vec3_dot(cam.v, cam.w), 8 * EPS, describe("%s: v.w", in), perp, NULL, 0);
+    assert_close_why(0, vec3_dot(cam.w, cam.u), 8 * EPS, describe("%s: w.u", in), perp, NULL, 0);
     const suspect_vec3 left[] = {{vec3_neg(cam.w), "left-handed: u x v = -w; check the order of both cross products"}};
-    assert_vec3_why(cam.w, vec3_cross(cam.u, cam.v), 8 * EPS, say("%s: u x v", in), "u x v must be w (right-handed)",
+    assert_vec3_why(cam.w, vec3_cross(cam.u, cam.v), 8 * EPS, describe("%s: u x v", in), "u x v must be w (right-handed)",
                     left, 1);
 }
 
@@ -308,7 +293,7 @@ static void test_basis_orthonormal_right_handed(void **state)
                 continue; /* viewUp parallel to viewDir: tested below */
             expect_orthonormal_right_handed(cam, dirs[i], ups[k]);
             /* -w points along viewDir; v leans towards viewUp */
-            const char *in = say("camera_basis(viewDir = (%g, %g, %g), viewUp = (%g, %g, %g)): -w . viewDir/|viewDir|",
+            const char *in = describe("camera_basis(viewDir = (%g, %g, %g), viewUp = (%g, %g, %g)): -w . viewDir/|viewDir|",
                                  (double)dirs[i].x, (double)dirs[i].y, (double)dirs[i].z, (double)ups[k].x,
                                  (double)ups[k].y, (double)ups[k].z);
             const suspect back[] = {{-1, "wrong sign of w: w = -viewDir / |viewDir|"}};
@@ -317,7 +302,7 @@ static void test_basis_orthonormal_right_handed(void **state)
                              back, 1);
             const suspect down[] = {{-1, "v points down: v = w x u, and u = viewDir x viewUp (in that order)"}};
             real lean = vec3_dot(cam.v, ups[k]) > 0 ? 1 : -1;
-            assert_close_why(1, lean, 0, say("the sign of v . viewUp for viewDir = (%g, %g, %g), viewUp = (%g, %g, %g)",
+            assert_close_why(1, lean, 0, describe("the sign of v . viewUp for viewDir = (%g, %g, %g), viewUp = (%g, %g, %g)",
                                              (double)dirs[i].x, (double)dirs[i].y, (double)dirs[i].z, (double)ups[k].x,
                                              (double)ups[k].y, (double)ups[k].z),
                              "v must lean towards viewUp", down, 1);
@@ -333,9 +318,9 @@ static void test_basis_of_axis_camera_is_exact(void **state)
     const suspect_vec3 su[] = {{vec3_make(-1, 0, 0), "u points left: u = viewDir x viewUp, in that order"}};
     const suspect_vec3 sv[] = {{vec3_make(0, -1, 0), "v points down: v = w x u, in that order"}};
     const suspect_vec3 sw[] = {{vec3_make(0, 0, -1), "wrong sign of w: w = -viewDir / |viewDir|"}};
-    assert_vec3_why(vec3_make(1, 0, 0), cam.u, 0, say("%s: u", in), "u = (viewDir x viewUp) / |...|", su, 1);
-    assert_vec3_why(vec3_make(0, 1, 0), cam.v, 0, say("%s: v", in), "v = w x u", sv, 1);
-    assert_vec3_why(vec3_make(0, 0, 1), cam.w, 0, say("%s: w", in), "w = -viewDir / |viewDir|", sw, 1);
+    assert_vec3_why(vec3_make(1, 0, 0), cam.u, 0, describe("%s: u", in), "u = (viewDir x viewUp) / |...|", su, 1);
+    assert_vec3_why(vec3_make(0, 1, 0), cam.v, 0, describe("%s: v", in), "v = w x u", sv, 1);
+    assert_vec3_why(vec3_make(0, 0, 1), cam.w, 0, describe("%s: w", in), "w = -viewDir / |viewDir|", sw, 1);
 }
 
 static void test_centre_ray_along_view_dir(void **state)
@@ -345,12 +330,12 @@ static void test_centre_ray_along_view_dir(void **state)
     camera cam = make(desc);
     ray r = camera_ray(&cam, (real)0.5, (real)0.5);
     const char *in = "the centre ray (u = v = 0.5) of the lecture camera (projDistance 6)";
-    assert_vec3_why(desc.view_point, r.p, 0, say("%s: p", in), "p = e, the eye", NULL, 0);
+    assert_vec3_why(desc.view_point, r.p, 0, describe("%s: p", in), "p = e, the eye", NULL, 0);
     /* d = -d w: projDistance times the unit view direction */
     vec3 expected = vec3_scale(vec3_normalize(desc.view_dir), 6);
     const suspect_vec3 sd[] = {{vec3_normalize(desc.view_dir), "d normalized, or projDistance missing: d = -d w"},
                                {vec3_neg(expected), "wrong sign of w: the camera looks along -w"}};
-    assert_vec3_why(expected, r.d, 6 * 8 * EPS, say("%s: d", in), "d = -d w + u_s u + v_s v", sd, N(sd));
+    assert_vec3_why(expected, r.d, 6 * 8 * EPS, describe("%s: d", in), "d = -d w + u_s u + v_s v", sd, N(sd));
 }
 
 static void test_four_corner_rays_exactly(void **state)
@@ -370,7 +355,7 @@ static void test_four_corner_rays_exactly(void **state)
     };
     for (int k = 0; k < 4; k++) {
         ray r = camera_ray(&cam, corners[k].u, corners[k].v);
-        const char *in = say("camera_ray(camera at (1, 2, 3) looking down -z, d = 2, 4 x 2.25; u = %g, v = %g)",
+        const char *in = describe("camera_ray(camera at (1, 2, 3) looking down -z, d = 2, 4 x 2.25; u = %g, v = %g)",
                              (double)corners[k].u, (double)corners[k].v);
         assert_vec3_why(vec3_make(1, 2, 3), r.p, 0, in, "p = e, the eye", NULL, 0);
         const suspect_vec3 sd[] = {
@@ -410,24 +395,24 @@ static void test_orthographic_rays_parallel_from_image_plane(void **state)
     for (int k = 0; k <= 4; k++) {
         real u = (real)k / 4, v = (real)(4 - k) / 4;
         ray r = camera_ray(&cam, u, v);
-        const char *in = say("camera_ray(orthographic lecture camera; u = %g, v = %g)", (double)u, (double)v);
-        assert_vec3_why(dir, r.d, 8 * EPS, say("%s: d", in), "d = -w for every ray (unit: w is)", NULL, 0);
+        const char *in = describe("camera_ray(orthographic lecture camera; u = %g, v = %g)", (double)u, (double)v);
+        assert_vec3_why(dir, r.d, 8 * EPS, describe("%s: d", in), "d = -w for every ray (unit: w is)", NULL, 0);
         /* the origin lies on the plane through viewPoint perpendicular to w,
          * at (u - 1/2) viewWidth along u and (v - 1/2) viewHeight along v;
          * offsets up to 2 units from a viewPoint of size 12: 16 eps of 12 */
         vec3 offset = vec3_sub(r.p, desc.view_point);
         const char *hint = "p = e + u_s u + v_s v: the rectangle is centred on the eye, in the plane of u and v";
-        assert_close_why(0, vec3_dot(offset, cam.w), 16 * EPS * 12, say("%s: (p - e).w", in), hint, NULL, 0);
-        assert_close_why((u - 0.5) * 4, vec3_dot(offset, cam.u), 16 * EPS * 12, say("%s: (p - e).u", in), hint, NULL, 0);
-        assert_close_why((v - 0.5) * 2.25, vec3_dot(offset, cam.v), 16 * EPS * 12, say("%s: (p - e).v", in), hint,
+        assert_close_why(0, vec3_dot(offset, cam.w), 16 * EPS * 12, describe("%s: (p - e).w", in), hint, NULL, 0);
+        assert_close_why((u - 0.5) * 4, vec3_dot(offset, cam.u), 16 * EPS * 12, describe("%s: (p - e).u", in), hint, NULL, 0);
+        assert_close_why((v - 0.5) * 2.25, vec3_dot(offset, cam.v), 16 * EPS * 12, describe("%s: (p - e).v", in), hint,
                          NULL, 0);
     }
     camera axis = make(axis_camera(CAMERA_ORTHOGRAPHIC));
     ray corner = camera_ray(&axis, 0, 1);
     const char *in = "camera_ray(orthographic camera at (1, 2, 3) looking down -z, 4 x 2.25; u = 0, v = 1)";
     const suspect_vec3 sp[] = {{vec3_make(1, 2, 3), "every ray starts at the eye: p = e + u_s u + v_s v"}};
-    assert_vec3_why(vec3_make(-1, (real)3.125, 3), corner.p, 0, say("%s: p", in), "p = e + u_s u + v_s v", sp, 1);
-    assert_vec3_why(vec3_make(0, 0, -1), corner.d, 0, say("%s: d", in), "d = -w", NULL, 0);
+    assert_vec3_why(vec3_make(-1, (real)3.125, 3), corner.p, 0, describe("%s: p", in), "p = e + u_s u + v_s v", sp, 1);
+    assert_vec3_why(vec3_make(0, 0, -1), corner.d, 0, describe("%s: d", in), "d = -w", NULL, 0);
 }
 
 static void test_pixel_centres_of_non_square_image(void **state)
