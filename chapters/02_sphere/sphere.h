@@ -3,7 +3,7 @@
  * The lecture's "Ray-sphere intersection": a point x is on the ray when
  * x = p + t d and on the sphere of centre c and radius R when
  * (x - c).(x - c) - R^2 = 0.  Substituting gives a quadratic in t.  Two ways
- * to solve it, the sphere formula knob (DESIGN.md, principle 6):
+ * to solve it, the sphere formula knob (docs/design.md, "Knobs"):
  *   SPHERE_TEXTBOOK - the lecture's algebraic quadratic formula, as printed;
  *   SPHERE_ROBUST   - the same roots, computed so that far, small spheres and
  *                     rays that start near the surface keep their digits
