@@ -62,7 +62,8 @@ static void expect_pixel(int i, int j, int nx, int ny, real du, real dv)
         {1 - eu, "u flipped: i = 0 is the left column, at u near 0"},
         {(i + 0.5) / nx, "du ignored: the loop passes the sample's place inside the pixel, use it, not 0.5"},
         {(i + (double)dv) / nx, "du and dv swapped: du goes with i"},
-        {(double)(i / nx), "integer division: i / n_x is 0 in C for ints; convert to real first"},
+        {(double)du / nx, "integer division: i / n_x is 0 in C for ints; convert i to real before dividing"},
+        {(nx - 1 - i + (double)du) / nx, "u flipped: i = 0 is the left column, at u near 0"},
     };
     const suspect sv[] = {
         {(double)j / ny, "the sample offset is missing: pixel j is the square [j, j+1], its centre is at j + 0.5"},
@@ -71,7 +72,9 @@ static void expect_pixel(int i, int j, int nx, int ny, real du, real dv)
         {1 - ev, "v flipped: j = 0 is the bottom row, at v near 0 (the PNG writer flips the rows, not you)"},
         {(j + 0.5) / ny, "dv ignored: the loop passes the sample's place inside the pixel, use it, not 0.5"},
         {(j + (double)du) / ny, "du and dv swapped: dv goes with j"},
-        {(double)(j / ny), "integer division: j / n_y is 0 in C for ints; convert to real first"},
+        {(double)dv / ny, "integer division: j / n_y is 0 in C for ints; convert j to real before dividing"},
+        {(ny - 1 - j + (double)dv) / ny,
+         "v flipped: j = 0 is the bottom row, at v near 0 (the PNG writer flips the rows, not you)"},
     };
     assert_close_why(eu, u, 4 * EPS * eu, describe("pixel_to_image(i=%d, j=%d, nx=%d, ny=%d, du=%g, dv=%g): u", i, j, nx, ny,
                                           (double)du, (double)dv),

@@ -21,22 +21,36 @@ static ray make_ray(real px, real py, real pz, real dx, real dy, real dz)
     return (ray){vec3_make(px, py, pz), vec3_make(dx, dy, dz)};
 }
 
+static const char *describe_ray(const sphere *s, ray r);
+static const char *formula_name(sphere_formula f);
+
 /* Asserts a hit at t_expected with normal n_expected. */
 static void expect_hit(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula, real t_expected,
                        vec3 n_expected)
 {
     real t = -1;
     vec3 n = {0, 0, 0};
-    assert_true(sphere_intersect(s, r, t_min, t_max, formula, &t, &n));
-    assert_close(t_expected, t, TOL(t_expected));
-    assert_vec3_close(n_expected, n, TOL(1));
+    const char *in = describe("sphere_intersect(%s, (%g, %g), %s)", describe_ray(s, r), (double)t_min, (double)t_max,
+                              formula_name(formula));
+    if (!sphere_intersect(s, r, t_min, t_max, formula, &t, &n))
+        fail_msg("%s\n    expected a hit at t = %.17g\n    got      no hit\n    likely mistake: %s", in,
+                 (double)t_expected,
+                 "the roots (run test_roots_*), or the window: the nearest root with t_min < t < t_max (test_nearest_root)");
+    assert_close_why(t_expected, t, TOL(t_expected), describe("%s: t", in),
+                     "the roots (test_roots_*) or the choice of root (test_nearest_root)", NULL, 0);
+    const suspect_vec3 inward[] = {{vec3_neg(n_expected), "the normal points inwards: n = (x - c) / |x - c|"}};
+    assert_vec3_why(n_expected, n, TOL(1), describe("%s: n", in), "n = (x - c) / |x - c|", inward, 1);
 }
 
 static void expect_miss(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula)
 {
     real t = 12345;
     vec3 n = {0, 0, 0};
-    assert_false(sphere_intersect(s, r, t_min, t_max, formula, &t, &n));
+    if (sphere_intersect(s, r, t_min, t_max, formula, &t, &n))
+        fail_msg("sphere_intersect(%s, (%g, %g), %s)\n    expected no hit\n    got      t = %.17g\n"
+                 "    likely mistake: a negative discriminant is a miss, and a root at or outside (t_min, t_max) is "
+                 "no hit",
+                 describe_ray(s, r), (double)t_min, (double)t_max, formula_name(formula), (double)t);
 }
 
 /* ---- the cases, for either formula ---------------------------------------- */
