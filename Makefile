@@ -248,7 +248,8 @@ bench-tools: $(BENCH_TOOLS)
 
 bench:
 	@tools/deps.sh "$(CC)" bench
-	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(BENCH_BUILD) renderers bench-tools
+	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(BENCH_BUILD) renderers bench-tools \
+	    $(BENCH_BUILD)/tools/panels
 	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=float BUILD=$(BENCH_BUILD)-float renderers
 	@CC="$(CC)" bench/bench.sh $(BENCH_BUILD) $(BENCH_BUILD)-float $(BENCH_BUILD)/bench-tools
 

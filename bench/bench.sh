@@ -293,7 +293,8 @@ done
 # ---- 7. the grid against Embree (bench/grid/, when present) -----------------------------
 
 grid_log=""
-if grep -q '^bench-grid:' Makefile; then
+# The target is the Makefile's or that of a file it includes from bench/grid/.
+if grep -qs '^bench-grid:' Makefile bench/grid/*.mk; then
     note "make bench-grid"
     grid_log=$work/grid.log
     if make --no-print-directory bench-grid >"$grid_log" 2>&1; then

@@ -44,6 +44,8 @@ setting() {
 #   LABEL  MEDIAN_S  MIN_S  MAX_S  RAYS  IMAGE  STATUS
 # (STATUS ok, or the first line the renderer printed when it failed), and
 # adds every command line to $work/commands.txt.  One progress line per setting.
+# A setting that takes more than ten times $target in the first round runs
+# only once (its min and max are then its one time).
 # Past $budget_cut seconds (default 300) every measurement takes at most 3
 # rounds, so that the bench keeps within its ten minutes as chapters add
 # knobs; $reduced_at records when that began.
@@ -67,9 +69,11 @@ measure() {
             *) printf '%s -o OUT.png\n' "${S_CMD[k]}" >>"$work/commands.txt" ;;
         esac
     done
+    local once=()
     for ((r = 0; r < rounds; r++)); do
         for ((k = 0; k < n; k++)); do
             [ -n "${failed[k]}" ] && continue
+            [ -n "${once[k]:-}" ] && continue
             log=$work/run.log
             local cmd=${S_CMD[k]}
             case "$cmd" in *@OUT@*) cmd=${cmd//@OUT@/${S_IMG[k]}} ;; *) cmd="$cmd -o ${S_IMG[k]}" ;; esac
@@ -78,6 +82,10 @@ measure() {
                 status=$($parse "$log")
                 if [ -n "$status" ]; then
                     printf '%d\t%s\n' "$k" "$status" >>"$times"
+                    # A setting ten times slower than the bench's target runs once.
+                    if [ "$r" = 0 ] && awk -v t="${status%% *}" -v g="$target" 'BEGIN { exit !(t > 10 * g) }'; then
+                        once[k]=1
+                    fi
                     continue
                 fi
             fi
@@ -99,7 +107,7 @@ measure() {
                     med = n % 2 ? t[(n + 1) / 2] : (t[n / 2] + t[n / 2 + 1]) / 2
                     printf "%s\t%.4f\t%.4f\t%.4f\t%d\t%s\tok", label, med, t[1], t[n], rays, img
                 }' "$times")
-            note "$group ${S_LABEL[k]}: $(printf '%s' "$line" | awk -F'\t' '{ printf "%.3f s (%.3f-%.3f), %d runs, %d rays", $2, $3, $4, '"$rounds"', $5 }')"
+            note "$group ${S_LABEL[k]}: $(printf '%s' "$line" | awk -F'\t' '{ printf "%.3f s (%.3f-%.3f), %d runs, %d rays", $2, $3, $4, '"$([ -n "${once[k]:-}" ] && echo 1 || echo "$rounds")"', $5 }')"
         fi
         printf '%s\n' "$line" >>"$work/$group.tsv"
     done

@@ -34,7 +34,8 @@ each round runs every setting once, in turn.  The ratios between settings measur
 holds; the absolute times hold for this machine on this day only.  A time is the renderer's own (the
 render loop of its summary line: without start-up, scene parsing or PNG writing), on one thread unless
 said otherwise, at an image size chosen so that the default setting takes about $target s (the size is
-given).  An image's **error** is measured against the image of the most accurate setting (the
+given); a setting ten times slower than that ran once (its fastest and slowest are the same).  An
+image's **error** is measured against the image of the most accurate setting (the
 *reference*, from bench/knobs.conf): the share of pixels in which any channel differs, and the largest
 difference of a channel, in display levels of 0 to 255.
 

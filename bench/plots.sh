@@ -4,7 +4,7 @@
 #   bench_knobs_all.png  samples per pixel and precision, in the latest chapter (threads: bench_scaling)
 #   bench_growth.png     time per ray against triangles, log-log, with the fitted slopes
 #   bench_scaling.png    time against image size and samples per pixel; thread speed-up
-#   bench_stages.png     the scene of all stages, rendered by every chapter
+#   bench_stages.png     the scene of all stages, rendered by every chapter (tools/panels)
 
 rm -f "$figures"/bench_*.png
 plot_term='set terminal pngcairo size 900,600 font "sans,12" noenhanced'
@@ -136,23 +136,12 @@ plot x with lines dt 2 lc rgb "gray" title "ideal", \
 unset multiplot
 EOF
 
-# The strip: every chapter's image of the scene of all stages, captioned, in rows of six.
+# The strip: every chapter's image of the scene of all stages, side by side,
+# each under its chapter's name (tools/panels.c, as the chapters' figures).
 if [ -s "$strip_list" ]; then
-    n=$(wc -l <"$strip_list")
-    cols=$((n < 6 ? n : 6))
-    rows=$(((n + cols - 1) / cols))
-    read -r iw ih < <("$tools/imgcmp" size "$(awk -F'\t' 'NR == 1 { print $2 }' "$strip_list")")
-    panel_w=$((iw + 20)) panel_h=$((ih + 60))
-    {
-        echo "set terminal pngcairo size $((cols * panel_w)),$((rows * panel_h + 40)) font \"sans,13\" noenhanced"
-        echo "set output \"$figures/bench_stages.png\""
-        echo "set multiplot layout $rows,$cols title \"One scene through all stages: bench/scenes/stages.xml, rendered by each chapter\""
-        echo "unset border; unset tics; unset key; unset colorbox; set size ratio -1"
-        echo "set lmargin 0.5; set rmargin 0.5; set tmargin 2.2; set bmargin 0.3"
-        while IFS=$'\t' read -r c img ignores; do
-            echo "set title \"$(title "$c")\""
-            echo "plot \"$img\" binary filetype=png with rgbimage"
-        done <"$strip_list"
-        echo "unset multiplot"
-    } | gnuplot
+    set --
+    while IFS=$'\t' read -r c img ignores; do
+        set -- "$@" "$img" "$(title "$c")"
+    done <"$strip_list"
+    "$build/tools/panels" "$figures/bench_stages.png" "$@" || note "the strip failed"
 fi
