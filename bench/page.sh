@@ -91,7 +91,8 @@ cat <<EOF
 
 One plot per chapter that adds knobs: each point a setting (its time relative to the default, against
 the share of its pixels that differ from the reference setting), on the chapter's built-in scene (blue
-dots) and on the scene of all stages (red diamonds); the default has a square around it.
+dots) and on the scene of all stages (red triangles); the default has a square around it.  Where no
+setting changes a single pixel (knobs of speed alone), the plot shows each setting's time as bars.
 EOF
 for f in "$figures"/bench_knobs_[0-9]*.png "$figures/bench_knobs_all.png"; do
     [ -f "$f" ] || continue
@@ -219,7 +220,7 @@ if [ -n "$grid_log" ]; then
 The output of \`make bench-grid\` (bench/grid/), run by \`make bench\`:
 
 \`\`\`
-$(cat "$grid_log")
+$(grep -v -E '^(cc|gcc|clang|c99)(-[0-9]+)? ' "$grid_log")
 \`\`\`
 EOF
 fi

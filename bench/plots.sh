@@ -16,6 +16,10 @@ knob_plot() {
     local out=$1 title=$2 data=$3 ymax
     awk '$1 != "-" && $2 != "-"' "$data" >"$data.ok" && mv "$data.ok" "$data"
     ymax=$(awk '$2 != "-" && $2 + 0 > m { m = $2 + 0 } END { print m + 0 }' "$data")
+    if [ "$ymax" = 0 ]; then
+        speed_plot "$out" "$title" "$data"
+        return
+    fi
     gnuplot <<EOF
 $plot_term
 set output "$out"
@@ -33,6 +37,38 @@ plot "$data" using (\$5 == 0 ? \$1 : 1/0):2 with points pt 7 ps 1.6 lc rgb "#1f7
      "$data" using (\$4 == 1 ? \$1 : 1/0):2 with points pt 4 ps 3.2 lw 2 lc rgb "black" title "default setting", \
      "$data" using (\$5 == 0 ? \$1 : 1/0):2:3 with labels offset char 1.2, char 0.9 left font "sans,10" tc rgb "#1f77b4" notitle, \
      "$data" using (\$5 == 1 ? \$1 : 1/0):2:3 with labels offset char 1.2, char -0.9 left font "sans,10" tc rgb "#d62728" notitle
+EOF
+}
+
+# speed_plot OUT TITLE DATA: when no setting changes a pixel (the knobs are
+# about speed alone, as the grid's), the time of each setting as bars, one
+# pair per setting (built-in scene, scene of all stages), on a log scale.
+speed_plot() {
+    local out=$1 title=$2 data=$3 n
+    awk '{ key = $3; if (!(key in seen)) { seen[key] = 1; order[++n] = key }; v[key, $5] = $1; d[key] = $4 }
+         END { for (k = 1; k <= n; k++) { key = order[k]
+                   printf "\"%s%s\" %s %s\n", key, (d[key] == 1 ? " (default)" : ""),
+                       ((key, 0) in v ? v[key, 0] : "-"), ((key, 1) in v ? v[key, 1] : "-") } }' "$data" >"$data.bars"
+    n=$(wc -l <"$data.bars")
+    gnuplot <<EOF
+set terminal pngcairo size $((n > 10 ? 300 + 60 * n : 900)),600 font "sans,12" noenhanced
+set output "$out"
+set title "$title\nevery setting gives the same image: the cost alone"
+set ylabel "time relative to the default (1 thread)"
+set logscale y
+set yrange [$(awk '{ for (k = 2; k <= 3; k++) if ($k != "-") { if (lo == "" || $k < lo) lo = $k; if ($k > hi) hi = $k } }
+                END { printf "%g:%g", (lo < 1 ? lo : 1) / 2, (hi > 1 ? hi : 1) * 3 }' "$data.bars")]
+set grid ytics
+set style data histograms
+set style histogram clustered gap 1
+set style fill solid 0.8 border -1
+set boxwidth 0.9
+set xtics rotate by -30 left font "sans,10" offset -1, 0
+set key below
+set datafile missing "-"
+plot "$data.bars" using 2:xtic(1) lc rgb "#1f77b4" title "built-in scene of the chapter", \
+     "" using 3 lc rgb "#d62728" title "scene of all stages (latest chapter with the knob)", \
+     1 with lines dt 2 lc rgb "black" notitle
 EOF
 }
 
