@@ -1,6 +1,7 @@
 /* triangle.c - chapter 03: the barycentric ray-triangle intersection. */
 #include "03_triangle/triangle.h"
 
+#include "03_triangle/degenerate.h"
 #include "03_triangle/watertight.h"
 
 /* The lecture's slide "Barycentric ray-triangle intersection":
@@ -33,7 +34,15 @@ bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, tria
 {
     if (test == TRIANGLE_WATERTIGHT)
         return triangle_intersect_watertight(tri, r, t_min, t_max, hit);
-    return cramer(tri, r, t_min, t_max, hit);
+    /* Cramer's rule divides by M; where M is only rounding noise (a
+     * degenerate triangle, a ray in or along the plane) its beta, gamma and
+     * t are noise too, so such a hit does not count (degenerate.h).  Only
+     * hits pay for the check. */
+    triangle_hit h;
+    if (!cramer(tri, r, t_min, t_max, &h) || !triangle_crossing_certain(tri, r))
+        return false;
+    *hit = h;
+    return true;
 }
 /* end snippet */
 

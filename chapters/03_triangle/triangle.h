@@ -28,7 +28,7 @@ typedef struct {
 /* The triangle test knob, --triangle. */
 typedef enum {
     TRIANGLE_CRAMER,     /* the lecture's 3x3 system, solved by Cramer's rule (the default) */
-    TRIANGLE_WATERTIGHT, /* Woo, Benthin and Wald (2013): no ray slips between two triangles */
+    TRIANGLE_WATERTIGHT, /* Woop, Benthin and Wald (2013): no ray slips between two triangles */
 } triangle_test;
 
 typedef struct {
