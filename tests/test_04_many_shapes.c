@@ -423,6 +423,105 @@ static void test_scene_file(void **state)
     scene_free(&desc);
 }
 
+/* ---- cracks in an ordinary image ------------------------------------------------------ */
+
+/* scenes/floor-diagonal.xml at scale s: a square floor of two triangles that
+ * share its diagonal, seen from s (0, 3, 4) by a camera looking at its
+ * centre.  The window's aspect 5 : 3 = |(0, 3, 4)| : 3 makes the diagonal
+ * run exactly through 48 pixel centres of the 48 x 48 image.  Returns how
+ * many pixels whose ray meets the plane y = 0 inside the square (by 1 % of
+ * its size, far more than rounding moves a point) report no hit. */
+static long floor_holes(real s, triangle_test test)
+{
+    const scene_camera desc = {.kind = CAMERA_PERSPECTIVE,
+                               .view_point = {0, 3 * s, 4 * s},
+                               .view_dir = {0, -3 * s, -4 * s},
+                               .view_up = {0, 1, 0},
+                               .proj_distance = 1,
+                               .view_width = 0.5,
+                               .view_height = 0.3};
+    camera cam;
+    assert_null(camera_init(&cam, &desc));
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, test);
+    const vec3 q0 = {-s, 0, s}, q1 = {s, 0, s}, q2 = {s, 0, -s}, q3 = {-s, 0, -s};
+    surface_list_add_triangle(&list, (triangle){q1, q2, q3}, 0, 0);
+    surface_list_add_triangle(&list, (triangle){q1, q3, q0}, 0, 1);
+    long holes = 0, inside = 0;
+    for (int j = 0; j < 48; j++)
+        for (int i = 0; i < 48; i++) {
+            ray r = camera_ray(&cam, ((real)i + (real)0.5) / 48, ((real)j + (real)0.5) / 48);
+            real t = -r.p.y / r.d.y;
+            vec3 x = ray_at(r, t);
+            if (!(t > 0 && real_abs(x.x) < (real)0.99 * s && real_abs(x.z) < (real)0.99 * s))
+                continue;
+            inside++;
+            hit_record hit;
+            if (!surfaces_intersect(&list, r, 0, REAL_INFINITY, &hit))
+                holes++;
+        }
+    surface_list_free(&list);
+    assert_true(inside > 1000); /* the floor fills most of the image */
+    return holes;
+}
+
+/* Eye rays through the shared diagonal of a floor: the renderer's default
+ * triangle test (the watertight one) leaves no hole, at any scale.  (Cramer's
+ * rule leaves 0 to 3 at each of these scales in double, 0 to 4 in float: the
+ * chapter's README has the table.) */
+static void test_floor_diagonal_has_no_holes(void **state)
+{
+    (void)state;
+    assert_int_equal(TRIANGLE_WATERTIGHT, TRIANGLE_TEST_DEFAULT);
+    const real scales[] = {(real)1e-3, (real)0.01, (real)0.1, (real)0.37, 1, 3, 10, 100, 1000};
+    for (size_t k = 0; k < sizeof scales / sizeof scales[0]; k++) {
+        long holes = floor_holes(scales[k], TRIANGLE_TEST_DEFAULT);
+        if (holes)
+            fail_msg("floor of half-size %g, 48 x 48, default triangle test: expected 0 background pixels on the "
+                     "floor, got %ld (a hit missed on the shared diagonal: is every triangle of the list tested?)",
+                     (double)scales[k], holes);
+    }
+}
+
+/* A degenerate triangle (its third vertex on the line of the other two, as
+ * rounding leaves it) and a triangle seen exactly edge-on lie in front of a
+ * sphere: neither may steal the sphere's hit with a t made of rounding
+ * noise, with either triangle test. */
+static void test_degenerate_in_front(void **state)
+{
+    (void)state;
+    const vec3 a = {(real)0.3, (real)-0.7, (real)2.1}, b = {(real)-0.4, (real)0.9, (real)1.3};
+    const vec3 c = vec3_add(a, vec3_scale(vec3_sub(b, a), (real)0.37)); /* collinear, rounded */
+    const vec3 eye = {(real)0.05, (real)0.1, 10};
+    for (int g = 0; g < 2; g++) {
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, tests_of_triangles[g]);
+        surface_list_add_triangle(&list, (triangle){a, b, c}, 1, 1);
+        /* In the plane x = 0.05 + (y - 0.1) / 7, which holds the eye: edge-on. */
+        const vec3 e0 = {(real)0.05, (real)0.1, (real)3.3}, e1 = {(real)(0.05 + 1.3 / 7), (real)1.4, (real)2.7};
+        const vec3 e2 = {(real)(0.05 - 1.1 / 7), (real)-1.0, (real)4.1};
+        surface_list_add_triangle(&list, (triangle){e0, e1, e2}, 2, 2);
+        surface_list_add_sphere(&list, (sphere){{0, 0, 0}, 1}, 3, 3);
+        const real steps[] = {0, (real)0.25, (real)0.5, (real)0.75, 1};
+        for (int k = 0; k < 5; k++) {
+            /* Aimed at points of the degenerate triangle's segment, and through the edge-on one. */
+            vec3 targets[2] = {vec3_add(a, vec3_scale(vec3_sub(b, a), steps[k])),
+                               vec3_add(e0, vec3_scale(vec3_sub(e1, e0), steps[k]))};
+            for (int m = 0; m < 2; m++) {
+                ray r = {eye, vec3_sub(targets[m], eye)};
+                hit_record hit;
+                bool any = surfaces_intersect(&list, r, 0, REAL_INFINITY, &hit);
+                if (any && hit.source != 3)
+                    fail_msg("--triangle=%s, ray from the eye at point %d of the %s triangle: expected a miss of "
+                             "it, got a hit at t %g (beta %g, gamma %g): a determinant that is rounding noise",
+                             g ? "watertight" : "cramer", k, m ? "edge-on" : "degenerate", (double)hit.t,
+                             (double)hit.beta, (double)hit.gamma);
+            }
+        }
+        surface_list_free(&list);
+    }
+}
+
 /* ---- the course's reference image ---------------------------------------------------------- */
 
 /* The course's two-boxes-rgb-normals.xml, traced pixel by pixel through the
@@ -481,6 +580,8 @@ static const graded_test tests[] = {
     GRADED(test_box_in_scene, 2),
     GRADED(test_flat_colors, 0), /* handed out complete: no points */
     GRADED(test_scene_file, 2),
+    GRADED(test_floor_diagonal_has_no_holes, 2),
+    GRADED(test_degenerate_in_front, 0), /* chapter 03's given check: no points */
     GRADED(test_two_boxes_reference, 0),
 };
 
