@@ -42,18 +42,17 @@ static void scaled(vec3 v, int e, double out[3])
  * twice the margin on the arithmetic: |det| > 8 eps P + 2 eps Q + 2 eps R.
  * Below that, even the sign of the determinant is rounding noise.  There is
  * no absolute epsilon: P, Q and R scale with the data. */
-static bool det_certain(const double e1[3], const double e2[3], const double w[3], double s, double sw)
+static bool det_certain(const double e1[3], const double e2[3], const double w[3], const double s[3],
+                        const double sw[3])
 {
     double det = 0, p = 0, q = 0, r = 0;
     for (int i = 0; i < 3; i++) {
         int j = (i + 1) % 3, k = (i + 2) % 3;
         det += e1[i] * (e2[j] * w[k] - e2[k] * w[j]);
         p += fabs(e1[i]) * (fabs(e2[j] * w[k]) + fabs(e2[k] * w[j]));
-        q += (fabs(e1[j]) + fabs(e2[j])) * fabs(w[k]) + (fabs(e1[k]) + fabs(e2[k])) * fabs(w[j]);
-        r += fabs(e1[j] * e2[k]) + fabs(e1[k] * e2[j]);
+        q += s[i] * ((fabs(e1[j]) + fabs(e2[j])) * fabs(w[k]) + (fabs(e1[k]) + fabs(e2[k])) * fabs(w[j]));
+        r += sw[i] * (fabs(e1[j] * e2[k]) + fabs(e1[k] * e2[j]));
     }
-    q *= s;
-    r *= sw;
     const double eps = (double)REAL_EPSILON;
     return fabs(det) > 8 * eps * p + 2 * eps * q + 2 * eps * r; /* NaN fails */
 }
@@ -76,13 +75,16 @@ bool triangle_crossing_certain(const triangle *tri, ray r)
     scaled(tri->c, ev, c);
     scaled(r.p, ev, p);
     scaled(r.d, ed, d);
-    double e1[3], e2[3], f[3], s = 0, sf = 0;
+    double e1[3], e2[3], f[3], s[3], sf[3], edge = 0;
     for (int i = 0; i < 3; i++) {
         e1[i] = a[i] - b[i];
         e2[i] = a[i] - c[i];
         f[i] = a[i] - p[i];
-        s = fmax(s, fmax(fabs(a[i]), fmax(fabs(b[i]), fabs(c[i]))));
-        sf = fmax(sf, fmax(fabs(a[i]), fabs(p[i])));
+        edge = fmax(edge, fmax(fabs(e1[i]), fabs(e2[i])));
+    }
+    for (int i = 0; i < 3; i++) {
+        s[i] = fmax(fabs(a[i]), fmax(fabs(b[i]), fabs(c[i]))) + edge;
+        sf[i] = fmax(fabs(a[i]), fabs(p[i])) + edge;
     }
     /* snippet: crossing_certain */
     /* M = det[a - b   a - c   d] is 0 for a degenerate triangle and for a
@@ -91,6 +93,7 @@ bool triangle_crossing_certain(const triangle *tri, ray r)
      * ray meets the plane at t = 0 or (lying in it) nowhere.  Rounding leaves
      * either of them a sliver of either sign, and a hit computed from that
      * sliver is noise. */
-    return det_certain(e1, e2, d, s, 0) && det_certain(e1, e2, f, s, sf);
+    const double none[3] = {0, 0, 0};
+    return det_certain(e1, e2, d, s, none) && det_certain(e1, e2, f, s, sf);
     /* end snippet */
 }
