@@ -30,14 +30,14 @@ static void scaled(vec3 v, int e, double out[3])
  *     2 u P, and w (a direction, or a difference of points) by one or two
  *     more roundings: 2 u P;
  *   - the data are rounded too: a vertex coordinate that came from a
- *     rotation, a translation or a file is known to within u to 2 u of s,
- *     the largest |coordinate| of the three vertices (any axis: a rotation
- *     mixes them).  That moves e1 and e2 by up to 4 u s per component and
- *     the determinant by up to 4 u Q, with Q = s sum (|e1_j| + |e2_j|) |w_k|
- *     (j, k any two different axes); and when w = a - p is a difference of
- *     points it moves w by up to 4 u sw per component (sw the largest
- *     |coordinate| of a and p), the determinant by 4 u R with
- *     R = sw sum |e1_i| |e2_j|.
+ *     rotation, a translation or a file is known to within u to 2 u of
+ *     s_i, the largest |coordinate| of the vertices along axis i plus the
+ *     largest edge component (a rotation mixes the axes, so an axis along
+ *     which the triangle is thin still carries rounding of its size).  That
+ *     moves e1 and e2 by up to 4 u s_i and the determinant by up to 4 u Q,
+ *     with Q = sum s_i (|e1_j| + |e2_j|) |w_k|; and when w = a - p is a
+ *     difference of points it moves w by up to 4 u sw_k (sw as s, over a
+ *     and p), the determinant by 4 u R with R = sum |e1_i| |e2_j| sw_k.
  * In all the error is at most 9 u P + 4 u Q + 4 u R.  The test asks for
  * twice the margin on the arithmetic: |det| > 8 eps P + 2 eps Q + 2 eps R.
  * Below that, even the sign of the determinant is rounding noise.  There is
