@@ -18,7 +18,9 @@ static bool cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_
      *     gamma = det3(a - b, a - p, d) / M     (column 2 replaced)
      *     t     = det3(a - b, a - c, a - p) / M (column 3 replaced)
      * M == 0 means no single solution (a ray parallel to the plane, or a degenerate
-     * triangle): return false before dividing.  Hit when t_min < t < t_max and the point
+     * triangle), and a non-finite M comes from infinite or NaN data: in both cases
+     * return false before dividing.  (A tiny M made of rounding noise is the given
+     * check's business, in triangle_intersect.)  Hit when t_min < t < t_max and the point
      * is inside, edges included: beta >= 0, gamma >= 0, beta + gamma <= 1.
      * Write the comparisons so that a NaN fails them: !(t > t_min && t < t_max). */
     (void)tri;
