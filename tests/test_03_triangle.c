@@ -46,18 +46,28 @@ static vec3 point_at(const triangle *tri, real beta, real gamma)
                                      vec3_scale(vec3_sub(tri->c, tri->a), gamma)));
 }
 
-/* Asserts a hit of r at (t, beta, gamma) within tol. */
+static void print_triangle(const char *what, const triangle *tri, ray r);
+
+/* Asserts a hit of r at (t, beta, gamma) within tol; on failure prints the
+ * triangle, the ray, what was expected, what came back and the likely
+ * mistake. */
 static void expect_hit(const triangle *tri, ray r, triangle_test test, real t, real beta, real gamma, real tol)
 {
     triangle_hit h;
     if (!triangle_intersect(tri, r, 0, REAL_INFINITY, test, &h)) {
-        print_error("--triangle=%s: expected a hit at beta %g, gamma %g\n", test_names[test], (double)beta,
-                    (double)gamma);
-        fail();
+        print_triangle("input", tri, r);
+        fail_msg("--triangle=%s: expected a hit at t %g, beta %g, gamma %g; got a miss (are the edges closed, "
+                 "beta >= 0, gamma >= 0, beta + gamma <= 1, and is the window t_min < t < t_max?)",
+                 test_names[test], (double)t, (double)beta, (double)gamma);
     }
-    assert_close(t, h.t, tol * real_fmax(1, real_abs(t)));
-    assert_close(beta, h.beta, tol);
-    assert_close(gamma, h.gamma, tol);
+    real t_tol = tol * real_fmax(1, real_abs(t));
+    if (!(real_abs(h.t - t) <= t_tol && real_abs(h.beta - beta) <= tol && real_abs(h.gamma - gamma) <= tol)) {
+        print_triangle("input", tri, r);
+        fail_msg("--triangle=%s: expected t %.9g, beta %.9g, gamma %.9g (tolerance %g); got t %.9g, beta %.9g, "
+                 "gamma %.9g (a column of a determinant replaced by the wrong vector, or beta and gamma swapped?)",
+                 test_names[test], (double)t, (double)beta, (double)gamma, (double)tol, (double)h.t,
+                 (double)h.beta, (double)h.gamma);
+    }
 }
 
 /* Asserts a miss that leaves *hit untouched. */
@@ -65,11 +75,14 @@ static void expect_miss(const triangle *tri, ray r, real t_min, real t_max, tria
 {
     triangle_hit h = {-7, -7, -7};
     if (triangle_intersect(tri, r, t_min, t_max, test, &h)) {
-        print_error("--triangle=%s: expected a miss, got t %g, beta %g, gamma %g\n", test_names[test], (double)h.t,
-                    (double)h.beta, (double)h.gamma);
-        fail();
+        print_triangle("input", tri, r);
+        fail_msg("--triangle=%s: window (%g, %g): expected a miss, got t %g, beta %g, gamma %g (a comparison "
+                 "that lets t == t_min, t == t_max or a point outside an edge through, or M not checked?)",
+                 test_names[test], (double)t_min, (double)t_max, (double)h.t, (double)h.beta, (double)h.gamma);
     }
-    assert_true(h.t == -7 && h.beta == -7 && h.gamma == -7);
+    if (!(h.t == -7 && h.beta == -7 && h.gamma == -7))
+        fail_msg("--triangle=%s: a miss wrote into *hit (t %g): write it only on a hit", test_names[test],
+                 (double)h.t);
 }
 
 /* det[c0 c1 c2] of the identity is 1; swapping two columns changes its sign. */

@@ -1,4 +1,5 @@
 /* Chapter 04: the surface list, the closest hit and the flat colours. */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -423,6 +424,62 @@ static void test_scene_file(void **state)
     scene_free(&desc);
 }
 
+/* ---- unit normals, near and far ---------------------------------------------------------- */
+
+/* Every hit's normal has unit length, for spheres and triangles of sizes
+ * 1e-3 to 1e3 at up to 1e5 from the origin (the data in random directions,
+ * so no arithmetic is exact), where the coordinates resolve the shape to
+ * 1e-3 of its size.  A normal is a normalized vector: its length
+ * is 1 within a few roundings, 8 REAL_EPSILON. */
+static void test_normals_are_unit(void **state)
+{
+    (void)state;
+    uint64_t seed = 0x853c49e6748fea9bu;
+    const real sizes[] = {(real)1e-3, 1, (real)1e3}, distances[] = {0, 100, (real)1e5};
+    for (int k = 0; k < 3; k++)
+        for (int m = 0; m < 3; m++)
+            for (int n = 0; n < 50; n++) {
+                real random[9];
+                for (int i = 0; i < 9; i++) {
+                    seed ^= seed << 13;
+                    seed ^= seed >> 7;
+                    seed ^= seed << 17;
+                    random[i] = (real)((double)(seed >> 11) / 4503599627370496.0 - 1); /* in [-1, 1) */
+                }
+                real size = sizes[k];
+                if (distances[m] * REAL_EPSILON > size * (real)1e-3)
+                    continue; /* coordinates too coarse for the shape (float: 1e-3 at 1e5) */
+                vec3 centre = vec3_scale(vec3_make(random[0], random[1], random[2]), distances[m]);
+                vec3 a = vec3_add(centre, vec3_scale(vec3_make(random[3], random[4], random[5]), size));
+                vec3 b = vec3_add(centre, vec3_scale(vec3_make(random[6], random[7], random[8]), size));
+                vec3 c = vec3_add(centre, vec3_scale(vec3_make(random[4], random[8], random[3]), size));
+                surface_list list;
+                surface_list_init(&list, formulas[n % 2], tests_of_triangles[n / 2 % 2]);
+                surface_list_add_sphere(&list, (sphere){centre, size / 4}, 0, 0);
+                surface_list_add_triangle(&list, (triangle){a, b, c}, 1, 1);
+                vec3 eye = vec3_add(centre, vec3_scale(vec3_make(random[2], random[0] + 3, random[1]), 4 * size));
+                vec3 targets[2] = {centre, vec3_scale(vec3_add(a, vec3_add(b, c)), (real)1 / 3)};
+                for (int j = 0; j < 2; j++) {
+                    hit_record hit;
+                    ray r = {eye, vec3_sub(targets[j], eye)};
+                    if (!surfaces_intersect(&list, r, 0, REAL_INFINITY, &hit)) {
+                        if (j == 0) /* the ray at the sphere's centre hits something */
+                            fail_msg("size %g at (%g, %g, %g): the ray at the sphere's centre: expected a hit, got "
+                                     "none", (double)size, (double)centre.x, (double)centre.y, (double)centre.z);
+                        continue; /* a sliver of a triangle seen edge-on */
+                    }
+                    real length = vec3_length(hit.normal);
+                    if (!(real_abs(length - 1) <= 8 * REAL_EPSILON))
+                        fail_msg("size %g at (%g, %g, %g): the %s's normal (%.9g, %.9g, %.9g) has length %.9g, "
+                                 "expected 1 (is the hit record's normal copied whole?)",
+                                 (double)size, (double)centre.x, (double)centre.y, (double)centre.z,
+                                 hit.source ? "triangle" : "sphere", (double)hit.normal.x, (double)hit.normal.y,
+                                 (double)hit.normal.z, (double)length);
+                }
+                surface_list_free(&list);
+            }
+}
+
 /* ---- cracks in an ordinary image ------------------------------------------------------ */
 
 /* scenes/floor-diagonal.xml at scale s: a square floor of two triangles that
@@ -580,6 +637,7 @@ static const graded_test tests[] = {
     GRADED(test_box_in_scene, 2),
     GRADED(test_flat_colors, 0), /* handed out complete: no points */
     GRADED(test_scene_file, 2),
+    GRADED(test_normals_are_unit, 1),
     GRADED(test_floor_diagonal_has_no_holes, 2),
     GRADED(test_degenerate_in_front, 0), /* chapter 03's given check: no points */
     GRADED(test_two_boxes_reference, 0),
