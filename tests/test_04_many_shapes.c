@@ -54,6 +54,34 @@ static void add_shape(surface_list *list, int which)
     }
 }
 
+/* Asserts what surfaces_intersect(list, r, t_min, t_max) reports: a miss
+ * (want < 0), or a hit on list entry want at t (within tol).  On failure it
+ * names the ray, the window, what was expected, what came back and the
+ * likely mistake (`why`). */
+static void expect_closest(const surface_list *list, ray r, real t_min, real t_max, int want, real t, real tol,
+                           const char *why)
+{
+    hit_record hit = {.t = -7, .surface = -7};
+    bool found = surfaces_intersect(list, r, t_min, t_max, &hit);
+    bool ok = want < 0 ? !found && hit.t == -7 && hit.surface == -7
+                       : found && hit.surface == want && real_abs(hit.t - t) <= tol;
+    if (ok)
+        return;
+    char expected[96], got[96];
+    if (want < 0)
+        snprintf(expected, sizeof expected, "no hit (and *hit untouched)");
+    else
+        snprintf(expected, sizeof expected, "surface %d at t %g", want, (double)t);
+    if (found || hit.surface != -7)
+        snprintf(got, sizeof got, "%s surface %d at t %.9g", found ? "a hit on" : "no hit, but *hit written:",
+                 hit.surface, (double)hit.t);
+    else
+        snprintf(got, sizeof got, "no hit");
+    fail_msg("ray p (%g, %g, %g), d (%g, %g, %g), window (%g, %g), %d surfaces: expected %s, got %s (%s)",
+             (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z,
+             (double)t_min, (double)t_max, list->n, expected, got, why);
+}
+
 /* Every ordering of the four shapes, with both sphere formulas and both
  * triangle tests, and a ray that starts ever further along: the hit is the
  * closest one after t_min, whichever position the shape has in the list. */
@@ -86,18 +114,22 @@ static void test_closest_hit_in_any_order(void **state)
                 for (int k = 0; k < N_SHAPES; k++)
                     add_shape(&list, order[k]);
                 for (size_t e = 0; e < sizeof expected / sizeof expected[0]; e++) {
+                    int position = 0; /* where the expected shape sits in this order */
+                    while (order[position] != expected[e].shape)
+                        position++;
+                    char why[200];
+                    snprintf(why, sizeof why,
+                             "list order %d%d%d%d of 0 front triangle, 1 ball, 2 inner triangle, 3 back ball: is "
+                             "every surface asked with t_best, not t_max, and t_best shrunk to each hit's t?",
+                             order[0], order[1], order[2], order[3]);
+                    expect_closest(&list, down_z, expected[e].t_min, REAL_INFINITY, position, expected[e].t,
+                                   TOL(16), why);
                     hit_record hit;
-                    if (!surfaces_intersect(&list, down_z, expected[e].t_min, REAL_INFINITY, &hit))
-                        fail_msg("order %d%d%d%d, t_min %g: no hit", order[0], order[1], order[2], order[3],
-                                 (double)expected[e].t_min);
+                    surfaces_intersect(&list, down_z, expected[e].t_min, REAL_INFINITY, &hit);
                     assert_int_equal(expected[e].shape, hit.source);
                     assert_int_equal(expected[e].shape, hit.shader);
-                    assert_true(hit.surface >= 0 && hit.surface < list.n);
-                    assert_int_equal(expected[e].shape, order[hit.surface]);
-                    assert_close(expected[e].t, hit.t, TOL(16));
                 }
-                hit_record hit;
-                assert_false(surfaces_intersect(&list, down_z, 15, REAL_INFINITY, &hit));
+                expect_closest(&list, down_z, 15, REAL_INFINITY, -1, 0, 0, "t_min passed on to every surface?");
                 surface_list_free(&list);
             }
         }
@@ -112,18 +144,16 @@ static void test_t_window(void **state)
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
     for (int k = N_SHAPES - 1; k >= 0; k--)
         add_shape(&list, k);
-    hit_record hit;
-    assert_false(surfaces_intersect(&list, down_z, 0, 7.5, &hit));  /* ends before the first shape */
-    assert_false(surfaces_intersect(&list, down_z, 0, 8, &hit));    /* t_max itself is outside */
-    assert_true(surfaces_intersect(&list, down_z, 0, 8.5, &hit));
-    assert_int_equal(FRONT, hit.source);
-    assert_true(surfaces_intersect(&list, down_z, 8, 20, &hit)); /* t_min itself is outside */
-    assert_int_equal(BALL, hit.source);
-    assert_close(9, hit.t, TOL(16));
-    assert_false(surfaces_intersect(&list, down_z, 9.6, 10.9, &hit)); /* inside the ball, between hits */
+    /* Listed back to front: list entry 3 is FRONT, 2 BALL, 1 INNER, 0 BACK. */
+    const char *window = "is t_best started at t_max, and t_min passed on unchanged?";
+    expect_closest(&list, down_z, 0, 7.5, -1, 0, 0, window); /* ends before the first shape */
+    expect_closest(&list, down_z, 0, 8, -1, 0, 0, window);   /* t_max itself is outside */
+    expect_closest(&list, down_z, 0, 8.5, 3, 8, TOL(16), window);
+    expect_closest(&list, down_z, 8, 20, 2, 9, TOL(16), window);       /* t_min itself is outside */
+    expect_closest(&list, down_z, 9.6, 10.9, -1, 0, 0, window);       /* inside the ball, between hits */
     /* Everything lies behind a ray that starts at z = 10 and looks up +z. */
     const ray up_z = {{0, 0, 10}, {0, 0, 1}};
-    assert_false(surfaces_intersect(&list, up_z, 0, REAL_INFINITY, &hit));
+    expect_closest(&list, up_z, 0, REAL_INFINITY, -1, 0, 0, "are hits behind the origin (t < t_min) refused?");
     surface_list_free(&list);
 }
 
@@ -138,15 +168,10 @@ static void test_empty_and_single(void **state)
     char err[256];
     assert_int_equal(0, surface_list_from_scene(&list, &desc, err, sizeof err));
     assert_int_equal(0, list.n);
-    hit_record hit = {.t = 42, .surface = 7};
-    assert_false(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
-    assert_close(42, hit.t, 0); /* a miss leaves the record alone */
-    assert_int_equal(7, hit.surface);
-
+    expect_closest(&list, down_z, 0, REAL_INFINITY, -1, 0, 0, "an empty list: is *hit written only on a hit?");
     add_shape(&list, BACK);
-    assert_true(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
-    assert_int_equal(0, hit.surface);
-    assert_close(11.5, hit.t, TOL(16));
+    expect_closest(&list, down_z, 0, REAL_INFINITY, 0, 11.5, TOL(16),
+                   "one sphere: is hit->surface set to its index, and the candidate copied?");
     surface_list_free(&list);
     scene_free(&desc);
 }
@@ -167,15 +192,15 @@ static void test_coincident_surfaces_first_wins(void **state)
             /* Shader 10 + first is listed first. */
             surface_list_add_sphere(&list, ball, 10 + first, 0);
             surface_list_add_sphere(&list, ball, 11 - first, 1);
-            hit_record hit;
-            assert_true(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
-            assert_int_equal(0, hit.surface);
-            assert_int_equal(10 + first, hit.shader);
+            const char *why = "two surfaces at the same t: the first in the list keeps it; is the window for "
+                              "the rest (t_min, t_best), open at t_best?";
+            expect_closest(&list, down_z, 0, REAL_INFINITY, 0, 9, TOL(16), why);
             /* The same with two copies of a triangle in front of them. */
             surface_list_add_triangle(&list, tri, 20 + first, 2);
             surface_list_add_triangle(&list, tri, 21 - first, 3);
+            expect_closest(&list, down_z, 0, REAL_INFINITY, 2, 8, TOL(16), why);
+            hit_record hit;
             assert_true(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
-            assert_int_equal(2, hit.surface);
             assert_int_equal(20 + first, hit.shader);
             surface_list_free(&list);
         }
