@@ -449,6 +449,55 @@ static void test_scene_file(void **state)
     scene_free(&desc);
 }
 
+/* ---- rays that start on a surface ------------------------------------------------------- */
+
+/* Rays from a point exactly on a surface (small dyadic data: the point is
+ * exactly on it) with the window (0, infinity): the surface they start on
+ * is met at t = 0, outside the window.  Inwards a box's ray meets the
+ * opposite face, a sphere's ray the far side of the sphere; outwards
+ * nothing.  (Chapter 06 moves such rays off the surface; here the window
+ * alone must refuse t = 0.) */
+static void test_rays_from_a_surface(void **state)
+{
+    (void)state;
+    for (int f = 0; f < 2; f++)
+        for (int g = 0; g < 2; g++) {
+            surface_list list;
+            surface_list_init(&list, formulas[f], tests_of_triangles[g]);
+            triangle faces[BOX_TRIANGLES];
+            box_triangles(vec3_make(-1, -1, -1), vec3_make(1, 1, 1), faces); /* the cube [-1, 1]^3 */
+            for (int k = 0; k < BOX_TRIANGLES; k++)
+                surface_list_add_triangle(&list, faces[k], 0, 0);
+            surface_list_add_sphere(&list, (sphere){{5, 0.25, -0.5}, 2}, 1, 1); /* x from 3 to 7 */
+            const char *why = "is the window open at t_min, so that the start point (t = 0) is refused?";
+            /* On the box's face x = 1, at (1, 0.25, -0.5): inwards the face x = -1 at t = 2. */
+            ray in_box = {{1, 0.25, -0.5}, {-1, 0, 0}};
+            hit_record hit;
+            if (!surfaces_intersect(&list, in_box, 0, REAL_INFINITY, &hit) || hit.t != 2 || hit.point.x != -1)
+                fail_msg("--sphere=%s, --triangle=%s: ray from (1, 0.25, -0.5) on the cube's face x = 1, along -x: "
+                         "expected the face x = -1 at t 2, got %s t %g (%s)",
+                         f ? "textbook" : "robust", g ? "watertight" : "cramer",
+                         surfaces_intersect(&list, in_box, 0, REAL_INFINITY, &hit) ? "a hit at" : "no hit",
+                         (double)hit.t, why);
+            /* ... outwards along +x it leaves the box and meets the sphere at x = 3, t = 2. */
+            expect_closest(&list, (ray){{1, 0.25, -0.5}, {1, 0, 0}}, 0, REAL_INFINITY, BOX_TRIANGLES, 2,
+                           TOL(4), why);
+            /* ... and up, out of the top face's edge region, nothing. */
+            expect_closest(&list, (ray){{1, 0.25, -0.5}, {1, 1, 0}}, 0, REAL_INFINITY, -1, 0, 0, why);
+            /* On the sphere at (3, 0.25, -0.5): inwards the far side x = 7 at t = 4; outwards back to
+             * the box (the face x = 1 at t = 2). */
+            expect_closest(&list, (ray){{3, 0.25, -0.5}, {1, 0, 0}}, 0, REAL_INFINITY, BOX_TRIANGLES, 4, TOL(8),
+                           why);
+            if (!surfaces_intersect(&list, (ray){{3, 0.25, -0.5}, {-1, 0, 0}}, 0, REAL_INFINITY, &hit) ||
+                hit.source != 0 || real_abs(hit.t - 2) > TOL(4))
+                fail_msg("ray from (3, 0.25, -0.5) on the sphere, along -x: expected the cube's face x = 1 at t 2, "
+                         "got source %d at t %g (%s)", hit.source, (double)hit.t, why);
+            /* On the sphere at (5, 2.25, -0.5), outwards (+y): nothing. */
+            expect_closest(&list, (ray){{5, 2.25, -0.5}, {0, 1, 0}}, 0, REAL_INFINITY, -1, 0, 0, why);
+            surface_list_free(&list);
+        }
+}
+
 /* ---- unit normals, near and far ---------------------------------------------------------- */
 
 /* Every hit's normal has unit length, for spheres and triangles of sizes
@@ -662,6 +711,7 @@ static const graded_test tests[] = {
     GRADED(test_box_in_scene, 2),
     GRADED(test_flat_colors, 0), /* handed out complete: no points */
     GRADED(test_scene_file, 2),
+    GRADED(test_rays_from_a_surface, 1),
     GRADED(test_normals_are_unit, 1),
     GRADED(test_floor_diagonal_has_no_holes, 2),
     GRADED(test_degenerate_in_front, 0), /* chapter 03's given check: no points */
