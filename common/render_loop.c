@@ -45,6 +45,12 @@ static int side_of(int samples)
 
 render_stats render_image(image *img, sample_fn sample, const void *scene, const render_options *opt)
 {
+    return render_image_mapped(img, sample, scene, opt, NULL);
+}
+
+render_stats render_image_mapped(image *img, sample_fn sample, const void *scene, const render_options *opt,
+                                 pixel_map_fn map)
+{
     const int nx = img->width, ny = img->height;
     const int n = side_of(opt->samples > 0 ? opt->samples : 1);
     const real weight = (real)1 / (real)(n * n);
@@ -53,27 +59,33 @@ render_stats render_image(image *img, sample_fn sample, const void *scene, const
     const double start = now();
     double last_report = start;
     int rows_done = 0, reported = 0;
-    uint64_t rays = 0;
+    render_stats stats = {0};
 
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) reduction(+ : rays)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int j = 0; j < ny; j++) {
-        uint64_t row_rays = 0;
+        uint64_t row_rays[RAY_KINDS] = {0};
         for (int i = 0; i < nx; i++) {
             color sum = {0, 0, 0};
             for (int a = 0; a < n; a++) {
                 for (int b = 0; b < n; b++) {
                     real du, dv;
                     render_sample_offset(opt->seed, i, j, a, b, n, &du, &dv);
-                    /* snippet: pixel_to_image */
-                    real u = ((real)i + du) / (real)nx; /* u = (i + 0.5)/n_x for one sample */
-                    real v = ((real)j + dv) / (real)ny; /* v = (j + 0.5)/n_y */
-                    /* end snippet */
-                    sum = color_add(sum, sample(scene, u, v, &row_rays));
+                    real u, v;
+                    if (map) {
+                        map(i, j, nx, ny, du, dv, &u, &v);
+                    } else {
+                        u = ((real)i + du) / (real)nx;
+                        v = ((real)j + dv) / (real)ny;
+                    }
+                    sum = color_add(sum, sample(scene, u, v, row_rays));
                 }
             }
             *image_at(img, i, j) = color_scale(sum, weight);
         }
-        rays += row_rays;
+        for (int k = 0; k < RAY_KINDS; k++) {
+#pragma omp atomic
+            stats.by_kind[k] += row_rays[k];
+        }
         if (show_progress) {
             int done;
 #pragma omp atomic capture
@@ -91,7 +103,10 @@ render_stats render_image(image *img, sample_fn sample, const void *scene, const
     }
     if (reported)
         fprintf(stderr, "\r                \r");
-    return (render_stats){rays, now() - start};
+    for (int k = 0; k < RAY_KINDS; k++)
+        stats.rays += stats.by_kind[k];
+    stats.seconds = now() - start;
+    return stats;
 }
 
 void render_summary(FILE *out, const char *name, const image *img, const render_options *opt,
@@ -99,8 +114,20 @@ void render_summary(FILE *out, const char *name, const image *img, const render_
 {
     if (opt->quiet)
         return;
+    static const char *const kind_names[RAY_KINDS] = {"eye", "shadow", "reflected", "refracted"};
     int threads = opt->threads > 0 ? opt->threads : omp_get_max_threads();
-    fprintf(out, "%s: %dx%d, %d spp, %llu rays, %.3f s, %d thread%s -> %s\n", name, img->width, img->height,
-            opt->samples > 0 ? opt->samples : 1, (unsigned long long)stats.rays, stats.seconds, threads,
-            threads == 1 ? "" : "s", output);
+    char rays[160];
+    if (stats.by_kind[RAY_EYE] == stats.rays) {
+        snprintf(rays, sizeof rays, "%llu rays", (unsigned long long)stats.rays);
+    } else { /* "262144 eye + 101003 shadow rays" */
+        size_t used = 0;
+        for (int k = 0; k < RAY_KINDS && used < sizeof rays; k++)
+            if (stats.by_kind[k] || k == RAY_EYE)
+                used += (size_t)snprintf(rays + used, sizeof rays - used, "%s%llu %s", k ? " + " : "",
+                                         (unsigned long long)stats.by_kind[k], kind_names[k]);
+        if (used < sizeof rays)
+            snprintf(rays + used, sizeof rays - used, " rays");
+    }
+    fprintf(out, "%s: %dx%d, %d spp, %s, %.3f s, %d thread%s -> %s\n", name, img->width, img->height,
+            opt->samples > 0 ? opt->samples : 1, rays, stats.seconds, threads, threads == 1 ? "" : "s", output);
 }
