@@ -1,7 +1,7 @@
 /* degenerate.c - chapter 03: determinants against their own rounding error. */
 #include "03_triangle/degenerate.h"
 
-/* The power of two 2^e just above the largest |component| of v. */
+/* e such that 2^(e - 1) <= largest < 2^e (frexp's exponent). */
 static int exponent_of(real largest)
 {
     int e;
@@ -10,7 +10,7 @@ static int exponent_of(real largest)
 }
 
 /* v / 2^e in double: exact (only the exponent moves), so that the products
- * below neither overflow nor underflow for any finite input. */
+ * below stay far from overflow and underflow for any finite input. */
 static void scaled(vec3 v, int e, double out[3])
 {
     out[0] = ldexp((double)v.x, -e);
