@@ -24,6 +24,7 @@
 #include <time.h>
 
 #include "01_camera_rays/camera.h"
+#include "01_camera_rays/pixel.h"
 #include "03_triangle/cracks.h"
 #include "03_triangle/degenerate_count.h"
 #include "03_triangle/icosahedron.h"
@@ -259,6 +260,7 @@ int main(int argc, char **argv)
         .prepare = prepare,
         .sample = sample,
         .release = release,
+        .pixel_to_image = pixel_to_image,
     };
     return renderer_main(&r, argc, argv);
 }

@@ -14,6 +14,7 @@
 #include <stdlib.h>
 
 #include "01_camera_rays/camera.h"
+#include "01_camera_rays/pixel.h"
 #include "04_many_shapes/flat_shading.h"
 #include "04_many_shapes/scene_surfaces.h"
 #include "renderer.h"
@@ -141,6 +142,7 @@ int main(int argc, char **argv)
         .prepare = prepare,
         .sample = sample,
         .release = release,
+        .pixel_to_image = pixel_to_image,
     };
     return renderer_main(&r, argc, argv);
 }
