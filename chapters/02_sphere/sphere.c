@@ -7,6 +7,7 @@
  * Both formulas below return its two roots; sphere_intersect() picks one.
  */
 #include "02_sphere/sphere.h"
+#include "exercise.h"
 
 /* The lecture's algebraic solution, for any d (not only a unit d):
  *     t = (-d.f -+ sqrt((d.f)^2 - (d.d)(f.f - R^2))) / (d.d)          (2)
@@ -17,6 +18,7 @@ static bool textbook_roots(const sphere *s, ray r, real *t0, real *t1)
      *     f = p - c,  A = d.d,  B = d.f,  C = f.f - R^2,  discriminant B^2 - A C
      *     no root when the discriminant is negative (or NaN: test !(disc >= 0));
      *     else t0 = (-B - sqrt(disc)) / A,  t1 = (-B + sqrt(disc)) / A */
+    EXERCISE_STUB("02_sphere", "sphere.c", "textbook");
     (void)s;
     (void)r;
     *t0 = *t1 = 0;
@@ -41,6 +43,7 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
      *     l = f + t_m d               the perpendicular from c to the line, |l| = l_m
      *     disc = A (R^2 - l.l)        equal to B^2 - A C, without its cancellation             (4)
      * Keep l as a vector: l.l is small when the ray passes near c, B^2 and A C are not. */
+    EXERCISE_STUB("02_sphere", "sphere.c", "robust_discriminant");
     (void)f;
     (void)B;
     real disc = -1;
@@ -50,6 +53,7 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
      *     q = -(B + sign(B) sqrt(disc))    B and sign(B) sqrt(disc) have the same sign: no cancellation
      *     t0 = q / A,  t1 = C / q          (C = f.f - R^2; when q = 0 both roots are 0: t1 = t0)
      * Which of t0, t1 is nearer depends on the sign of B; sphere_intersect() sorts them. */
+    EXERCISE_STUB("02_sphere", "sphere.c", "robust_roots");
     (void)A;
     (void)disc;
     *t0 = *t1 = 0;
@@ -64,6 +68,7 @@ static vec3 sphere_normal(const sphere *s, vec3 x)
      *     n = (x - c) / |x - c|
      * |x - c| is R up to rounding; dividing by the computed length makes n a unit vector all the same.
      * x - c is never zero at a hit (it has length R), but guard it so that no NaN leaves this function. */
+    EXERCISE_STUB("02_sphere", "sphere.c", "normal");
     (void)s;
     (void)x;
     return vec3_make(0, 0, 0);
