@@ -22,6 +22,8 @@ REAL ?= double
 HANDOUT := $(if $(wildcard solutions/[0-9][0-9]_*/*.c),,$(if $(wildcard reference/*/lib[0-9][0-9]_*.a),1))
 STUDENT ?= $(if $(HANDOUT),1,0)
 WERROR ?= -Werror
+# REFERENCE="01 02": a student's build takes these chapters from the reference.
+REFERENCE ?=
 SANITIZE ?= 0
 OPT ?= -O2 -g
 
@@ -30,7 +32,7 @@ $(error REAL must be double or float, not '$(REAL)')
 endif
 
 compiler := $(if $(findstring clang,$(CC)),-clang)
-variant := $(compiler)$(if $(filter float,$(REAL)),-float)$(if $(filter 1,$(SANITIZE)),-asan)$(if $(filter 1,$(STUDENT)),-student)
+variant := $(compiler)$(if $(filter float,$(REAL)),-float)$(if $(filter 1,$(SANITIZE)),-asan)$(if $(filter 1,$(STUDENT)),-student)$(if $(filter 1,$(STUDENT)),$(if $(strip $(REFERENCE)),-ref$(subst $(eval) ,,$(strip $(REFERENCE)))))
 BUILD ?= build$(variant)
 
 CPPFLAGS := -D_POSIX_C_SOURCE=200809L -I common -I chapters -I tests -I /usr/include/stb \
@@ -59,7 +61,7 @@ reference = $(if $(EXERCISES_$1),$(if $(HANDOUT),$(REFERENCE_DIR)/lib$1.a,$(call
 # is 1, else the reference.
 stage_objs = $(call objs,$(filter-out $(if $(filter 1,$2),,$(addprefix chapters/$1/,$(EXERCISES_$1))),$(sort $(filter-out %/render.c,$(wildcard chapters/$1/*.c))))) $(if $(filter 1,$2),,$(call reference,$1))
 # The stage objects of chapters 1..$1.
-stages_upto = $(foreach c,$(call upto,$1),$(call stage_objs,$c,$(STUDENT)))
+stages_upto = $(foreach c,$(call upto,$1),$(call stage_objs,$c,$(if $(filter $c $(call num,$c),$(REFERENCE)),0,$(STUDENT))))
 # Links the prerequisites $1: every member of a reference library is linked,
 # exactly as the solutions' objects would be.
 comma := ,
@@ -75,7 +77,7 @@ ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS)
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
 # The built-in scenes' images: out/, or out-student/ for the student build.
-OUT := out$(if $(filter 1,$(STUDENT)),-student)
+OUT := out$(if $(filter 1,$(STUDENT)),-student$(if $(strip $(REFERENCE)),-ref$(subst $(eval) ,,$(strip $(REFERENCE)))))
 IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
@@ -316,9 +318,10 @@ help:
 	@echo "make check           check-skeletons, check-snippets, check-figures: fail naming what is stale"
 	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
+	@echo "           REFERENCE=\"01 02\" (with STUDENT=1: these chapters from the reference)"
 	@echo "chapters: $(CHAPTERS)"
 
 clean:
-	rm -rf build build-* out out-student
+	rm -rf build build-* out out-student*
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)
