@@ -169,7 +169,7 @@ GRADE_DIR = $(BUILD)/grade-$(SOURCE)
 grade_stages = $(foreach c,$(call upto,$1),$(call stage_objs,$c,$(if $(and $(filter $c,$1),$(filter chapters,$(SOURCE))),1,0)))
 # What chapter $1's graded suite links, in words.
 REFERENCE_WORDS := $(if $(HANDOUT),the compiled reference libraries reference/double/,solutions/)
-grade_links = $1: $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),your $(addprefix chapters/$1/,$(EXERCISES_$1)),no exercise files),the reference)$(if $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))), with $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))) from $(REFERENCE_WORDS))
+grade_links = $1: links $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addprefix chapters/$1/,$(EXERCISES_$1)),no exercise files),the reference)$(if $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))), and the reference of $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))) from $(REFERENCE_WORDS))
 
 define grade_rules
 $(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call grade_stages,$1) $(call objs,$(COMMON_SRC))

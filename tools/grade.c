@@ -245,7 +245,9 @@ static int run(char *const argv[], double timeout, buffer *out, int untrusted, c
         }
         if (open_pipe) {
             struct pollfd p = {fds[0], POLLIN, 0};
-            int ready = poll(&p, 1, (int)(left * 1000) + 1);
+            /* A short wait, so that an exit is seen even while something the
+             * test started still holds the pipe open. */
+            int ready = poll(&p, 1, left < 0.05 ? (int)(left * 1000) + 1 : 50);
             if (ready > 0) {
                 char chunk[4096];
                 ssize_t n = read(fds[0], chunk, sizeof chunk);
