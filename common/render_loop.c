@@ -53,11 +53,11 @@ render_stats render_image(image *img, sample_fn sample, const void *scene, const
     const double start = now();
     double last_report = start;
     int rows_done = 0, reported = 0;
-    uint64_t rays = 0;
+    render_stats stats = {0};
 
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads) reduction(+ : rays)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int j = 0; j < ny; j++) {
-        uint64_t row_rays = 0;
+        uint64_t row_rays[RAY_KINDS] = {0};
         for (int i = 0; i < nx; i++) {
             color sum = {0, 0, 0};
             for (int a = 0; a < n; a++) {
@@ -68,12 +68,15 @@ render_stats render_image(image *img, sample_fn sample, const void *scene, const
                     real u = ((real)i + du) / (real)nx; /* u = (i + 0.5)/n_x for one sample */
                     real v = ((real)j + dv) / (real)ny; /* v = (j + 0.5)/n_y */
                     /* end snippet */
-                    sum = color_add(sum, sample(scene, u, v, &row_rays));
+                    sum = color_add(sum, sample(scene, u, v, row_rays));
                 }
             }
             *image_at(img, i, j) = color_scale(sum, weight);
         }
-        rays += row_rays;
+        for (int k = 0; k < RAY_KINDS; k++) {
+#pragma omp atomic
+            stats.by_kind[k] += row_rays[k];
+        }
         if (show_progress) {
             int done;
 #pragma omp atomic capture
@@ -91,7 +94,10 @@ render_stats render_image(image *img, sample_fn sample, const void *scene, const
     }
     if (reported)
         fprintf(stderr, "\r                \r");
-    return (render_stats){rays, now() - start};
+    for (int k = 0; k < RAY_KINDS; k++)
+        stats.rays += stats.by_kind[k];
+    stats.seconds = now() - start;
+    return stats;
 }
 
 void render_summary(FILE *out, const char *name, const image *img, const render_options *opt,
@@ -99,8 +105,20 @@ void render_summary(FILE *out, const char *name, const image *img, const render_
 {
     if (opt->quiet)
         return;
+    static const char *const kind_names[RAY_KINDS] = {"eye", "shadow", "reflected", "refracted"};
     int threads = opt->threads > 0 ? opt->threads : omp_get_max_threads();
-    fprintf(out, "%s: %dx%d, %d spp, %llu rays, %.3f s, %d thread%s -> %s\n", name, img->width, img->height,
-            opt->samples > 0 ? opt->samples : 1, (unsigned long long)stats.rays, stats.seconds, threads,
-            threads == 1 ? "" : "s", output);
+    char rays[160];
+    if (stats.by_kind[RAY_EYE] == stats.rays) {
+        snprintf(rays, sizeof rays, "%llu rays", (unsigned long long)stats.rays);
+    } else { /* "262144 eye + 101003 shadow rays" */
+        size_t used = 0;
+        for (int k = 0; k < RAY_KINDS && used < sizeof rays; k++)
+            if (stats.by_kind[k] || k == RAY_EYE)
+                used += (size_t)snprintf(rays + used, sizeof rays - used, "%s%llu %s", k ? " + " : "",
+                                         (unsigned long long)stats.by_kind[k], kind_names[k]);
+        if (used < sizeof rays)
+            snprintf(rays + used, sizeof rays - used, " rays");
+    }
+    fprintf(out, "%s: %dx%d, %d spp, %s, %.3f s, %d thread%s -> %s\n", name, img->width, img->height,
+            opt->samples > 0 ? opt->samples : 1, rays, stats.seconds, threads, threads == 1 ? "" : "s", output);
 }

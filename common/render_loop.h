@@ -19,12 +19,17 @@
 #include "image.h"
 #include "options.h"
 
-/* Radiance seen through normalized image position (u, v) in [0,1]^2.  Adds
- * the number of rays it cast to *rays. */
+/* The kinds of ray a renderer casts, counted apart in the summary line. */
+typedef enum { RAY_EYE, RAY_SHADOW, RAY_REFLECTED, RAY_REFRACTED, RAY_KINDS } ray_kind;
+
+/* Radiance seen through normalized image position (u, v) in [0,1]^2.  `rays`
+ * points at RAY_KINDS counters indexed by ray_kind: a sample adds the rays it
+ * cast, so `++*rays` counts one eye ray and `++rays[RAY_SHADOW]` a shadow ray. */
 typedef color (*sample_fn)(const void *scene, real u, real v, uint64_t *rays);
 
 typedef struct {
-    uint64_t rays;
+    uint64_t rays;                /* all kinds together */
+    uint64_t by_kind[RAY_KINDS];  /* indexed by ray_kind */
     double seconds;
 } render_stats;
 
@@ -33,7 +38,8 @@ typedef struct {
  * the render takes more than about a second, and opt->quiet is false. */
 render_stats render_image(image *img, sample_fn sample, const void *scene, const render_options *opt);
 
-/* The one-line summary: "<name>: 512x512, 1 spp, 262144 rays, 0.05 s, 2 threads -> out.png". */
+/* The one-line summary: "<name>: 512x512, 1 spp, 262144 rays, 0.05 s, 2 threads -> out.png".  When
+ * secondary rays were cast, the count is split: "262144 eye + 101003 shadow rays". */
 void render_summary(FILE *out, const char *name, const image *img, const render_options *opt,
                     render_stats stats, const char *output);
 

@@ -12,11 +12,13 @@ static color position(const void *scene, real u, real v, uint64_t *rays)
     return color_make(u, v, 0);
 }
 
-/* A pattern with no structure a wrong pixel could hide in. */
+/* A pattern with no structure a wrong pixel could hide in; it "casts" one
+ * eye ray, and a shadow ray on the pixels left of the diagonal. */
 static color pattern(const void *scene, real u, real v, uint64_t *rays)
 {
     (void)scene;
-    *rays += 2;
+    ++*rays;
+    rays[RAY_SHADOW] += u < v;
     return color_make(real_sqrt(u * 7 + v), u * v, (real)(u > v));
 }
 
@@ -84,8 +86,11 @@ static void test_any_thread_count_gives_the_same_image(void **state)
     render_stats s1 = render_image(&one, pattern, NULL, &opt);
     opt.threads = 2;
     render_stats s2 = render_image(&two, pattern, NULL, &opt);
-    assert_int_equal(2 * 37 * 23 * 4, s1.rays);
-    assert_int_equal(s1.rays, s2.rays);
+    assert_int_equal(37 * 23 * 4, s1.by_kind[RAY_EYE]);
+    assert_true(s1.by_kind[RAY_SHADOW] > 0 && s1.by_kind[RAY_SHADOW] < 37 * 23 * 4);
+    assert_int_equal(0, s1.by_kind[RAY_REFLECTED] + s1.by_kind[RAY_REFRACTED]);
+    assert_int_equal(s1.by_kind[RAY_EYE] + s1.by_kind[RAY_SHADOW], s1.rays);
+    assert_memory_equal(s1.by_kind, s2.by_kind, sizeof s1.by_kind);
     assert_memory_equal(one.pixels, two.pixels, sizeof(color) * 37 * 23);
     opt.seed = 4; /* another seed moves the samples */
     render_image(&seeded, pattern, NULL, &opt);
@@ -95,10 +100,32 @@ static void test_any_thread_count_gives_the_same_image(void **state)
     image_free(&seeded);
 }
 
+/* The summary line names the kinds of ray apart once there are secondary rays. */
+static void test_summary_counts_ray_kinds_apart(void **state)
+{
+    (void)state;
+    image img = {.width = 4, .height = 2};
+    render_options opt = {.samples = 1, .threads = 2};
+    char line[256];
+    FILE *out = fmemopen(line, sizeof line, "w");
+    assert_non_null(out);
+    render_stats eye_only = {.rays = 8, .by_kind = {8, 0, 0, 0}, .seconds = 0.5};
+    render_summary(out, "x", &img, &opt, eye_only, "x.png");
+    fflush(out);
+    assert_string_equal("x: 4x2, 1 spp, 8 rays, 0.500 s, 2 threads -> x.png\n", line);
+    rewind(out);
+    render_stats mixed = {.rays = 19, .by_kind = {8, 6, 0, 5}, .seconds = 0.25};
+    render_summary(out, "x", &img, &opt, mixed, "x.png");
+    fputc('\0', out);
+    fclose(out);
+    assert_string_equal("x: 4x2, 1 spp, 8 eye + 6 shadow + 5 refracted rays, 0.250 s, 2 threads -> x.png\n", line);
+}
+
 static const graded_test tests[] = {
     GRADED(test_one_sample_is_the_pixel_centre, 0),
     GRADED(test_stratified_samples_stay_in_their_strata, 0),
     GRADED(test_samples_average_to_the_pixel_mean, 0),
     GRADED(test_any_thread_count_gives_the_same_image, 0),
+    GRADED(test_summary_counts_ray_kinds_apart, 0),
 };
 SUITE_MAIN("common_render", tests)
