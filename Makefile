@@ -92,9 +92,13 @@ tests: $(TEST_BINS)
 deps:
 	@tools/deps.sh "$(CC)"
 
+# COMPILE_AS=user (set by grade-run for the autograder) compiles the files of
+# chapters/ as that user (tools/compile-as.sh).
+COMPILE_AS ?=
 $(BUILD)/obj/%.o: %.c | deps
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+	$(if $(and $(COMPILE_AS),$(filter chapters/%,$<)),tools/compile-as.sh $(COMPILE_AS) $@ $<) $(CC) $(CPPFLAGS) $(CFLAGS) \
+	    $(if $(and $(COMPILE_AS),$(filter chapters/%,$<)),,-c $< -o $@)
 
 define chapter_rules
 $(BUILD)/$1/render: $(call objs,chapters/$1/render.c) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
@@ -200,13 +204,14 @@ grade-run: $(BUILD)/tools/grade
 	        missing="$$missing $$c"; continue; \
 	    fi; \
 	    rm -f $(GRADE_DIR)/test_$$c $(BUILD)/obj/chapters/$$c/*.o; \
-	    $(MAKE) --no-print-directory -s WERROR= $(GRADE_DIR)/test_$$c >$(GRADE_DIR)/test_$$c.log 2>&1 || { \
+	    $(MAKE) --no-print-directory -s WERROR= COMPILE_AS=$(GRADE_USER) $(GRADE_DIR)/test_$$c >$(GRADE_DIR)/test_$$c.log 2>&1 || { \
 	        echo "$$c: the files of $(SOURCE)/$$c/ do not compile:"; tail -n 20 $(GRADE_DIR)/test_$$c.log; }; \
 	    float=- float_log=-; \
 	    if [ "$(GRADE_FLOAT)" = 1 ]; then \
 	        float=$(FLOAT_GRADE_DIR)/test_$$c float_log=$(FLOAT_GRADE_DIR)/test_$$c.log; \
 	        rm -f $$float $(BUILD)-float/obj/chapters/$$c/*.o; \
-	        $(MAKE) --no-print-directory -s BUILD=$(BUILD)-float REAL=float WERROR= $$float >$$float_log 2>&1 || true; \
+	        $(MAKE) --no-print-directory -s BUILD=$(BUILD)-float REAL=float WERROR= COMPILE_AS=$(GRADE_USER) $$float \
+	            >$$float_log 2>&1 || true; \
 	    fi; \
 	    set -- "$$@" $$c $(GRADE_DIR)/test_$$c $(BUILD)/tests/test_$$c $(GRADE_DIR)/test_$$c.log $$float $$float_log; \
 	done; \

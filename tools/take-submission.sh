@@ -71,6 +71,8 @@ while read -r c f; do
     fi
 done <<<"$list"
 unused=$(printf '%s\n' "$files" | grep -vxF -f "$used" | grep . | head -n 20)
+links=$(cd "$submission" 2>/dev/null && find . -type l | sed 's|^\./||' | sort | head -n 20)
+[ -n "$links" ] && unused=$(printf '%s\n%s\n' "$unused" "$(printf '%s\n' "$links" | sed 's/$/ (a link: never taken)/')" | grep .)
 if [ -n "$unused" ]; then
     echo "Not used (only the graded chapter's exercise files are):"
     printf '%s\n' "$unused" | sed 's/^/  /'
