@@ -11,6 +11,6 @@ void exercise_announce(const char *chapter, const char *file, const char *exerci
     /* One fprintf: stdio locks the stream, so lines from two threads do not interleave. */
     fprintf(stderr,
             "chapter %.*s: %s is still an exercise (TODO %s in chapters/%s/%s); it returns a placeholder, "
-            "so the image may be black (make REFERENCE=%.*s links the reference chapter %.*s instead)\n",
+            "so images that need it show only the background (make REFERENCE=%.*s links the reference chapter %.*s instead)\n",
             number, chapter, function, exercise, chapter, file, number, chapter, number, chapter);
 }
