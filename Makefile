@@ -263,7 +263,13 @@ FIG_NEEDS := $(if $(FIGURE_LISTS),$(shell awk 'NF >= 2 && $$1 !~ /^\#/ { n = spl
 FIG_DOUBLE := $(patsubst double/%,$(FIG_BUILD)/%/render,$(filter double/%,$(FIG_NEEDS)))
 FIG_FLOAT := $(patsubst float/%,$(FIG_BUILD)-float/%/render,$(filter float/%,$(FIG_NEEDS)))
 
+# Puts labelled panels side by side (the `panels` lines of figures.txt).
+$(BUILD)/tools/panels: $(BUILD)/obj/tools/panels.o
+	@mkdir -p $(@D)
+	$(CC) $^ -lstb -lm -o $@
+
 figure-renderers:
+	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_BUILD)/tools/panels
 	@$(if $(FIG_DOUBLE),$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_DOUBLE))
 	@$(if $(FIG_FLOAT),$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=float BUILD=$(FIG_BUILD)-float $(FIG_FLOAT))
 

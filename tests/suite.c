@@ -1,5 +1,6 @@
 #include "suite.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -27,6 +28,66 @@ void check_vec3_close(vec3 expected, vec3 actual, double tolerance, const char *
             _fail(file, line);
         }
     }
+}
+
+const char *describe(const char *format, ...)
+{
+    static char buffers[8][600];
+    static int next;
+    char *out = buffers[next++ % 8];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(out, sizeof buffers[0], format, args);
+    va_end(args);
+    return out;
+}
+
+/* A suspect matches when it is as close to the got value as the expected
+ * value had to be, or within a few roundings of its own size. */
+static int near(double a, double b, double tolerance)
+{
+    double slack = fmax(4 * tolerance, 64 * (double)REAL_EPSILON * fmax(1, fmax(fabs(a), fabs(b))));
+    return fabs(a - b) <= slack || (a != a && b != b);
+}
+
+void check_close_why(double expected, double actual, double tolerance, const char *input, const char *hint,
+                     const suspect *suspects, size_t n, const char *file, int line)
+{
+    double error = actual - expected;
+    if (error <= tolerance && -error <= tolerance)
+        return;
+    const char *why = hint;
+    for (size_t k = 0; k < n; k++)
+        if (near(suspects[k].value, actual, tolerance)) {
+            why = suspects[k].mistake;
+            break;
+        }
+    print_error("%s\n    expected %.17g (within %.3g)\n    got      %.17g\n    likely mistake: %s\n", input, expected,
+                tolerance, actual, why);
+    _fail(file, line);
+}
+
+void check_vec3_why(vec3 expected, vec3 actual, double tolerance, const char *input, const char *hint,
+                    const suspect_vec3 *suspects, size_t n, const char *file, int line)
+{
+    const double e[3] = {expected.x, expected.y, expected.z}, a[3] = {actual.x, actual.y, actual.z};
+    int ok = 1;
+    for (int k = 0; k < 3; k++)
+        ok &= a[k] - e[k] <= tolerance && e[k] - a[k] <= tolerance;
+    if (ok)
+        return;
+    const char *why = hint;
+    for (size_t k = 0; k < n; k++) {
+        const vec3 s = suspects[k].value;
+        if (near(s.x, actual.x, tolerance) && near(s.y, actual.y, tolerance) && near(s.z, actual.z, tolerance)) {
+            why = suspects[k].mistake;
+            break;
+        }
+    }
+    print_error("%s\n    expected (%.17g, %.17g, %.17g) (within %.3g per component)\n"
+                "    got      (%.17g, %.17g, %.17g)\n    likely mistake: %s\n",
+                input, e[0], e[1], e[2], tolerance, a[0], a[1], a[2], why);
+    _fail(file, line);
 }
 
 const char *cornell_data(void)

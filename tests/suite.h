@@ -52,6 +52,34 @@ void check_close(double expected, double actual, double tolerance, const char *w
     check_vec3_close((expected), (actual), (double)(tolerance), #actual, __FILE__, __LINE__)
 void check_vec3_close(vec3 expected, vec3 actual, double tolerance, const char *what, const char *file, int line);
 
+/* A likely mistake and the value it would give. */
+typedef struct {
+    double value;
+    const char *mistake;
+} suspect;
+typedef struct {
+    vec3 value;
+    const char *mistake;
+} suspect_vec3;
+
+/* Like assert_close and assert_vec3_close, for a student's function: on
+ * failure the message names the input (a string), the expected value, the
+ * value got, and the likely mistake: the first suspect whose value the got
+ * value matches, else `hint`.  n suspects (0 and NULL for none). */
+#define assert_close_why(expected, actual, tolerance, input, hint, suspects, n)                                     \
+    check_close_why((double)(expected), (double)(actual), (double)(tolerance), input, hint, suspects, n, __FILE__, \
+                    __LINE__)
+void check_close_why(double expected, double actual, double tolerance, const char *input, const char *hint,
+                     const suspect *suspects, size_t n, const char *file, int line);
+#define assert_vec3_why(expected, actual, tolerance, input, hint, suspects, n)                                      \
+    check_vec3_why((expected), (actual), (double)(tolerance), input, hint, suspects, n, __FILE__, __LINE__)
+void check_vec3_why(vec3 expected, vec3 actual, double tolerance, const char *input, const char *hint,
+                    const suspect_vec3 *suspects, size_t n, const char *file, int line);
+
+/* printf into one of eight static buffers in turn: the input of a check,
+ * for its message, which may be built from the one before. */
+const char *describe(const char *format, ...) __attribute__((format(printf, 1, 2)));
+
 /* The folder of the Cornell corpus (../shared/cornell/sp17-ray1/data, or
  * $RT_CORNELL), or NULL when it is absent: tests that use it skip then.
  * With RT_REQUIRE_CORNELL set (CI, where the corpus is always beside the
