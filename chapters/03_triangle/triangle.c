@@ -1,5 +1,6 @@
 /* triangle.c - chapter 03: the barycentric ray-triangle intersection. */
 #include "03_triangle/triangle.h"
+#include "exercise.h"
 
 #include "03_triangle/degenerate.h"
 #include "03_triangle/watertight.h"
@@ -23,6 +24,7 @@ static bool cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_
      * check's business, in triangle_intersect.)  Hit when t_min < t < t_max and the point
      * is inside, edges included: beta >= 0, gamma >= 0, beta + gamma <= 1.
      * Write the comparisons so that a NaN fails them: !(t > t_min && t < t_max). */
+    EXERCISE_STUB("03_triangle", "triangle.c", "cramer");
     (void)tri;
     (void)r;
     (void)t_min;
