@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 void check_close(double expected, double actual, double tolerance, const char *what, const char *file, int line)
 {
@@ -120,10 +121,23 @@ int suite_main(const char *name, const graded_test *tests, size_t n, int argc, c
         free(plain);
         return 0;
     }
+    /* --report FD (tools/grade): read a token from FD now, and after the
+     * test write "TOKEN FAILED" to FD, so that a test passes only when the
+     * suite itself got to the end, never because tested code printed what
+     * cmocka prints or called exit(0). */
+    int report = -1;
+    char token[80] = "";
+    if (argc == 5 && strcmp(argv[3], "--report") == 0) {
+        report = atoi(argv[4]);
+        ssize_t got = read(report, token, sizeof token - 1);
+        token[got > 0 ? got : 0] = '\0';
+        token[strcspn(token, "\n")] = '\0';
+        argc = 3;
+    }
     if (argc == 3 && strcmp(argv[1], "--only") == 0)
         only = argv[2];
     else if (argc != 1) {
-        fprintf(stderr, "usage: %s [--list | --only TEST]\n", argv[0]);
+        fprintf(stderr, "usage: %s [--list | --only TEST [--report FD]]\n", argv[0]);
         free(plain);
         return 2;
     }
@@ -137,5 +151,12 @@ int suite_main(const char *name, const graded_test *tests, size_t n, int argc, c
     }
     int failed = _cmocka_run_group_tests(name, plain, count, NULL, NULL);
     free(plain);
+    if (report >= 0) {
+        fflush(NULL);
+        char line[128];
+        int n = snprintf(line, sizeof line, "%s %d\n", token, failed);
+        if (write(report, line, (size_t)n) != n)
+            return 1;
+    }
     return failed;
 }

@@ -11,6 +11,9 @@
  *
  * The binary runs all its tests; `--list` prints "name points" a line and
  * `--only NAME` runs one test, which is how grading isolates each test.
+ * `--only NAME --report FD` (tools/grade) also reads a token from FD before
+ * the test and writes "TOKEN FAILED" there after it, which code under test
+ * cannot fake by printing cmocka's lines or calling exit(0).
  *
  * Debian's cmocka 1.1.5 has no assert for doubles with a tolerance:
  * assert_close() prints the expected and actual values and the tolerance.
