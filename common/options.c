@@ -144,7 +144,11 @@ options_result options_parse(int argc, char **argv, const char *summary, const k
         longs[n_longs++] = (struct option){knobs[k].name, required_argument, NULL, OPT_KNOB + k};
     longs[n_longs] = (struct option){0};
 
-    optind = 1; /* getopt keeps state: reset it so that tests can parse many times */
+    /* getopt keeps state between calls (optind, and glibc's position inside a
+     * group of short options such as -hq).  optind = 0 resets all of it;
+     * optind = 1 would leave the group position behind, and a second parse
+     * in one process would misread its arguments. */
+    optind = 0;
     opterr = 0;
     int c;
     long value;

@@ -134,6 +134,26 @@ static void test_help_lists_options_knobs_and_defaults(void **state)
             fail_msg("--help does not mention '%s':\n%s", expected[k], p.out);
 }
 
+/* Two parses in one process: the second must not inherit getopt's state
+ * (glibc remembers where it was inside "-hq" unless optind is set to 0). */
+static void test_two_parses_in_a_row(void **state)
+{
+    (void)state;
+    parsed p = parse("render", "-hq", "first.xml", NULL);
+    assert_int_equal(OPTIONS_EXIT, p.result); /* -h stops at once, inside the group */
+    p = parse("render", "-qj", "2", "second.xml", NULL);
+    assert_int_equal(OPTIONS_OK, p.result);
+    assert_true(p.opt.quiet);
+    assert_int_equal(2, p.opt.threads);
+    assert_non_null(p.opt.scene_path);
+    assert_string_equal("second.xml", p.opt.scene_path);
+    p = parse("render", "-n", "4", "third.xml", NULL);
+    assert_int_equal(OPTIONS_OK, p.result);
+    assert_int_equal(4, p.opt.samples);
+    assert_false(p.opt.quiet);
+    assert_string_equal("third.xml", p.opt.scene_path);
+}
+
 static const graded_test tests[] = {
     GRADED(test_defaults, 0),
     GRADED(test_all_shared_options, 0),
@@ -141,5 +161,6 @@ static const graded_test tests[] = {
     GRADED(test_unknown_option_missing_value_and_extra_scene, 0),
     GRADED(test_knobs_set_their_targets, 0),
     GRADED(test_help_lists_options_knobs_and_defaults, 0),
+    GRADED(test_two_parses_in_a_row, 0),
 };
 SUITE_MAIN("common_options", tests)
