@@ -89,13 +89,15 @@ typedef struct {
 } scene;
 
 #define SCENE_MAX_IMAGE_SIDE 16384
+#define SCENE_MAX_FILE_BYTES (64LL << 20) /* one scene file; also keeps line numbers far from INT_MAX */
 
 /* The defaults of SCENES.md: no surfaces, the default camera, exposure 1. */
 void scene_init(scene *s);
 
 /* Reads `path`.  Returns 0, or -1 with "path:line: problem" in err (and s
  * left empty: nothing to free).  Mesh and texture paths are resolved against
- * the folder of `path`; meshes are loaded, textures checked to be readable. */
+ * the folder of `path`; meshes are loaded, textures checked to be readable.  The scene, a mesh or a texture that is not a regular file (a
+ * directory, a FIFO, /dev/zero) or is larger than its limit is refused. */
 int scene_load(const char *path, scene *s, char *err, size_t err_size);
 
 void scene_free(scene *s);
