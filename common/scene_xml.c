@@ -13,7 +13,6 @@
 #include <strings.h>
 
 #include <expat.h>
-#include <stb_image.h>
 
 #include "grow.h"
 #include "input_file.h"
@@ -327,20 +326,12 @@ static bool parse_image_size(reader *r)
     return true;
 }
 
+/* Decodes the whole image, once: its texels stay in the scene. */
 static bool load_texture_image(reader *r, const char *path)
 {
     char problem[512];
-    FILE *f = input_file_open(path, "the texture image", 256LL << 20, problem, sizeof problem);
-    if (!f) {
+    if (texture_image_load(path, &r->texture.image, problem, sizeof problem) != 0) {
         fail_at(r, line_of_top(r), "%s", problem);
-        return false;
-    }
-    int x, y, channels;
-    int ok = stbi_info_from_file(f, &x, &y, &channels);
-    fclose(f);
-    if (!ok) {
-        fail_at(r, line_of_top(r), "texture image '%s' is not an image that can be read (%s)", path,
-                stbi_failure_reason());
         return false;
     }
     return true;
@@ -809,6 +800,7 @@ int scene_load(const char *path, scene *s, char *err, size_t err_size)
     free(r.shader.name);
     free(r.texture.name);
     free(r.texture.image_path);
+    texture_image_free(&r.texture.image);
     if (r.failed) {
         scene_free(s);
         return -1;

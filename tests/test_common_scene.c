@@ -6,6 +6,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <stb_image_write.h>
+
 #include "scene.h"
 #include "suite.h"
 
@@ -339,6 +341,43 @@ static void test_paths_that_are_not_regular_files(void **state)
     rmdir(sub);
 }
 
+/* A texture is decoded in full when the scene is read, and its texels kept:
+ * a PNG whose header is valid but whose pixels are cut short is refused. */
+static void test_texture_images_are_decoded_in_full(void **state)
+{
+    (void)state;
+    enum { W = 32, H = 24 };
+    unsigned char rgb[W * H * 3];
+    unsigned state_bits = 12345; /* noise, so that the PNG does not compress below 100 bytes */
+    for (size_t k = 0; k < sizeof rgb; k++) {
+        state_bits = state_bits * 1103515245u + 12345u;
+        rgb[k] = (unsigned char)(state_bits >> 16);
+    }
+    char path[256];
+    snprintf(path, sizeof path, "%s/noise.png", folder);
+    assert_int_not_equal(0, stbi_write_png(path, W, H, 3, rgb, W * 3));
+    const char *text = "<scene>\n<texture name=\"n\" type=\"RepeatTexture\">\n<image>noise.png</image></texture></scene>";
+    scene s;
+    char err[1024] = "";
+    if (load_text(text, &s, err, sizeof err) != 0)
+        fail_msg("%s", err);
+    assert_int_equal(1, s.n_textures);
+    const texture_image *t = &s.textures[0].image;
+    assert_int_equal(W, t->width);
+    assert_int_equal(H, t->height);
+    assert_memory_equal(rgb, t->rgb, sizeof rgb); /* row 0 is the file's top row */
+    color c = texture_image_texel(t, 5, 7);
+    /* byte / 255, one rounding of a quotient: within REAL_EPSILON / 2 relative */
+    assert_close(rgb[(7 * W + 5) * 3 + 1] / 255.0, c.g, REAL_EPSILON);
+    scene_free(&s);
+    /* the same file cut to 100 bytes: its header still reads as 32 x 24 */
+    FILE *f = fopen(path, "r+b");
+    assert_non_null(f);
+    assert_int_equal(0, ftruncate(fileno(f), 100));
+    fclose(f);
+    expect_error(text, 3, "noise.png: the image is broken");
+}
+
 /* Writes an OBJ file of `lines` copies of `line` after a triangle's vertices. */
 static void write_obj_lines(const char *name, const char *line, int lines)
 {
@@ -478,6 +517,7 @@ static const graded_test tests[] = {
     GRADED(test_file_errors, 0),
     GRADED(test_obj_relative_indices_and_slashes, 0),
     GRADED(test_paths_that_are_not_regular_files, 0),
+    GRADED(test_texture_images_are_decoded_in_full, 0),
     GRADED(test_limits_of_one_line_face_and_file, 0),
     GRADED(test_cornell_corpus_parses, 0),
 };
