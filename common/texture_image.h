@@ -1,13 +1,15 @@
 /* texture_image.h - a texture's texels, decoded once when the scene is read.
  *
  * The scene reader decodes the image of every <texture> fully, here, with
- * stb_image (PNG, JPEG, BMP, TGA, GIF, PSD, HDR, PNM), and keeps the texels in
- * the scene description (scene_texture.image).  So a broken image (a PNG cut
+ * stb_image, and keeps the texels in the scene description
+ * (scene_texture.image).  The image is a PNG file (SCENES.md), the one format
+ * whose decoder notices a file cut short (texture_image.c says why).  So a broken image (a PNG cut
  * short, say) is refused with the scene's file and line before anything is
  * rendered, and a renderer looks texels up here and never reads a file.
  *
- * Texels are stored as read, 8 bits per channel, always three channels (a
- * grey or paletted image is expanded, alpha is dropped).  Texel (x, y): x
+ * Texels are stored as read, 8 bits per channel (a 16-bit PNG keeps its high
+ * byte), always three channels (a grey or paletted image is expanded, alpha
+ * is dropped).  Texel (x, y): x
  * counts columns from the left, y counts rows from the TOP, as the file
  * stores them; mapping texture coordinates (u, v) to (x, y), and repeating
  * or clamping them, is the texture's business (chapter 10), not this file's.

@@ -276,7 +276,7 @@ static void test_file_errors(void **state)
                  "missing.png: cannot read the texture image");
     write_file("not-an-image.png", "plain text");
     expect_error("<scene>\n<texture type=\"RepeatTexture\">\n<image>not-an-image.png</image></texture></scene>", 3,
-                 "not an image");
+                 "not-an-image.png: not a PNG file");
     /* a broken mesh: the message names the scene line and the mesh's own line */
     write_file("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
     expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad.obj</data></surface></scene>", 3,
@@ -376,6 +376,13 @@ static void test_texture_images_are_decoded_in_full(void **state)
     assert_int_equal(0, ftruncate(fileno(f), 100));
     fclose(f);
     expect_error(text, 3, "noise.png: the image is broken");
+    /* not a PNG: refused before decoding (stb_image's other decoders accept files cut short) */
+    unsigned char bmp[54 + 4] = {'B', 'M'};
+    f = fopen(path, "wb");
+    assert_non_null(f);
+    fwrite(bmp, 1, sizeof bmp, f);
+    fclose(f);
+    expect_error(text, 3, "noise.png: not a PNG file");
 }
 
 /* Writes an OBJ file of `lines` copies of `line` after a triangle's vertices. */
