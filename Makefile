@@ -53,7 +53,9 @@ TEST_SUPPORT := tests/suite.c
 # Suites of common/ link common/ only; a chapter's suite links its stages.
 COMMON_TESTS := $(sort $(basename $(notdir $(wildcard tests/test_common_*.c))))
 CHAPTER_TESTS := $(foreach c,$(CHAPTERS),$(if $(wildcard tests/test_$c.c),test_$c))
-ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS)
+# The fuzz corpus replay (tests/test_fuzz_corpus.c) links the fuzz targets.
+FUZZ_TARGETS := scene obj options texture
+ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) test_fuzz_corpus
 
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
@@ -62,7 +64,7 @@ OUT := out$(if $(filter 1,$(STUDENT)),-student)
 IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
-        figure-renderers figures check-figures snippets check-snippets check
+        figure-renderers figures check-figures snippets check-snippets check fuzz fuzz-build deps-fuzz
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -94,6 +96,45 @@ $(foreach c,$(CHAPTERS),$(eval $(call chapter_rules,$c)))
 $(BUILD)/tests/test_common_%: $(call objs,tests/test_common_%.c $(TEST_SUPPORT) $(COMMON_SRC))
 	@mkdir -p $(@D)
 	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+
+$(BUILD)/tests/test_fuzz_corpus: $(call objs,tests/test_fuzz_corpus.c $(TEST_SUPPORT) fuzz/support.c \
+                                  $(FUZZ_TARGETS:%=fuzz/%.c) $(COMMON_SRC))
+	@mkdir -p $(@D)
+	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+
+# ---- fuzzing: libFuzzer targets of the readers (docs/fuzzing.md) ------------------
+#
+# Each target of fuzz/ is built with clang, libFuzzer and the sanitizers (no
+# recovery) and run for FUZZ_SECONDS from its seeds in fuzz/corpus/TARGET/;
+# what it finds is saved under $(FUZZ_BUILD)/.  stb_image is compiled in, so
+# that its decoder is instrumented too.
+
+FUZZ_CC ?= clang
+FUZZ_SECONDS ?= 60
+FUZZ_BUILD ?= build-fuzz
+# What each target links besides fuzz/support.c: only the code it exercises,
+# so that its coverage counts the edges it could reach.
+FUZZ_SRC_obj := common/mesh.c common/input_file.c
+FUZZ_SRC_options := common/options.c
+FUZZ_SRC_texture := common/texture_image.c common/input_file.c fuzz/stb_image_impl.c
+FUZZ_SRC_scene := common/scene.c common/scene_xml.c $(FUZZ_SRC_obj) $(FUZZ_SRC_texture)
+FUZZ_CFLAGS := -std=c11 -Wall -Wextra -Werror -g -O1 -fno-omit-frame-pointer -ffp-contract=off -DRT_LIBFUZZER \
+               -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
+
+deps-fuzz:
+	@tools/deps.sh "$(FUZZ_CC)" fuzz
+
+define fuzz_rules
+$(FUZZ_BUILD)/fuzz_$1: fuzz/$1.c fuzz/support.c $(FUZZ_SRC_$1) $(wildcard fuzz/*.h common/*.h) | deps-fuzz
+	@mkdir -p $$(@D)
+	$$(FUZZ_CC) $$(CPPFLAGS) $$(FUZZ_CFLAGS) $$(filter %.c,$$^) -lexpat -lm -o $$@
+endef
+$(foreach t,$(FUZZ_TARGETS),$(eval $(call fuzz_rules,$t)))
+
+fuzz-build: $(FUZZ_TARGETS:%=$(FUZZ_BUILD)/fuzz_%)
+
+fuzz: fuzz-build
+	@tools/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 # ---- skeletons: the students' files, generated from the solutions ---------------
 
@@ -240,6 +281,8 @@ help:
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
 	@echo "make check           check-skeletons, check-snippets, check-figures: fail naming what is stale"
+	@echo "make fuzz            build the libFuzzer targets (clang) and fuzz each for FUZZ_SECONDS (60) seconds;"
+	@echo "                     findings go to $(FUZZ_BUILD)/ (docs/fuzzing.md)"
 	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
 	@echo "chapters: $(CHAPTERS)"
