@@ -45,7 +45,8 @@ const char *fuzz_write(const char *name, const uint8_t *data, size_t size);
 /* Whether err starts with "path:N: " with 1 <= N <= max_line. */
 bool fuzz_names_line(const char *err, const char *path, long max_line);
 
-/* The number of lines of data (a last line without newline counts). */
-long fuzz_count_lines(const uint8_t *data, size_t size);
+/* The number of lines of data (a last line without newline counts); XML
+ * also ends a line at a CR not followed by LF. */
+long fuzz_count_lines(const uint8_t *data, size_t size, bool cr_ends_lines);
 
 #endif

@@ -39,7 +39,7 @@ int fuzz_obj(const uint8_t *data, size_t size)
                "a failed load left something in the mesh");
     char no_faces[256];
     snprintf(no_faces, sizeof no_faces, "%s: the mesh has no faces", path);
-    fuzz_check(fuzz_names_line(err, path, fuzz_count_lines(data, size)) || strcmp(err, no_faces) == 0,
+    fuzz_check(fuzz_names_line(err, path, fuzz_count_lines(data, size, false)) || strcmp(err, no_faces) == 0,
                "message without path:line: '%s'", err);
     return 0;
 }

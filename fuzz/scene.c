@@ -93,7 +93,7 @@ int fuzz_scene(const uint8_t *data, size_t size)
                    !s.surfaces && !s.shaders && !s.textures && !s.lights && !s.meshes && !s.path,
                "a failed load left something in the scene");
     /* expat counts a line after the last newline too */
-    fuzz_check(fuzz_names_line(err, path, fuzz_count_lines(data, size) + 1), "message without path:line: '%s'",
+    fuzz_check(fuzz_names_line(err, path, fuzz_count_lines(data, size, true) + 1), "message without path:line: '%s'",
                err);
     return 0;
 }

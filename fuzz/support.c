@@ -83,10 +83,10 @@ bool fuzz_names_line(const char *err, const char *path, long max_line)
     return end != err + n + 1 && end[0] == ':' && end[1] == ' ' && line >= 1 && line <= max_line;
 }
 
-long fuzz_count_lines(const uint8_t *data, size_t size)
+long fuzz_count_lines(const uint8_t *data, size_t size, bool cr_ends_lines)
 {
     long lines = 0;
     for (size_t k = 0; k < size; k++)
-        lines += data[k] == '\n';
+        lines += data[k] == '\n' || (cr_ends_lines && data[k] == '\r' && (k + 1 == size || data[k + 1] != '\n'));
     return lines + (size > 0 && data[size - 1] != '\n');
 }
