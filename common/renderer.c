@@ -57,10 +57,17 @@ int renderer_main(const renderer *r, int argc, char **argv)
         fprintf(stderr, "%s: out of memory for a %dx%d image\n", r->name, width, height);
     } else {
         render_stats stats = render_image(&img, r->sample, prepared, &opt);
-        if (png_write(&img, desc.exposure, output, err, sizeof err) != 0) {
+        if (stats.nonfinite > 0 && opt.nonfinite == NONFINITE_FAIL) {
+            fprintf(stderr, "%s: %llu samples were NaN or infinite (--nonfinite=fail): no image written\n", r->name,
+                    (unsigned long long)stats.nonfinite);
+            status = 3;
+        } else if (png_write(&img, desc.exposure, output, err, sizeof err) != 0) {
             fprintf(stderr, "%s: %s\n", r->name, err);
         } else {
             render_summary(stderr, r->name, &img, &opt, stats, output);
+            if (stats.nonfinite > 0 && opt.quiet) /* without -q, the summary line says it */
+                fprintf(stderr, "%s: %llu samples were NaN or infinite (see --nonfinite)\n", r->name,
+                        (unsigned long long)stats.nonfinite);
             status = 0;
         }
         image_free(&img);

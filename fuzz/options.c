@@ -25,7 +25,7 @@ static bool same(const render_options *a, const render_options *b)
 {
     return a->scene_path == b->scene_path && a->output == b->output && a->width == b->width &&
            a->height == b->height && a->samples == b->samples && a->threads == b->threads && a->seed == b->seed &&
-           a->quiet == b->quiet;
+           a->quiet == b->quiet && a->nonfinite == b->nonfinite;
 }
 
 static options_result parse(int argc, char **argv, render_options *opt, char *messages, size_t messages_size)
@@ -77,6 +77,9 @@ int fuzz_options(const uint8_t *data, size_t size)
                    "size %d x %d", opt.width, opt.height);
         fuzz_check(opt.threads >= 0 && opt.threads <= 1024, "threads %d", opt.threads);
         fuzz_check(choice >= 0 && choice <= 2, "choice %d", choice);
+        fuzz_check(opt.nonfinite == NONFINITE_DROP || opt.nonfinite == NONFINITE_SHOW ||
+                       opt.nonfinite == NONFINITE_FAIL,
+                   "nonfinite mode %d", (int)opt.nonfinite);
         fuzz_check(amount == amount, "a real knob is NaN");
         bool found = !opt.scene_path;
         for (int k = 1; k < argc && !found; k++)
