@@ -52,8 +52,10 @@ int renderer_main(const renderer *r, int argc, char **argv)
     snprintf(fallback, sizeof fallback, "%s.png", r->name);
     const char *output = options_output(&opt, fallback);
     int status = 1;
-    image img;
-    if (image_init(&img, width, height) != 0) {
+    image img = {0};
+    if (png_check_output(output, err, sizeof err) != 0) { /* before rendering, not after */
+        fprintf(stderr, "%s: %s\n", r->name, err);
+    } else if (image_init(&img, width, height) != 0) {
         fprintf(stderr, "%s: out of memory for a %dx%d image\n", r->name, width, height);
     } else {
         render_stats stats = render_image(&img, r->sample, prepared, &opt);
