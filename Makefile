@@ -28,7 +28,7 @@ BUILD ?= build$(variant)
 
 CPPFLAGS := -D_POSIX_C_SOURCE=200809L -I common -I chapters -I tests -I /usr/include/stb \
             $(if $(filter float,$(REAL)),-DRT_REAL_FLOAT)
-SANITIZERS := -fsanitize=address -fsanitize=undefined
+SANITIZERS := -fsanitize=address -fsanitize=undefined -fsanitize=float-cast-overflow
 CFLAGS := -std=c11 -Wall -Wextra -Wpedantic -Werror -ffp-contract=off -fopenmp $(OPT) -MMD -MP \
           $(if $(filter 1,$(SANITIZE)),$(SANITIZERS) -fno-sanitize-recover=all -fno-omit-frame-pointer)
 LDFLAGS := -fopenmp $(if $(filter 1,$(SANITIZE)),$(SANITIZERS))
@@ -64,7 +64,7 @@ OUT := out$(if $(filter 1,$(STUDENT)),-student)
 IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
-        figure-renderers figures check-figures snippets check-snippets check fuzz fuzz-build deps-fuzz
+        figure-renderers figures check-figures snippets check-snippets check fuzz fuzz-build deps-fuzz test-extremes
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -252,13 +252,21 @@ check: check-skeletons check-snippets check-figures
 test-suites: $(TEST_BINS)
 	@tools/run-tests.sh $(BUILD)/test-results.txt $(TEST_BINS)
 
-# The double build, the float build and the sanitizer build, then the checks
+# Every renderer of this build over the scenes at the extremes, the chapters'
+# own and the Cornell corpus's: no NaN or infinite sample, no crash, and (in
+# the sanitizer build) no undefined behaviour.
+test-extremes: renderers
+	@tools/extremes.sh $(BUILD)
+
+# The double build, the float build and the sanitizer build (with the
+# renders at the extremes and the fuzz corpus replay), then the checks
 # that text, skeletons and figures match their sources.
 test:
 	@rm -f build*/test-results.txt
 	$(MAKE) --no-print-directory test-suites
 	$(MAKE) --no-print-directory REAL=float BUILD=$(BUILD)-float test-suites
 	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-suites
+	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-extremes
 	@tools/sum-results.sh $(BUILD) $(BUILD)-float $(BUILD)-asan
 	$(MAKE) --no-print-directory check
 
@@ -268,6 +276,7 @@ help:
 	@echo "make                 build every chapter and render its built-in scene into out/"
 	@echo "make STUDENT=1       the same from the student's files in chapters/ (into build-student/)"
 	@echo "make test            all suites: double, float (REAL=float) and sanitizer builds, then make check"
+	@echo "make test-extremes   every renderer over tests/extremes/ and the other scenes, failing on NaN"
 	@echo "make renderers       build every chapter's renderer into $(BUILD)/NN_name/render"
 	@echo "make tests           build the test suites of this build"
 	@echo "make test-suites     run the suites of this build only"

@@ -100,6 +100,21 @@ static void test_ray_at(void **state)
     assert_vec3_close(ray_at(r, 3), ray_at(r2, (real)1.5), 0);
 }
 
+/* The parity of whole numbers without converting them to an integer type. */
+static void test_parity_is_range_safe(void **state)
+{
+    (void)state;
+    assert_true(real_is_odd(7));
+    assert_true(real_is_odd(-3));
+    assert_false(real_is_odd(0));
+    assert_false(real_is_odd(-8));
+    assert_true(real_is_odd(real_pow(2, 20) + 1)); /* exact in float too */
+    assert_false(real_is_odd((real)1e19));  /* beyond 2^63: even, with no undefined conversion */
+    assert_false(real_is_odd(-REAL_MAX));
+    assert_false(real_is_odd(REAL_INFINITY));
+    assert_false(real_is_odd((real)NAN));
+}
+
 static const graded_test tests[] = {
     GRADED(test_right_handed_axes, 0),
     GRADED(test_cross_is_perpendicular_and_anticommutative, 0),
@@ -108,5 +123,6 @@ static const graded_test tests[] = {
     GRADED(test_normalize_gives_unit_length, 0),
     GRADED(test_add_sub_scale_mul, 0),
     GRADED(test_ray_at, 0),
+    GRADED(test_parity_is_range_safe, 0),
 };
 SUITE_MAIN("common_vec", tests)
