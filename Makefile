@@ -53,9 +53,10 @@ TEST_SUPPORT := tests/suite.c
 # Suites of common/ link common/ only; a chapter's suite links its stages.
 COMMON_TESTS := $(sort $(basename $(notdir $(wildcard tests/test_common_*.c))))
 CHAPTER_TESTS := $(foreach c,$(CHAPTERS),$(if $(wildcard tests/test_$c.c),test_$c))
-# The fuzz corpus replay (tests/test_fuzz_corpus.c) links the fuzz targets.
+# The fuzz corpus replay (tests/test_fuzz_corpus.c) links the fuzz targets of
+# fuzz/ (a copy of the project without fuzz/ has no replay).
 FUZZ_TARGETS := scene obj options texture
-ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) test_fuzz_corpus
+ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(if $(wildcard fuzz/fuzz.h),test_fuzz_corpus)
 
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
