@@ -103,6 +103,11 @@ $(BUILD)/tests/test_fuzz_corpus: $(call objs,tests/test_fuzz_corpus.c $(TEST_SUP
 	@mkdir -p $(@D)
 	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 
+# Any build's replay driver: `$(BUILD)/fuzz/replay scene FILE...` (docs/fuzzing.md).
+$(BUILD)/fuzz/replay: $(call objs,fuzz/replay.c fuzz/support.c $(FUZZ_TARGETS:%=fuzz/%.c) $(COMMON_SRC))
+	@mkdir -p $(@D)
+	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+
 # ---- fuzzing: libFuzzer targets of the readers (docs/fuzzing.md) ------------------
 #
 # Each target of fuzz/ is built with clang, libFuzzer and the sanitizers (no
