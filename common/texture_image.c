@@ -1,6 +1,7 @@
 #include "texture_image.h"
 
 #include <limits.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,10 +19,12 @@ static uint32_t big_endian32(const unsigned char *p)
 /* Walks the PNG's chunks (length, type, data, CRC) up to IEND.  Returns NULL
  * when each fits in the file, else what is wrong.  stb_image 2.27 trusts a
  * chunk's length: a 100-byte file whose IDAT claims 1.6 GB makes it allocate
- * that much (found by fuzz/texture.c). */
+ * that much, and an empty first IDAT makes it add 0 to a null pointer,
+ * undefined behaviour (both found by fuzz/texture.c). */
 static const char *png_chunks_problem(const unsigned char *bytes, size_t size, char *problem, size_t problem_size)
 {
     size_t offset = 8;
+    bool seen_data = false;
     while (size - offset >= 12) {
         uint32_t length = big_endian32(bytes + offset);
         if (length > size - offset - 12) {
@@ -31,6 +34,13 @@ static const char *png_chunks_problem(const unsigned char *bytes, size_t size, c
         }
         if (memcmp(bytes + offset + 4, "IEND", 4) == 0)
             return NULL;
+        if (memcmp(bytes + offset + 4, "IDAT", 4) == 0) {
+            if (length == 0 && !seen_data) {
+                snprintf(problem, problem_size, "the image is broken: its first IDAT chunk is empty");
+                return problem;
+            }
+            seen_data = true;
+        }
         offset += 12 + (size_t)length;
     }
     snprintf(problem, problem_size, "the image is broken: it ends before its IEND chunk (cut short?)");
