@@ -9,7 +9,7 @@
 # and is rendered by the chapter's renderer of the REAL (double or float)
 # build, BUILD/NN_name/render or BUILD-float/NN_name/render, as
 #
-#     render -q -o docs/figures/OUTPUT.png ARGS...
+#     render -q --nonfinite=fail -o docs/figures/OUTPUT.png ARGS...
 #
 # @CORNELL@ in ARGS is the Cornell corpus folder; a figure that needs it is
 # skipped, with a note, when the folder is absent.  An OUTPUT named @NAME.png
@@ -140,7 +140,7 @@ for list in "$@"; do
             @*) target=$scratch/${name#@} ;;
             *) target=$out/$name ;;
         esac
-        if ! "$renderer" -q -o "$target" "$@" </dev/null; then
+        if ! "$renderer" -q --nonfinite=fail -o "$target" "$@" </dev/null; then
             echo "$list:$lineno: $renderer failed to render $name" >&2
             status=1
             continue
