@@ -49,7 +49,7 @@ stage_src = $(foreach f,$(sort $(filter-out %/render.c,$(wildcard chapters/$1/*.
 stages_upto = $(foreach c,$(call upto,$1),$(call stage_src,$c,$(STUDENT)))
 objs = $(patsubst %.c,$(BUILD)/obj/%.o,$1)
 
-TEST_SUPPORT := tests/suite.c
+TEST_SUPPORT := tests/suite.c tests/image_compare.c
 # Suites of common/ link common/ only; a chapter's suite links its stages.
 COMMON_TESTS := $(sort $(basename $(notdir $(wildcard tests/test_common_*.c))))
 CHAPTER_TESTS := $(foreach c,$(CHAPTERS),$(if $(wildcard tests/test_$c.c),test_$c))
