@@ -178,7 +178,8 @@ FIGURE_LISTS := $(sort $(wildcard chapters/$(if $(CHAPTER),$(CHAPTER:%_=%)*,[0-9
 # build (FIG_BUILD) and its float twin (FIG_BUILD-float).
 FIG_BUILD ?= $(if $(filter command line environment,$(origin BUILD)),$(BUILD),build$(compiler))
 # "double/01_camera_rays" for each renderer a figure needs.
-FIG_NEEDS := $(if $(FIGURE_LISTS),$(shell awk 'NF >= 2 && $$1 !~ /^\#/ { n = split(FILENAME, p, "/"); print $$2 "/" p[n - 1] }' $(FIGURE_LISTS) | sort -u))
+# A gnuplot line (a plot) may run both builds of its chapter.
+FIG_NEEDS := $(if $(FIGURE_LISTS),$(shell awk 'NF >= 2 && $$1 !~ /^\#/ { n = split(FILENAME, p, "/"); if ($$2 == "gnuplot") { print "double/" p[n - 1]; print "float/" p[n - 1] } else print $$2 "/" p[n - 1] }' $(FIGURE_LISTS) | sort -u))
 FIG_DOUBLE := $(patsubst double/%,$(FIG_BUILD)/%/render,$(filter double/%,$(FIG_NEEDS)))
 FIG_FLOAT := $(patsubst float/%,$(FIG_BUILD)-float/%/render,$(filter float/%,$(FIG_NEEDS)))
 

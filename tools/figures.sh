@@ -11,6 +11,12 @@
 #
 #     render -q -o docs/figures/OUTPUT.png ARGS...
 #
+# A plot is the line `OUTPUT.png gnuplot SCRIPT.gp`, drawn as
+#
+#     gnuplot -e "output='docs/figures/OUTPUT.png'; build='BUILD'" SCRIPT.gp
+#
+# (the script may run the renderers of BUILD and BUILD-float for its data).
+#
 # @CORNELL@ in ARGS is the Cornell corpus folder; a figure that needs it is
 # skipped, with a note, when the folder is absent.  `render` writes into
 # docs/figures/; `check` renders into a temporary folder and fails naming
@@ -45,7 +51,8 @@ for list in "$@"; do
         case "$real" in
             double) renderer=$build/$chapter/render ;;
             float) renderer=$build-float/$chapter/render ;;
-            *) echo "$list:$lineno: the build must be double or float, not '$real'" >&2; status=1; continue ;;
+            gnuplot) renderer=gnuplot ;;
+            *) echo "$list:$lineno: the build must be double, float or gnuplot, not '$real'" >&2; status=1; continue ;;
         esac
         case "$name" in
             *.png) ;;
@@ -68,7 +75,13 @@ for list in "$@"; do
             set -- "$@" "$expanded"
         done
         [ "$first" = 1 ] && set --
-        if ! "$renderer" -q -o "$out/$name" "$@" </dev/null; then
+        if [ "$real" = gnuplot ]; then
+            if ! gnuplot -e "output='$out/$name'; build='$build'" "$@" </dev/null; then
+                echo "$list:$lineno: gnuplot failed to draw $name" >&2
+                status=1
+                continue
+            fi
+        elif ! "$renderer" -q -o "$out/$name" "$@" </dev/null; then
             echo "$list:$lineno: $renderer failed to render $name" >&2
             status=1
             continue
