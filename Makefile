@@ -53,7 +53,9 @@ TEST_SUPPORT := tests/suite.c tests/image_compare.c
 # Suites of common/ link common/ only; a chapter's suite links its stages.
 COMMON_TESTS := $(sort $(basename $(notdir $(wildcard tests/test_common_*.c))))
 CHAPTER_TESTS := $(foreach c,$(CHAPTERS),$(if $(wildcard tests/test_$c.c),test_$c))
-ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS)
+# Cross-chapter suites (the course's scenes) link every chapter and are not graded.
+CROSS_TESTS := $(if $(wildcard tests/test_scenes.c),test_scenes)
+ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS)
 
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
@@ -90,6 +92,10 @@ $(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call stage
 	$$(CC) $$(LDFLAGS) $$^ $$(LDLIBS) -lcmocka -o $$@
 endef
 $(foreach c,$(CHAPTERS),$(eval $(call chapter_rules,$c)))
+
+$(BUILD)/tests/test_scenes: $(call objs,tests/test_scenes.c $(TEST_SUPPORT) $(call stages_upto,$(lastword $(CHAPTERS))) $(COMMON_SRC))
+	@mkdir -p $(@D)
+	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 
 $(BUILD)/tests/test_common_%: $(call objs,tests/test_common_%.c $(TEST_SUPPORT) $(COMMON_SRC))
 	@mkdir -p $(@D)
