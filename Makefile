@@ -68,14 +68,16 @@ comma := ,
 link = $(CC) $(LDFLAGS) $(filter %.o,$1) $(if $(filter %.a,$1),-Wl$(comma)--whole-archive $(filter %.a,$1) -Wl$(comma)--no-whole-archive) $(LDLIBS)
 objs = $(patsubst %.c,$(BUILD)/obj/%.o,$1)
 
-TEST_SUPPORT := tests/suite.c
+TEST_SUPPORT := tests/suite.c tests/image_compare.c
 # Suites of common/ link common/ only; a chapter's suite links its stages.
 COMMON_TESTS := $(sort $(basename $(notdir $(wildcard tests/test_common_*.c))))
 CHAPTER_TESTS := $(foreach c,$(CHAPTERS),$(if $(wildcard tests/test_$c.c),test_$c))
 # The fuzz corpus replay (tests/test_fuzz_corpus.c) links the fuzz targets of
 # fuzz/ (a copy of the project without fuzz/ has no replay).
 FUZZ_TARGETS := scene obj options texture
-ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(if $(wildcard fuzz/fuzz.h),test_fuzz_corpus)
+# Cross-chapter suites (the course's scenes) link every chapter and are not graded.
+CROSS_TESTS := $(if $(wildcard tests/test_scenes.c),test_scenes)
+ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS) $(if $(wildcard fuzz/fuzz.h),test_fuzz_corpus)
 
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
@@ -122,6 +124,10 @@ $(BUILD)/reference/lib$1.a: $(call objs,$(addprefix solutions/$1/,$(EXERCISES_$1
 	rm -f $$@ && ar rcs $$@ $$^
 endef
 $(foreach c,$(CHAPTERS),$(eval $(call chapter_rules,$c)))
+
+$(BUILD)/tests/test_scenes: $(call objs,tests/test_scenes.c $(TEST_SUPPORT) $(call stages_upto,$(lastword $(CHAPTERS))) $(COMMON_SRC))
+	@mkdir -p $(@D)
+	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 
 $(BUILD)/tests/test_common_%: $(call objs,tests/test_common_%.c $(TEST_SUPPORT) $(COMMON_SRC))
 	@mkdir -p $(@D)
@@ -306,7 +312,8 @@ FIGURE_LISTS := $(sort $(wildcard chapters/$(if $(CHAPTER),$(CHAPTER:%_=%)*,[0-9
 # build (FIG_BUILD) and its float twin (FIG_BUILD-float).
 FIG_BUILD ?= $(if $(filter command line environment,$(origin BUILD)),$(BUILD),build$(compiler))
 # "double/01_camera_rays" for each renderer a figure needs.
-FIG_NEEDS := $(if $(FIGURE_LISTS),$(shell awk 'NF >= 2 && $$1 !~ /^\#/ { n = split(FILENAME, p, "/"); print $$2 "/" p[n - 1] }' $(FIGURE_LISTS) | sort -u))
+# A gnuplot line (a plot) may run both builds of its chapter.
+FIG_NEEDS := $(if $(FIGURE_LISTS),$(shell awk 'NF >= 2 && $$1 !~ /^\#/ { n = split(FILENAME, p, "/"); if ($$2 == "gnuplot") { print "double/" p[n - 1]; print "float/" p[n - 1] } else print $$2 "/" p[n - 1] }' $(FIGURE_LISTS) | sort -u))
 FIG_DOUBLE := $(patsubst double/%,$(FIG_BUILD)/%/render,$(filter double/%,$(FIG_NEEDS)))
 FIG_FLOAT := $(patsubst float/%,$(FIG_BUILD)-float/%/render,$(filter float/%,$(FIG_NEEDS)))
 

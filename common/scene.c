@@ -74,6 +74,8 @@ unsigned scene_features(const scene *s)
     }
     if (s->n_lights > 0)
         used |= FEATURE_LIGHTS | FEATURE_SHADOWS;
+    if (s->n_lights > 1)
+        used |= FEATURE_MANY_LIGHTS;
     if (nonzero(s->ambient))
         used |= FEATURE_AMBIENT;
     return used;
@@ -94,6 +96,7 @@ void scene_ignored_features(unsigned used, unsigned modelled, char *out, size_t 
         {FEATURE_RGB_NORMALS, "RGBNormals", "04"},
         {FEATURE_LIGHTS, "lights", "05"},
         {FEATURE_SHADOWS, "shadows", "06"},
+        {FEATURE_MANY_LIGHTS, "lights after the first", "07"},
         {FEATURE_PHONG, "Phong highlights", "07"},
         {FEATURE_AMBIENT, "ambient", "07"},
         {FEATURE_MIRRORS, "mirrors", "08"},
@@ -106,6 +109,8 @@ void scene_ignored_features(unsigned used, unsigned modelled, char *out, size_t 
     for (size_t k = 0; k < sizeof names / sizeof names[0]; k++) {
         if (!(used & names[k].feature) || (modelled & names[k].feature))
             continue;
+        if (names[k].feature == FEATURE_MANY_LIGHTS && !(modelled & FEATURE_LIGHTS))
+            continue; /* "lights" already says it */
         int n = snprintf(out + len, out_size - len, "%s%s (chapter %s)", len ? ", " : "ignores: ", names[k].name,
                          names[k].chapter);
         if (n < 0 || (size_t)n >= out_size - len)

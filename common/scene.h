@@ -121,6 +121,7 @@ typedef enum {
     FEATURE_RGB_NORMALS = 1 << 11,
     FEATURE_SHADERS = 1 << 12, /* any shader colour at all */
     FEATURE_SHADOWS = 1 << 13, /* every scene with lights casts shadows */
+    FEATURE_MANY_LIGHTS = 1 << 14, /* more than one light (05 and 06 shade with the first) */
 } scene_feature;
 
 unsigned scene_features(const scene *s);

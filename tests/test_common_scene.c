@@ -172,7 +172,7 @@ static void test_full_scene_values(void **state)
     /* "shiny" (Phong, textured) is used by no surface: its features do not count */
     unsigned all = FEATURE_SPHERES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_TRIANGLES | FEATURE_LIGHTS |
                    FEATURE_SHADOWS | FEATURE_AMBIENT | FEATURE_MIRRORS | FEATURE_GLASS | FEATURE_VERTEX_NORMALS |
-                   FEATURE_RGB_NORMALS | FEATURE_SHADERS;
+                   FEATURE_RGB_NORMALS | FEATURE_SHADERS | FEATURE_MANY_LIGHTS;
     assert_int_equal(all, f);
     char ignored[512];
     scene_ignored_features(f, all & ~(FEATURE_GLASS | FEATURE_MIRRORS), ignored, sizeof ignored);

@@ -62,6 +62,7 @@ else
     esac
 fi
 command -v timeout >/dev/null 2>&1 || missing="$missing coreutils"
+command -v gnuplot >/dev/null 2>&1 || missing="$missing gnuplot-nox" # the plots of make figures
 
 [ -z "$missing" ] && exit 0
 

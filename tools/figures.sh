@@ -11,6 +11,12 @@
 #
 #     render -q --nonfinite=fail -o docs/figures/OUTPUT.png ARGS...
 #
+# A plot is the line `OUTPUT.png gnuplot SCRIPT.gp`, drawn as
+#
+#     gnuplot -e "output='docs/figures/OUTPUT.png'; build='BUILD'" SCRIPT.gp
+#
+# (the script may run the renderers of BUILD and BUILD-float for its data).
+#
 # @CORNELL@ in ARGS is the Cornell corpus folder; a figure that needs it is
 # skipped, with a note, when the folder is absent.  An OUTPUT named @NAME.png
 # is a panel: rendered into a scratch folder for the lines below, not kept.
@@ -113,7 +119,8 @@ for list in "$@"; do
         case "$real" in
             double) renderer=$build/$chapter/render ;;
             float) renderer=$build-float/$chapter/render ;;
-            *) echo "$list:$lineno: the build must be double or float, not '$real'" >&2; status=1; continue ;;
+            gnuplot) renderer=gnuplot ;;
+            *) echo "$list:$lineno: the build must be double, float or gnuplot, not '$real'" >&2; status=1; continue ;;
         esac
         case "$name" in
             *.png) ;;
@@ -140,7 +147,13 @@ for list in "$@"; do
             @*) target=$scratch/${name#@} ;;
             *) target=$out/$name ;;
         esac
-        if ! "$renderer" -q --nonfinite=fail -o "$target" "$@" </dev/null; then
+        if [ "$real" = gnuplot ]; then
+            if ! gnuplot -e "output='$target'; build='$build'" "$@" </dev/null; then
+                echo "$list:$lineno: gnuplot failed to draw $name" >&2
+                status=1
+                continue
+            fi
+        elif ! "$renderer" -q --nonfinite=fail -o "$target" "$@" </dev/null; then
             echo "$list:$lineno: $renderer failed to render $name" >&2
             status=1
             continue

@@ -1,0 +1,114 @@
+/* shading_stage.c - chapter 05: the renderer that every shading chapter shares. */
+#include "05_lambert/shading_stage.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "04_many_shapes/scene_surfaces.h"
+#include "05_lambert/shading_scene.h"
+#include "renderer.h"
+
+int hit_query_linear(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
+{
+    (void)desc;
+    (void)err;
+    (void)err_size;
+    *q = (hit_query){.closest_hit = closest_hit_linear, .accel = list};
+    return 0;
+}
+
+void shading_release(shading_view *view)
+{
+    if (!view)
+        return;
+    if (view->query.release)
+        view->query.release(view->query.owned);
+    surface_list_free(&view->list);
+    free(view);
+}
+
+shading_view *shading_prepare(const shading_stage *stage, const scene *desc, sphere_formula formula,
+                              triangle_test test, char *err, size_t err_size)
+{
+    shading_view *view = calloc(1, sizeof *view);
+    if (!view) {
+        snprintf(err, err_size, "%s: out of memory", desc->path ? desc->path : "built-in scene");
+        return NULL;
+    }
+    surface_list_init(&view->list, formula, test);
+    build_query_fn build = stage->build_query ? stage->build_query : hit_query_linear;
+    if (!camera_from_scene(&view->cam, desc, err, err_size) ||
+        surface_list_from_scene(&view->list, desc, err, err_size) != 0 ||
+        build(&view->list, desc, &view->query, err, err_size) != 0) {
+        shading_release(view);
+        return NULL;
+    }
+    view->tr = (tracer){
+        .closest_hit = view->query.closest_hit,
+        .accel = view->query.accel,
+        .desc = desc,
+        .shade = stage->shade,
+        .knobs = stage->shade_knobs,
+    };
+    return view;
+}
+
+/* snippet: shading_sample */
+color shading_sample(const void *view, real u, real v, uint64_t *rays)
+{
+    const shading_view *sv = view;
+    ++rays[RAY_EYE];
+    /* Eye rays start at the eye: every hit with t > 0 is in front of it. */
+    return trace(&sv->tr, camera_ray(&sv->cam, u, v), 0, REAL_INFINITY, 0, rays);
+}
+/* end snippet */
+
+/* ---- the renderer: renderer.h's callbacks take no context, so the stage
+ * being run and the knobs of chapters 02-03 are kept here. */
+
+static const shading_stage *current;
+static const char *const sphere_choices[] = {"robust", "textbook", NULL};
+static const sphere_formula sphere_formulas[] = {SPHERE_ROBUST, SPHERE_TEXTBOOK};
+static int sphere_choice = 0;
+static const char *const triangle_choices[] = {"cramer", "watertight", NULL};
+static const triangle_test triangle_tests[] = {TRIANGLE_CRAMER, TRIANGLE_WATERTIGHT};
+static int triangle_choice = 1; /* crack-free from chapter 04 on */
+
+static void *prepare(const scene *desc, char *err, size_t err_size)
+{
+    return shading_prepare(current, desc, sphere_formulas[sphere_choice], triangle_tests[triangle_choice], err,
+                           err_size);
+}
+
+static void release(void *view) { shading_release(view); }
+
+#define MAX_STAGE_KNOBS 14
+
+int shading_main(const shading_stage *stage, int argc, char **argv)
+{
+    knob knobs[2 + MAX_STAGE_KNOBS] = {
+        {"sphere", KNOB_CHOICE, &sphere_choice, sphere_choices, "ray-sphere formula (chapter 02)"},
+        {"triangle", KNOB_CHOICE, &triangle_choice, triangle_choices, "ray-triangle test (chapter 03)"},
+    };
+    if (stage->n_knobs > MAX_STAGE_KNOBS) {
+        fprintf(stderr, "%s: too many knobs (%d > %d)\n", stage->name, stage->n_knobs, MAX_STAGE_KNOBS);
+        return 2;
+    }
+    for (int k = 0; k < stage->n_knobs; k++)
+        knobs[2 + k] = stage->knobs[k];
+    current = stage;
+    const renderer r = {
+        .name = stage->name,
+        .summary = stage->summary,
+        .knobs = knobs,
+        .n_knobs = 2 + stage->n_knobs,
+        .modelled = stage->modelled,
+        .default_width = 512,
+        .default_height = 512,
+        .builtin = stage->builtin ? stage->builtin : shading_scene,
+        .prepare = prepare,
+        .sample = shading_sample,
+        .release = release,
+    };
+    return renderer_main(&r, argc, argv);
+}

@@ -1,0 +1,75 @@
+/* shading_stage.h - chapter 05: the renderer that every shading chapter shares.
+ *
+ * Chapters 05-11 render the same way and differ in what they shade with: the
+ * camera (chapter 01) casts one eye ray per sample, the tracer (tracer.h)
+ * finds its closest hit and calls the stage's shade function.  A chapter's
+ * render.c describes its stage in a `shading_stage` (name, knobs, shade
+ * function, and optionally how the closest-hit query is built) and calls
+ * shading_main(); the camera, the surface list, the lights and the knobs of
+ * chapters 02-04 (--sphere, --triangle) are set up here, once.
+ */
+#ifndef CH05_SHADING_STAGE_H
+#define CH05_SHADING_STAGE_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "01_camera_rays/camera.h"
+#include "05_lambert/tracer.h"
+#include "options.h"
+#include "scene.h"
+
+/* snippet: hit_query */
+/* The closest-hit query of a prepared scene and what it owns. */
+typedef struct {
+    closest_hit_fn closest_hit;
+    const void *accel;
+    void *owned;                  /* freed by release (NULL: nothing to free) */
+    void (*release)(void *owned);
+} hit_query;
+
+/* Builds the query over the scene's surface list (which outlives it).
+ * Returns 0, or -1 with "path: problem" in err. */
+typedef int (*build_query_fn)(const surface_list *list, const scene *desc, hit_query *q, char *err,
+                              size_t err_size);
+/* end snippet */
+
+/* The linear scan of chapter 04 over the list: a build_query_fn. */
+int hit_query_linear(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
+
+/* snippet: shading_stage */
+typedef struct {
+    const char *name;    /* "05_lambert": the default output is name.png */
+    const char *summary; /* first line of --help */
+    const knob *knobs;   /* the stage's own knobs, listed after --sphere and --triangle */
+    int n_knobs;
+    unsigned modelled;   /* the scene_features the stage models */
+    shade_fn shade;
+    const void *shade_knobs; /* becomes tracer.knobs; the knobs' targets live in it */
+    build_query_fn build_query; /* NULL: hit_query_linear */
+    int (*builtin)(scene *desc); /* NULL: the shared built-in scene (shading_scene.h) */
+} shading_stage;
+/* end snippet */
+
+/* The renderer's main(): options, scene, render, PNG, summary (renderer.h). */
+int shading_main(const shading_stage *stage, int argc, char **argv);
+
+/* What a shading renderer traces: everything trace() needs for one scene. */
+typedef struct {
+    camera cam;
+    surface_list list;
+    hit_query query;
+    tracer tr;
+} shading_view;
+
+/* Prepares desc for rendering with stage's shading and the given chapter
+ * 02/03 knobs.  NULL with "path:line: problem" in err when it cannot be
+ * rendered.  desc must outlive the view. */
+shading_view *shading_prepare(const shading_stage *stage, const scene *desc, sphere_formula formula,
+                              triangle_test test, char *err, size_t err_size);
+/* A sample_fn (render_loop.h): the eye ray through (u, v), counted as
+ * RAY_EYE, traced from t = 0 (the eye) on. */
+color shading_sample(const void *view, real u, real v, uint64_t *rays);
+void shading_release(shading_view *view);
+
+#endif

@@ -1,0 +1,45 @@
+/* tracer.c - chapter 05: the lecture's Scene.trace over any closest-hit query. */
+#include "05_lambert/tracer.h"
+
+#include "04_many_shapes/closest_hit.h"
+
+bool closest_hit_linear(const void *accel, ray r, real t_min, real t_max, hit_record *hit)
+{
+    return surfaces_intersect(accel, r, t_min, t_max, hit);
+}
+
+/* snippet: normal_towards_viewer */
+vec3 normal_towards_viewer(vec3 n, vec3 d)
+{
+    /* The viewer is at -d from the point: n faces it when n . (-d) > 0. */
+    return vec3_dot(n, d) < 0 ? n : vec3_neg(n);
+}
+/* end snippet */
+
+const scene_shader *hit_shader(const scene *desc, const hit_record *hit)
+{
+    /* SCENES.md: a surface without a shader is white Lambertian (the
+     * defaults of scene_default_shader). */
+    static const scene_shader white = {
+        .kind = SHADER_LAMBERTIAN,
+        .diffuse_color = {1, 1, 1},
+        .specular_color = {1, 1, 1},
+        .exponent = 1,
+        .refractive_index = (real)1.5,
+        .texture = -1,
+    };
+    return hit->shader >= 0 ? &desc->shaders[hit->shader] : &white;
+}
+
+/* snippet: trace */
+color trace(const tracer *tr, ray r, real t_min, real t_max, int depth, uint64_t *rays)
+{
+    hit_record hit;
+    if (!tr->closest_hit(tr->accel, r, t_min, t_max, &hit))
+        return tr->desc->back_color;
+    shading_point sp = {.r = r, .hit = hit};
+    sp.v = vec3_neg(vec3_normalize(r.d));           /* v = -normalize(ray.direction) */
+    sp.n = normal_towards_viewer(hit.normal, r.d); /* the normal, turned to face v */
+    return tr->shade(tr, &sp, depth, rays);
+}
+/* end snippet */

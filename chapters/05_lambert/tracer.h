@@ -1,0 +1,93 @@
+/* tracer.h - chapter 05: what every shading stage (05-11) traces with.
+ *
+ * The lecture's Scene.trace of the "image so far" slides:
+ *
+ *     Scene.trace(Ray ray, tMin, tMax)
+ *         surface, t = hit(ray, tMin, tMax)
+ *         if surface is not null
+ *             point = ray.evaluate(t); normal = surface.getNormal(point)
+ *             return surface.shade(ray, point, normal, light)
+ *         else return backgroundColor
+ *
+ * A `tracer` holds the pieces that sentence names: the question "what does
+ * this ray hit first?" (one function value and the structure it searches),
+ * the scene description (shaders, lights, backColor, ambient), the shade
+ * function of the stage, and the stage's knobs.  Every shading chapter
+ * changes one of these pieces and nothing else:
+ *   05 Lambert, 06 shadows, 07 Blinn-Phong: the shade function and its knobs;
+ *   08 mirrors, 09 refraction: shade functions that call trace() again, one
+ *      level deeper (depth);
+ *   10 interpolation: a shade function that replaces the shading normal n and
+ *      then calls the earlier shade;
+ *   11 the grid: the closest-hit function and its structure, one assignment.
+ * No shading code calls chapter 04's surfaces_intersect by name.
+ */
+#ifndef CH05_TRACER_H
+#define CH05_TRACER_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#include "04_many_shapes/surface.h"
+#include "color.h"
+#include "render_loop.h"
+#include "ray.h"
+#include "scene.h"
+
+/* snippet: closest_hit_fn */
+/* "What does this ray hit first?": the hit with the smallest t in
+ * (t_min, t_max) in the structure `accel`; false when there is none.  Chapter
+ * 04's linear scan (closest_hit_linear) and chapter 11's grid both fit it. */
+typedef bool (*closest_hit_fn)(const void *accel, ray r, real t_min, real t_max, hit_record *hit);
+/* end snippet */
+
+/* surfaces_intersect of chapter 04 as a closest_hit_fn; accel is a surface_list. */
+bool closest_hit_linear(const void *accel, ray r, real t_min, real t_max, hit_record *hit);
+
+/* snippet: shading_point */
+/* What a shade function is given: the lecture's (ray, point, normal). */
+typedef struct {
+    ray r;          /* the ray that found the point */
+    hit_record hit; /* the geometry: t, point = p + t d, the GEOMETRIC unit normal hit.normal
+                     * (not turned: it decides sidedness and where secondary rays start),
+                     * which surface and shader, a triangle's beta and gamma */
+    vec3 n;         /* the SHADING normal: unit, turned towards the viewer (n . v >= 0);
+                     * the geometric one here, an interpolated one from chapter 10 on */
+    vec3 v;         /* unit vector from the point towards the viewer: -normalize(d) */
+} shading_point;
+/* end snippet */
+
+typedef struct tracer tracer;
+
+/* The stage's shading: the radiance leaving sp's point towards the viewer.
+ * depth is the number of bounces that led here (0 for an eye ray); `rays`
+ * points at the RAY_KINDS counters of render_loop.h, and a shade function adds
+ * every ray it casts (++rays[RAY_SHADOW] per shadow ray). */
+typedef color (*shade_fn)(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays);
+
+/* snippet: tracer */
+struct tracer {
+    closest_hit_fn closest_hit; /* the "what does this ray hit first?" query ... */
+    const void *accel;          /* ... and what it searches (a surface_list, a grid) */
+    const scene *desc;          /* shaders, lights, backColor, ambient */
+    shade_fn shade;             /* the stage's shading */
+    const void *knobs;          /* the stage's knobs; each stage's knob struct begins with
+                                 * the one of the stage it builds on (NULL for chapter 05) */
+};
+/* end snippet */
+
+/* The lecture's Scene.trace: the closest hit of r in (t_min, t_max) shaded
+ * by tr->shade, or the scene's backColor when r hits nothing.  trace() does
+ * not count r: its caller counts the ray by its kind (eye, reflected, ...). */
+color trace(const tracer *tr, ray r, real t_min, real t_max, int depth, uint64_t *rays);
+
+/* The shading normal of a geometric unit normal n seen along direction d:
+ * n itself when it faces the viewer (n . d < 0), else -n.  So the back of a
+ * triangle and the inside of a sphere are shaded like a front side. */
+vec3 normal_towards_viewer(vec3 n, vec3 d);
+
+/* The scene shader of a hit; a surface without a shader is white Lambertian
+ * (SCENES.md). */
+const scene_shader *hit_shader(const scene *desc, const hit_record *hit);
+
+#endif

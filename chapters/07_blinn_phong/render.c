@@ -1,0 +1,37 @@
+/* render.c - chapter 07's renderer: Blinn-Phong shading, ambient light, every light.
+ *
+ * Each shaded point gets the scene's ambient radiance plus, for each light
+ * whose shadow ray is not blocked, the Lambert term and, for a Phong shader,
+ * the specular term k_s max(0, n . h)^p I / r^2 (phong.h).
+ *
+ * Knobs: --sphere (chapter 02), --triangle (chapter 03), --shadow-eps
+ * (chapter 06), --phong=course|lecture (is the specular term multiplied by
+ * max(0, n . l)?  The course's images: no).
+ */
+#include "05_lambert/shading_stage.h"
+#include "07_blinn_phong/shade_phong.h"
+
+static phong_knobs settings = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE};
+
+static const knob knobs[] = {
+    {"shadow-eps", KNOB_CHOICE, &settings.spawn.eps, eps_policy_names,
+     "where secondary rays start: none (the blunder), fixed 1e-3, bound (error bound)"},
+    {"phong", KNOB_CHOICE, &settings.form, phong_form_names,
+     "specular term: course k_s (n.h)^p I/r^2, lecture also times max(0, n.l)"},
+};
+
+int main(int argc, char **argv)
+{
+    const shading_stage stage = {
+        .name = "07_blinn_phong",
+        .summary = "07_blinn_phong: Blinn-Phong shading, ambient light and every light of the scene, with shadows",
+        .knobs = knobs,
+        .n_knobs = sizeof knobs / sizeof knobs[0],
+        .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |
+                    FEATURE_RGB_NORMALS | FEATURE_LIGHTS | FEATURE_SHADOWS | FEATURE_MANY_LIGHTS |
+                    FEATURE_PHONG | FEATURE_AMBIENT,
+        .shade = shade_phong,
+        .shade_knobs = &settings,
+    };
+    return shading_main(&stage, argc, argv);
+}

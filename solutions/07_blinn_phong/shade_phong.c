@@ -1,0 +1,49 @@
+/* shade_phong.c - chapter 07: the shade function of the Blinn-Phong stage. */
+#include "07_blinn_phong/shade_phong.h"
+
+#include "05_lambert/lambert.h"
+#include "05_lambert/shade_lambert.h"
+#include "06_shadows/shade_shadows.h"
+#include "06_shadows/shadow.h"
+
+phong_form tracer_phong_form(const tracer *tr)
+{
+    return tr->knobs ? (phong_form)((const phong_knobs *)tr->knobs)->form : PHONG_COURSE;
+}
+
+/* snippet: light_contribution */
+color light_contribution(const tracer *tr, const shading_point *sp, const scene_shader *shader,
+                         const scene_light *light)
+{
+    color L = lambert(shader->diffuse_color, sp->hit.point, sp->n, light); /* chapter 05 */
+    if (shader->kind == SHADER_PHONG) /* no specular work for a Lambertian shader */
+        L = color_add(L, blinn_phong_specular(shader->specular_color, shader->exponent, sp->hit.point, sp->n, sp->v,
+                                              light, tracer_phong_form(tr)));
+    return L;
+}
+/* end snippet */
+
+/* snippet: shade_phong */
+color shade_phong(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
+{
+    const scene_shader *shader = hit_shader(tr->desc, &sp->hit);
+    if (shader->kind == SHADER_RGB_NORMALS) /* a geometry check, not lit */
+        return shade_lambert(tr, sp, depth, rays);
+    color result = tr->desc->ambient;
+    /* EXERCISE lights: the lecture's loop over the lights:
+     *     for light in lights
+     *         if (shadow ray not blocked): result += shading contribution
+     * for each of the scene's lights (tr->desc->lights, tr->desc->n_lights):
+     * skip a light behind the surface without casting a shadow ray
+     * (light_in_front, chapter 06), ask light_blocked (chapter 06, with the
+     * policy tracer_eps(tr)), and add light_contribution to result. */
+    for (int k = 0; k < tr->desc->n_lights; k++) {
+        const scene_light *light = &tr->desc->lights[k];
+        if (light_in_front(sp, light) && !light_blocked(tr, sp, light->position, tracer_eps(tr), rays))
+            result = color_add(result, light_contribution(tr, sp, shader, light));
+    }
+    /* STUB
+    END EXERCISE */
+    return result;
+}
+/* end snippet */

@@ -1,0 +1,262 @@
+/* Chapter 06: shadow rays, the epsilon policy, acne and leaks. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "05_lambert/lambert.h"
+#include "05_lambert/shading_stage.h"
+#include "06_shadows/acne.h"
+#include "06_shadows/shade_shadows.h"
+#include "06_shadows/shadow.h"
+#include "06_shadows/spawn.h"
+#include "scene_build.h"
+#include "suite.h"
+
+/* A few roundings of values of size about 1 (see test_05_lambert.c). */
+#define TOL(size) (32 * REAL_EPSILON * (size))
+
+static const eps_policy policies[] = {EPS_NONE, EPS_FIXED, EPS_BOUND};
+
+/* ---- a scene and one of its points, as the renderer shades it --------------------------------- */
+
+/* The floor is the triangle in the plane y = 2 around (20, 2, -10), wound so
+ * that its normal is +y; the eye looks down at it from above. */
+static const vec3 floor_centre = {20.25, 2, -10.5};
+
+static _Thread_local shading_point last;
+static color record(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
+{
+    (void)tr;
+    (void)depth;
+    (void)rays;
+    last = *sp;
+    return color_make(0, 0, 0);
+}
+static const shading_stage recording = {.name = "test", .shade = record};
+
+static void add_floor(scene *desc)
+{
+    vec3 c = floor_centre;
+    scene_add_surface(desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = -1,
+                                            .v0 = vec3_add(c, vec3_make(-30, 0, 30)),
+                                            .v1 = vec3_add(c, vec3_make(30, 0, 30)),
+                                            .v2 = vec3_add(c, vec3_make(0, 0, -40))});
+}
+
+/* Prepares desc and finds the shading point the eye ray from `eye` to
+ * `target` hits: the view stays alive for light_blocked (release it). */
+static shading_view *shade_at(const scene *desc, vec3 eye, vec3 target, shading_point *sp)
+{
+    char err[256] = "";
+    shading_view *view = shading_prepare(&recording, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
+    if (!view)
+        fail_msg("%s", err);
+    uint64_t rays[RAY_KINDS] = {0};
+    trace(&view->tr, (ray){eye, vec3_sub(target, eye)}, 0, REAL_INFINITY, 0, rays);
+    *sp = last;
+    return view;
+}
+
+/* The point of the floor below the eye, a little off centre. */
+static const vec3 eye = {21.75, 9.5, -6.25};
+static const vec3 spot = {20.625, 2, -11.375};
+
+/* Is the light at light_pos blocked from the floor point, with each policy? */
+static void check_blocked(const scene *desc, vec3 light_pos, bool expected, const char *what)
+{
+    shading_point sp;
+    shading_view *view = shade_at(desc, eye, spot, &sp);
+    assert_vec3_close(vec3_make(0, 1, 0), sp.hit.normal, TOL(1));
+    for (int p = 0; p < 3; p++) {
+        uint64_t rays[RAY_KINDS] = {0};
+        bool blocked = light_blocked(&view->tr, &sp, light_pos, policies[p], rays);
+        if (blocked != expected)
+            fail_msg("light_blocked with %s, policy %s: %s, expected %s\n    likely mistake: %s", what,
+                     eps_policy_names[p], blocked ? "blocked" : "not blocked", expected ? "blocked" : "not blocked",
+                     expected ? "ask tr->closest_hit(tr->accel, ray, 0, t_max, &hit) with the ray and t_max that "
+                                "spawn_ray_to gives, and return what it says"
+                              : "the window must be the segment (0, t_max) that spawn_ray_to gives: not beyond the "
+                                "light (t_max, not infinity), not behind the point (0, not -infinity)");
+        if (rays[RAY_SHADOW] != 1)
+            fail_msg("light_blocked with %s: %llu shadow rays counted, expected 1\n    likely mistake: count the "
+                     "shadow ray, ++rays[RAY_SHADOW]",
+                     what, (unsigned long long)rays[RAY_SHADOW]);
+        assert_int_equal(0, rays[RAY_EYE]);
+    }
+    shading_release(view);
+}
+
+/* A sphere between the point and the light blocks it; the same sphere
+ * beyond the light, or behind the point (below the floor), does not.  The
+ * light is 6 above the point, off to the side; the spheres sit on the line
+ * through both. */
+static void test_occluder_between_beyond_behind(void **state)
+{
+    (void)state;
+    const vec3 light = vec3_add(spot, vec3_make(1.5, 6, -0.75));
+    const vec3 along = vec3_sub(light, spot); /* the point at 0, the light at 1 */
+    const struct {
+        real where; /* the sphere's centre along the line */
+        bool blocks;
+    } cases[] = {{0.5, true}, {0.9, true}, {1.3, false}, {2.5, false}, {-0.6, false}};
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        scene desc;
+        scene_init(&desc);
+        add_floor(&desc);
+        scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = -1,
+                                                 .center = vec3_add(spot, vec3_scale(along, cases[k].where)),
+                                                 .radius = 0.4});
+        check_blocked(&desc, light, cases[k].blocks,
+                      describe("a sphere at %g of the way from the point (0) to the light (1)", (double)cases[k].where));
+        scene_free(&desc);
+    }
+}
+
+/* A light exactly on a surface is not shadowed by that surface: on the
+ * plane of a wall (x = 25.5, facing the point) and on a sphere, at the point
+ * of the sphere that faces the floor point, so that the segment touches the
+ * sphere there only. */
+static void test_light_on_a_surface(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    add_floor(&desc);
+    /* the wall x = 25.5, from y = 0 to 20 */
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = -1, .v0 = {25.5, 0, -30},
+                                             .v1 = {25.5, 0, 10}, .v2 = {25.5, 20, -10}});
+    check_blocked(&desc, vec3_make(25.5, 7.25, -11.125), false, "the light exactly on a wall");
+    scene_free(&desc);
+
+    scene_init(&desc);
+    add_floor(&desc);
+    /* the unit sphere above the point; the light on it, where it faces the point */
+    vec3 c = vec3_add(spot, vec3_make(-2.5, 5.5, 1.5));
+    vec3 towards = vec3_normalize(vec3_sub(spot, c));
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = -1, .center = c, .radius = 1});
+    check_blocked(&desc, vec3_add(c, towards), false, "the light exactly on a sphere, facing the point");
+    scene_free(&desc);
+}
+
+/* ---- the shade function: only the shadow rays that matter ------------------------------------- */
+
+static void test_shadow_rays_only_when_needed(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    add_floor(&desc);
+    scene_shader grey = scene_default_shader(SHADER_LAMBERTIAN);
+    grey.diffuse_color = color_make((real)0.25, (real)0.25, (real)0.25);
+    desc.surfaces[0].shader = scene_add_shader(&desc, grey);
+    shading_point sp;
+
+    /* no light: black, no shadow ray */
+    shading_view *view = shade_at(&desc, eye, spot, &sp);
+    uint64_t rays[RAY_KINDS] = {0};
+    color c = shade_shadows(&view->tr, &sp, 0, rays);
+    assert_close(0, c.r, 0);
+    assert_int_equal(0, rays[RAY_SHADOW]);
+    shading_release(view);
+
+    /* a light below the floor (n . l < 0): black, no shadow ray */
+    scene_add_light(&desc, (scene_light){.position = vec3_add(spot, vec3_make(1, -3, 1)), .intensity = {9, 9, 9}});
+    view = shade_at(&desc, eye, spot, &sp);
+    c = shade_shadows(&view->tr, &sp, 0, rays);
+    assert_close(0, c.r, 0);
+    assert_int_equal(0, rays[RAY_SHADOW]);
+    shading_release(view);
+
+    /* a light above: one shadow ray, and the Lambert term: 0.25 * 9 * (3/sqrt(11)) / 11 */
+    desc.lights[0].position = vec3_add(spot, vec3_make(1, 3, 1));
+    view = shade_at(&desc, eye, spot, &sp);
+    c = shade_shadows(&view->tr, &sp, 0, rays);
+    assert_int_equal(1, rays[RAY_SHADOW]);
+    assert_close(0.25 * 9 * 3 / pow(11, 1.5), c.r, TOL(1) * 30); /* the point is ~24 from the origin */
+    shading_release(view);
+    scene_free(&desc);
+}
+
+/* ---- leaving a surface: spawn_ray and spawn_ray_to ------------------------------------------- */
+
+/* The offsets of each policy, for a ray to either side of the surface (a
+ * shadow or mirror ray goes to the viewer's side, a refracted ray through). */
+static void test_spawn_ray_offsets(void **state)
+{
+    (void)state;
+    shading_point sp = {.r = {{100, 50, -25}, {-1, -1, 0}}};
+    sp.hit.point = vec3_make(40, 3, -25);
+    sp.hit.normal = vec3_normalize(vec3_make(0, 3, 4)); /* (0, 0.6, 0.8) */
+    vec3 up = {0, 2, 1}, through = {0, -2, -1};
+    assert_vec3_close(sp.hit.point, spawn_ray(&sp, up, EPS_NONE).p, 0);
+    /* fixed: 1e-3 along d */
+    vec3 moved = vec3_sub(spawn_ray(&sp, up, EPS_FIXED).p, sp.hit.point);
+    assert_close(1e-3, vec3_length(moved), 64 * REAL_EPSILON);
+    assert_close(0, vec3_length(vec3_cross(moved, up)), 64 * REAL_EPSILON);
+    /* bound: along the geometric normal, to the side d goes, by eps_bound */
+    real bound = eps_bound(&sp);
+    assert_close(EPS_BOUND_ULPS * REAL_EPSILON * 100, bound, 0); /* the largest coordinate: the ray's 100 */
+    vec3 out = vec3_sub(spawn_ray(&sp, up, EPS_BOUND).p, sp.hit.point);
+    vec3 in = vec3_sub(spawn_ray(&sp, through, EPS_BOUND).p, sp.hit.point);
+    assert_true(vec3_dot(out, sp.hit.normal) > 0);
+    assert_true(vec3_dot(in, sp.hit.normal) < 0);
+    assert_close(bound, vec3_length(out), bound / 4); /* rounded to the spacing of reals near 40 */
+    assert_close(bound, vec3_length(in), bound / 4);
+    /* the direction is kept */
+    assert_vec3_close(up, spawn_ray(&sp, up, EPS_BOUND).d, 0);
+}
+
+/* The segment to a target ends at t = 1 at the target, and stops short of it
+ * by nothing (none), 1e-3 (fixed), or an error bound (bound). */
+static void test_spawn_ray_to_far_end(void **state)
+{
+    (void)state;
+    shading_point sp = {.r = {{0, 10, 0}, {1, -1, 0}}};
+    sp.hit.point = vec3_make(10, 0, 0);
+    sp.hit.normal = vec3_make(0, 1, 0);
+    vec3 light = {10, 8, 6}; /* 10 away */
+    real t_max;
+    for (int p = 0; p < 3; p++) {
+        ray r = spawn_ray_to(&sp, light, policies[p], &t_max);
+        assert_vec3_close(light, ray_at(r, 1), TOL(16));
+        real stop = (1 - t_max) * vec3_length(r.d); /* world units before the light */
+        real expected = p == 0 ? 0 : p == 1 ? (real)1e-3 : EPS_BOUND_ULPS * REAL_EPSILON * 10;
+        assert_close(expected, stop, TOL(16) + expected / 1000);
+    }
+}
+
+/* ---- acne and leaks ------------------------------------------------------------------------- */
+
+/* The default policy has neither acne nor leaks, on the square or on the
+ * sphere, at any scale from 1e-4 to 1e4 (acne.h).  The blunder has acne on
+ * the sphere at every scale; on the square chapter 03's test already refuses
+ * a ray that starts in the triangle's plane (degenerate.h), so it has none. */
+static void test_no_acne_no_leak(void **state)
+{
+    (void)state;
+    for (int shape = 0; shape < ACNE_SHAPES; shape++) {
+        for (int k = 0; k < ACNE_SCALES; k++) {
+            acne_result bound, none;
+            assert_int_equal(0, acne_measure((acne_shape)shape, acne_scales[k], EPS_BOUND, 32, &bound));
+            /* every point of the square, and most of the sphere's (those that face the light) */
+            assert_true(bound.points >= (shape == ACNE_SQUARE ? 32 * 32 : 32 * 32 / 2));
+            if (bound.acne != 0 || bound.leak != 0)
+                fail_msg("%s at scale %g: %.2f %% acne, %.2f %% leak with the default policy",
+                         acne_shape_names[shape], (double)acne_scales[k], bound.acne, bound.leak);
+            assert_int_equal(0, acne_measure((acne_shape)shape, acne_scales[k], EPS_NONE, 32, &none));
+            if (shape == ACNE_SPHERE && none.acne < 10)
+                fail_msg("sphere at scale %g: the blunder gives only %.2f %% acne", (double)acne_scales[k], none.acne);
+        }
+    }
+}
+
+static const graded_test tests[] = {
+    GRADED(test_occluder_between_beyond_behind, 4),
+    GRADED(test_light_on_a_surface, 3),
+    GRADED(test_shadow_rays_only_when_needed, 2),
+    GRADED(test_no_acne_no_leak, 3),
+    GRADED(test_spawn_ray_offsets, 0),    /* handed out complete: no points */
+    GRADED(test_spawn_ray_to_far_end, 0), /* handed out complete: no points */
+};
+
+SUITE_MAIN("06_shadows", tests)

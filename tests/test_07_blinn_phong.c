@@ -1,0 +1,278 @@
+/* Chapter 07: the half vector, the specular term, ambient light and many lights. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "05_lambert/lambert.h"
+#include "05_lambert/shading_stage.h"
+#include "06_shadows/shadow.h"
+#include "07_blinn_phong/phong.h"
+#include "07_blinn_phong/shade_phong.h"
+#include "scene_build.h"
+#include "suite.h"
+
+/* A few roundings of values of size about 1 (see test_05_lambert.c). */
+#define TOL(size) (32 * REAL_EPSILON * (size))
+/* Positions near |point| ~ 54 put up to 54 REAL_EPSILON / r into l and r^2;
+ * a power p multiplies the relative error of n . h by p. */
+#define FAR_TOL(size, r) (TOL(size) * (1 + 54 / (r)))
+
+static const double pi = 3.14159265358979323846;
+static const vec3 point = {37.25, -12.5, 53.125};
+static vec3 unit_normal(void) { return vec3_normalize(vec3_make(2, -3, 6)); }
+
+/* A unit vector at angle theta from n, in the plane of n and `towards`. */
+static vec3 at_angle(vec3 n, vec3 towards, double theta)
+{
+    vec3 side = vec3_normalize(vec3_sub(towards, vec3_scale(n, vec3_dot(n, towards))));
+    return vec3_add(vec3_scale(n, (real)cos(theta)), vec3_scale(side, (real)sin(theta)));
+}
+
+/* ---- the half vector ------------------------------------------------------------------------ */
+
+/* In the mirror configuration (l is v reflected about n) the half vector is
+ * n; in general it is a unit vector at equal angles from v and l. */
+static void test_half_vector(void **state)
+{
+    (void)state;
+    vec3 n = unit_normal(), side = {1, 0.25, 0};
+    for (double deg = 5; deg < 90; deg += 21) {
+        vec3 v = at_angle(n, side, deg * pi / 180);
+        vec3 l = at_angle(n, side, -deg * pi / 180); /* the mirror direction */
+        const suspect_vec3 sh[] = {
+            {vec3_add(v, l), "not normalized: h = (v + l) / |v + l|"},
+            {vec3_scale(vec3_add(v, l), 0.5), "halved, not normalized: |v + l| / 2 is cos(angle / 2), not 1"},
+            {l, "h is l: the half vector lies half-way between v and l"},
+            {v, "h is v: the half vector lies half-way between v and l"},
+        };
+        assert_vec3_why(n, half_vector(v, l), TOL(1),
+                        describe("half_vector(v, l) with l the mirror of v about n, %g degrees from it", deg),
+                        "h = (v + l) / |v + l|, which is n in the mirror configuration", sh, sizeof sh / sizeof sh[0]);
+    }
+    vec3 v = vec3_normalize(vec3_make(0.3, 0.9, -0.2)), l = vec3_normalize(vec3_make(-0.7, 0.1, 0.5));
+    vec3 h = half_vector(v, l);
+    assert_close(1, vec3_length(h), TOL(1));
+    assert_close(vec3_dot(h, v), vec3_dot(h, l), TOL(1));
+    assert_true(vec3_dot(h, v) > 0);
+    /* the bisector of v and l lies in their plane */
+    assert_close(0, vec3_dot(h, vec3_cross(v, l)), TOL(1));
+}
+
+/* ---- the specular term ------------------------------------------------------------------- */
+
+/* The light 2.5 away at 40 degrees from n; the viewer at 40 + 2 alpha on the
+ * other side, so that n . h = cos(alpha).  At the mirror configuration
+ * (alpha = 0) every exponent gives k_s I / r^2; off it, cos(alpha)^p: a larger
+ * p gives a narrower highlight. */
+static void test_exponent_behaviour(void **state)
+{
+    (void)state;
+    vec3 n = unit_normal(), side = {1, 0.25, 0};
+    color k_s = {0.9, 0.7, 0.3};
+    scene_light light = {.position = vec3_add(point, vec3_scale(at_angle(n, side, 40 * pi / 180), 2.5)),
+                         .intensity = {10, 10, 10}};
+    const double exponents[] = {1, 10, 100, 1000};
+    const double alphas[] = {0, 2, 5, 10};
+    for (int a = 0; a < 4; a++) {
+        vec3 v = at_angle(n, side, -(40 + 2 * alphas[a]) * pi / 180);
+        double previous = INFINITY;
+        for (int k = 0; k < 4; k++) {
+            color L = blinn_phong_specular(k_s, (real)exponents[k], point, n, v, &light, PHONG_COURSE);
+            double cos_alpha = cos(alphas[a] * pi / 180), cos_l = cos(40 * pi / 180);
+            double expected = 0.9 * 10 / 6.25 * pow(cos_alpha, exponents[k]);
+            const suspect ss[] = {
+                {expected * cos_l, "times n . l: that is the lecture's form; the course's has no cosine"},
+                {0.9 * 10 / 6.25 * cos_alpha, "exponent ignored: (n . h)^p, with p the shader's exponent"},
+                {0.9 * 10 * pow(cos_alpha, exponents[k]), "no falloff: divide by r^2"},
+                {0.9 * 10 / 2.5 * pow(cos_alpha, exponents[k]), "divided by r, not r^2"},
+                {10 / 6.25 * pow(cos_alpha, exponents[k]), "k_s missing"},
+            };
+            /* cos^p has the relative error of cos times p */
+            assert_close_why(expected, L.r, FAR_TOL(1.44, 2.5) * (1 + exponents[k] * alphas[a] / 10),
+                             describe("blinn_phong_specular(k_s.r = 0.9, p = %g, I = 10, r = 2.5, course form, "
+                                      "n . h = cos(%g degrees)): red", exponents[k], alphas[a]),
+                             "k_s max(0, n . h)^p I / r^2", ss, sizeof ss / sizeof ss[0]);
+            assert_close(L.r * 0.3 / 0.9, L.b, TOL(L.r));
+            if (alphas[a] > 0)
+                assert_true(L.r < previous); /* narrower with every larger p */
+            previous = L.r;
+        }
+    }
+    /* concrete values: alpha = 5 degrees, p = 100: cos(5 deg)^100 = 0.683003, times k_s I / r^2 = 1.44 */
+    vec3 v = at_angle(n, side, -50 * pi / 180);
+    assert_close(0.983524, blinn_phong_specular(k_s, 100, point, n, v, &light, PHONG_COURSE).r, 1e-5);
+    /* behind the normal's hemisphere (n . h < 0) there is no highlight, not a negative one */
+    vec3 below = vec3_neg(at_angle(n, side, 40 * pi / 180));
+    assert_close(0, blinn_phong_specular(k_s, 3, point, n, vec3_neg(n), &(scene_light){.position =
+                     vec3_add(point, vec3_scale(below, 2)), .intensity = {1, 1, 1}}, PHONG_COURSE).g, 0);
+}
+
+/* The lecture's modified Blinn-Phong is the course's term times max(0, n . l):
+ * at a grazing light (n . l = cos 78 degrees = 0.2079) the highlight is a
+ * fifth of the course's. */
+static void test_course_and_lecture_forms(void **state)
+{
+    (void)state;
+    vec3 n = unit_normal(), side = {0, 1, 1};
+    color k_s = {1, 1, 0};
+    const double degrees[] = {0, 30, 78, 89};
+    for (int k = 0; k < 4; k++) {
+        double theta = degrees[k] * pi / 180;
+        scene_light light = {.position = vec3_add(point, vec3_scale(at_angle(n, side, theta), 3)),
+                             .intensity = {9, 9, 9}};
+        vec3 v = at_angle(n, side, -theta + 0.05); /* near the mirror direction */
+        color course = blinn_phong_specular(k_s, 50, point, n, v, &light, PHONG_COURSE);
+        color lecture = blinn_phong_specular(k_s, 50, point, n, v, &light, PHONG_LECTURE);
+        assert_true(course.r > 0);
+        const suspect sf[] = {
+            {course.r, "the lecture's form is the course's times max(0, n . l); it was left out"},
+            {course.r * cos(theta) * cos(theta), "n . l applied twice"},
+        };
+        assert_close_why(course.r * cos(theta), lecture.r, FAR_TOL(course.r, 3) * 50,
+                         describe("blinn_phong_specular(p = 50, light at %g degrees from n), lecture form", degrees[k]),
+                         "lecture: k_s max(0, n . h)^p max(0, n . l) I / r^2", sf, sizeof sf / sizeof sf[0]);
+        assert_close(0, course.b, 0); /* k_s has no blue */
+    }
+}
+
+/* ---- ambient light and the loop over the lights ------------------------------------------------- */
+
+/* A Phong floor (y = 2, far from the origin) seen from above, the scene's
+ * ambient, and lights; the shade function is called on the floor point the
+ * eye ray finds. */
+static const vec3 floor_centre = {20.25, 2, -10.5};
+static const vec3 eye = {21.75, 9.5, -6.25};
+static const vec3 spot = {20.625, 2, -11.375};
+
+static _Thread_local shading_point last;
+static color record(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
+{
+    (void)tr;
+    (void)depth;
+    (void)rays;
+    last = *sp;
+    return color_make(0, 0, 0);
+}
+
+static void make_floor_scene(scene *desc, shader_kind kind)
+{
+    scene_init(desc);
+    desc->ambient = color_make((real)0.02, (real)0.03, (real)0.04);
+    scene_shader s = scene_default_shader(kind);
+    s.diffuse_color = color_make((real)0.2, (real)0.3, (real)0.1);
+    s.specular_color = color_make((real)0.5, (real)0.5, (real)0.5);
+    s.exponent = 20;
+    int shader = scene_add_shader(desc, s);
+    vec3 c = floor_centre;
+    scene_add_surface(desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = shader,
+                                            .v0 = vec3_add(c, vec3_make(-30, 0, 30)),
+                                            .v1 = vec3_add(c, vec3_make(30, 0, 30)),
+                                            .v2 = vec3_add(c, vec3_make(0, 0, -40))});
+}
+
+/* Shades the floor point with shade_phong; counts its rays into `rays`. */
+static color shade_spot(const scene *desc, phong_form form, uint64_t *rays, shading_point *sp)
+{
+    static phong_knobs knobs;
+    knobs = (phong_knobs){.spawn = {.eps = EPS_BOUND}, .form = form};
+    const shading_stage stage = {.name = "test", .shade = record, .shade_knobs = &knobs};
+    char err[256] = "";
+    shading_view *view = shading_prepare(&stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
+    if (!view)
+        fail_msg("%s", err);
+    uint64_t eye_rays[RAY_KINDS] = {0};
+    trace(&view->tr, (ray){eye, vec3_sub(spot, eye)}, 0, REAL_INFINITY, 0, eye_rays);
+    *sp = last;
+    color c = shade_phong(&view->tr, sp, 0, rays);
+    shading_release(view);
+    return c;
+}
+
+/* Two lights add: ambient + (Lambert + specular) of each; a sphere that
+ * blocks one of them leaves ambient + the other; one shadow ray per light. */
+static void test_two_lights_add(void **state)
+{
+    (void)state;
+    scene desc;
+    make_floor_scene(&desc, SHADER_PHONG);
+    scene_light a = {.position = vec3_add(spot, vec3_make(1.5, 4, -2)), .intensity = {20, 15, 10}};
+    scene_light b = {.position = vec3_add(spot, vec3_make(-3, 2.5, 1)), .intensity = {5, 6, 7}};
+    scene_add_light(&desc, a);
+    scene_add_light(&desc, b);
+    uint64_t rays[RAY_KINDS] = {0};
+    shading_point sp;
+    color both = shade_spot(&desc, PHONG_COURSE, rays, &sp);
+    assert_int_equal(2, rays[RAY_SHADOW]);
+    const scene_shader *s = &desc.shaders[0];
+    color La = color_add(lambert(s->diffuse_color, sp.hit.point, sp.n, &a),
+                         blinn_phong_specular(s->specular_color, s->exponent, sp.hit.point, sp.n, sp.v, &a,
+                                              PHONG_COURSE));
+    color Lb = color_add(lambert(s->diffuse_color, sp.hit.point, sp.n, &b),
+                         blinn_phong_specular(s->specular_color, s->exponent, sp.hit.point, sp.n, sp.v, &b,
+                                              PHONG_COURSE));
+    assert_true(La.r > 0.01 && Lb.r > 0.01);
+    const suspect sl[] = {
+        {desc.ambient.r, "no light added: loop over tr->desc->lights and add each unblocked one's contribution"},
+        {desc.ambient.r + La.r, "only the first light: loop over all n_lights"},
+        {desc.ambient.r + Lb.r, "only the last light: add (+=) each contribution to result, do not replace it"},
+        {La.r + Lb.r, "ambient missing: start from result = ambient"},
+    };
+    assert_close_why(desc.ambient.r + La.r + Lb.r, both.r, TOL(1),
+                     describe("shade_phong: a Phong floor point, ambient 0.02, two lights in front, nothing between"),
+                     "result = ambient + the sum over the unblocked lights of light_contribution", sl,
+                     sizeof sl / sizeof sl[0]);
+    assert_close(0.03 + La.g + Lb.g, both.g, TOL(1));
+    assert_close(0.04 + La.b + Lb.b, both.b, TOL(1));
+
+    /* a sphere half-way to light a blocks it */
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = 0,
+                                             .center = vec3_add(spot, vec3_make(0.75, 2, -1)), .radius = 0.3});
+    rays[RAY_SHADOW] = 0;
+    color one = shade_spot(&desc, PHONG_COURSE, rays, &sp);
+    assert_int_equal(2, rays[RAY_SHADOW]);
+    const suspect sb[] = {{desc.ambient.r + La.r + Lb.r, "the blocked light was added: ask light_blocked first"}};
+    assert_close_why(desc.ambient.r + Lb.r, one.r, TOL(1),
+                     describe("shade_phong: the same point, a sphere between it and the first light"),
+                     "a light whose shadow ray is blocked adds nothing", sb, 1);
+    assert_close(0.04 + Lb.b, one.b, TOL(1));
+    scene_free(&desc);
+}
+
+/* Lights behind the surface add nothing and cast no shadow ray; the ambient
+ * term is all that is left.  A Lambertian shader gets no highlight, even in
+ * the mirror configuration. */
+static void test_ambient_and_lights_behind(void **state)
+{
+    (void)state;
+    scene desc;
+    make_floor_scene(&desc, SHADER_LAMBERTIAN);
+    scene_add_light(&desc, (scene_light){.position = vec3_add(spot, vec3_make(1, -2, 0)), .intensity = {50, 50, 50}});
+    scene_add_light(&desc, (scene_light){.position = vec3_add(spot, vec3_make(-1, -0.5, 2)), .intensity = {9, 9, 9}});
+    uint64_t rays[RAY_KINDS] = {0};
+    shading_point sp;
+    color c = shade_spot(&desc, PHONG_LECTURE, rays, &sp);
+    assert_int_equal(0, rays[RAY_SHADOW]);
+    assert_close(desc.ambient.r, c.r, 0);
+    assert_close(desc.ambient.g, c.g, 0);
+    assert_close(desc.ambient.b, c.b, 0);
+
+    /* a light in the mirror direction of the eye: Lambert only, one shadow ray */
+    vec3 mirror = vec3_sub(eye, spot);
+    mirror.y = -mirror.y;
+    scene_light m = {.position = vec3_sub(spot, mirror), .intensity = {30, 30, 30}};
+    scene_add_light(&desc, m);
+    c = shade_spot(&desc, PHONG_COURSE, rays, &sp);
+    assert_int_equal(1, rays[RAY_SHADOW]);
+    assert_close(0.02 + lambert(desc.shaders[0].diffuse_color, sp.hit.point, sp.n, &m).r, c.r, TOL(1));
+    scene_free(&desc);
+}
+
+static const graded_test tests[] = {
+    GRADED(test_half_vector, 2),
+    GRADED(test_exponent_behaviour, 3),
+    GRADED(test_course_and_lecture_forms, 2),
+    GRADED(test_two_lights_add, 3),
+    GRADED(test_ambient_and_lights_behind, 2),
+};
+
+SUITE_MAIN("07_blinn_phong", tests)

@@ -1,0 +1,78 @@
+/* The course's scenes, rendered by the shading chapters and compared with the
+ * course's own reference images (../shared/cornell/sp17-ray1/data/scenes/ray1/
+ * reference/).  A cross-chapter suite: it links every chapter and is not
+ * graded.  Each test is skipped when the Cornell corpus is absent (and fails
+ * then when RT_REQUIRE_CORNELL is set, as in CI).
+ *
+ * The bar: at least 99 % of all bytes within 2/255 of the reference.  The
+ * renderer's defaults are used (the course's Phong form, the error-bound
+ * shadow offset, the watertight triangle test, the robust sphere formula),
+ * one sample per pixel at the pixel centre, as the course rendered them. */
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "05_lambert/shading_stage.h"
+#include "07_blinn_phong/shade_phong.h"
+#include "image_compare.h"
+#include "suite.h"
+
+#define WITHIN 2          /* bytes within 2/255 ... */
+#define REQUIRED_PERCENT 99.0 /* ... for at least 99 % of them */
+
+/* Renders scenes/ray1/NAME.xml with `stage` and compares it with its reference. */
+static void check_scene(const shading_stage *stage, const char *name)
+{
+    const char *data = cornell_data();
+    if (!data)
+        skip();
+    char path[512], reference[512], err[512] = "";
+    snprintf(path, sizeof path, "%s/scenes/ray1/%s.xml", data, name);
+    snprintf(reference, sizeof reference, "%s/scenes/ray1/reference/%s.xml.png", data, name);
+    scene desc;
+    if (scene_load(path, &desc, err, sizeof err) != 0)
+        fail_msg("%s", err);
+    shading_view *view = shading_prepare(stage, &desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
+    if (!view)
+        fail_msg("%s", err);
+    image img;
+    assert_int_equal(0, image_init(&img, desc.width, desc.height));
+    render_options opt = {.samples = 1}; /* all cores: the bunny is 4968 triangles, scanned linearly */
+    render_image(&img, shading_sample, view, &opt);
+    image_diff diff;
+    int status = image_compare_png(&img, desc.exposure, reference, WITHIN, &diff, err, sizeof err);
+    image_free(&img);
+    shading_release(view);
+    scene_free(&desc);
+    if (status != 0)
+        fail_msg("%s", err);
+    double percent = image_diff_percent(&diff);
+    printf("%s: %.3f %% of %ld bytes within %d/255, largest difference %d at (%d, %d), %ld pixels beyond\n", name,
+           percent, diff.bytes, WITHIN, diff.max_diff, diff.max_x, diff.max_y, diff.pixels_off);
+    if (percent < REQUIRED_PERCENT)
+        fail_msg("%s: only %.3f %% of the bytes within %d/255 of the reference (%ld pixels beyond, in (%d, %d) - "
+                 "(%d, %d))",
+                 name, percent, WITHIN, diff.pixels_off, diff.x0, diff.y0, diff.x1, diff.y1);
+}
+
+/* ---- chapter 07: Blinn-Phong, ambient, many lights, shadows --------------------------------------- */
+
+static phong_knobs phong_defaults = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE};
+static const shading_stage stage07 = {.name = "07_blinn_phong", .shade = shade_phong, .shade_knobs = &phong_defaults};
+
+static void test_07_one_sphere(void **state) { (void)state; check_scene(&stage07, "one-sphere"); }
+static void test_07_two_boxes(void **state) { (void)state; check_scene(&stage07, "two-boxes"); }
+static void test_07_wire_box(void **state) { (void)state; check_scene(&stage07, "wire-box"); }
+static void test_07_wire_box_orthographic(void **state) { (void)state; check_scene(&stage07, "wire-box-orthographic"); }
+static void test_07_bunny(void **state) { (void)state; check_scene(&stage07, "bunny"); }
+static void test_07_bunny2(void **state) { (void)state; check_scene(&stage07, "bunny2"); }
+
+static const graded_test tests[] = {
+    GRADED(test_07_one_sphere, 0),
+    GRADED(test_07_two_boxes, 0),
+    GRADED(test_07_wire_box, 0),
+    GRADED(test_07_wire_box_orthographic, 0),
+    GRADED(test_07_bunny, 0),
+    GRADED(test_07_bunny2, 0),
+};
+
+SUITE_MAIN("scenes", tests)
