@@ -48,6 +48,10 @@ COMMON_SRC := $(sort $(wildcard common/*.c))
 
 # $(call num,01_camera_rays) -> 01
 num = $(firstword $(subst _, ,$1))
+# CHAPTER and REFERENCE name chapters of this copy (01 or 01_camera_rays):
+# anything else is an error, never an empty selection.
+$(foreach x,$(CHAPTER) $(REFERENCE),$(if $(filter $x,$(CHAPTERS) $(foreach c,$(CHAPTERS),$(call num,$c))),,\
+    $(error no chapter '$x' in this copy (CHAPTER and REFERENCE take 01 or 01_camera_rays; chapters: $(CHAPTERS)))))
 # The chapters up to and including $1.
 upto = $(foreach c,$(CHAPTERS),$(if $(filter $(call num,$c),$(firstword $(sort $(call num,$c) $(call num,$1)))),$c))
 # The exercise files of chapter $1 (FILE.c): those that have a solution, or
