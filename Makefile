@@ -86,7 +86,7 @@ IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
         handout handout-libs reference-libs \
-        figure-renderers figures check-figures snippets check-snippets check
+        figure-renderers figures check-figures snippets check-snippets check-links check
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -290,12 +290,16 @@ SNIPPET_TEXTS := $(sort $(wildcard chapters/[0-9][0-9]_*/README.md docs/*.md))
 snippets:
 	@tools/snippets.sh fill $(SNIPPET_TEXTS)
 
+# Every relative link of the texts resolves; nothing names a file beside the repository.
+check-links:
+	@tools/check-links.sh
+
 check-snippets:
 	@tools/snippets.sh check $(SNIPPET_TEXTS)
 
 # Text, skeletons and figures agree with their sources (in the repository;
 # a student's copy has no solutions/ to compare them with).
-check: $(if $(HANDOUT),,check-skeletons check-snippets check-figures)
+check: $(if $(HANDOUT),,check-skeletons check-snippets check-figures check-links)
 	@$(if $(HANDOUT),echo "make check: nothing to check in a student's copy (it compares texts, skeletons and figures with solutions/)")
 
 # ---- tests ----------------------------------------------------------------------
@@ -362,7 +366,7 @@ help:
 	@echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
-	@echo "make check           check-skeletons, check-snippets, check-figures: fail naming what is stale"
+	@echo "make check           check-skeletons, check-snippets, check-figures, check-links: fail naming what is stale"
 	@echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
 	@echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"
 	@echo "make clean           remove build*/ and out*/"
