@@ -70,8 +70,9 @@ until then the images that need it show only the background (black, or the scene
 renderer uses your chapters 1 to N, so finish them in order or take the earlier ones from the reference
 with `REFERENCE=`.  `make grade` always links the reference for the other chapters: your points for a
 chapter depend on that chapter's files only.  `make test` runs every suite on all your files at once (it
-fails until every chapter is done).  Where the text below and the chapters say `make` builds into `out/`
-or `build/`, in this copy that is `out-student/` and `build-student/`; `build/` is the reference's.
+fails until every chapter is done).  Where the text below says `make` renders into `out/`, in this copy
+your images go to `out-student/` and your renderers to `build-student/`; `out/` and `build/` hold the
+reference's, once `make STUDENT=0` has built them.
 
 TEXT
 )
