@@ -48,6 +48,10 @@ COMMON_SRC := $(sort $(wildcard common/*.c))
 
 # $(call num,01_camera_rays) -> 01
 num = $(firstword $(subst _, ,$1))
+# CHAPTER and REFERENCE name chapters of this copy (01 or 01_camera_rays):
+# anything else is an error, never an empty selection.
+$(foreach x,$(CHAPTER) $(REFERENCE),$(if $(filter $x,$(CHAPTERS) $(foreach c,$(CHAPTERS),$(call num,$c))),,\
+    $(error no chapter '$x' in this copy (CHAPTER and REFERENCE take 01 or 01_camera_rays; chapters: $(CHAPTERS)))))
 # The chapters up to and including $1.
 upto = $(foreach c,$(CHAPTERS),$(if $(filter $(call num,$c),$(firstword $(sort $(call num,$c) $(call num,$1)))),$c))
 # The exercise files of chapter $1 (FILE.c): those that have a solution, or
@@ -87,7 +91,8 @@ IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
         handout handout-libs reference-libs \
-        figure-renderers figures check-figures snippets check-snippets check fuzz fuzz-build deps-fuzz test-extremes
+        figure-renderers figures check-figures snippets check-snippets check-links check fuzz fuzz-build deps-fuzz \
+        test-extremes
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -340,11 +345,17 @@ SNIPPET_TEXTS := $(sort $(wildcard chapters/[0-9][0-9]_*/README.md docs/*.md))
 snippets:
 	@tools/snippets.sh fill $(SNIPPET_TEXTS)
 
+# Every relative link of the texts resolves; nothing names a file beside the repository.
+check-links:
+	@tools/check-links.sh
+
 check-snippets:
 	@tools/snippets.sh check $(SNIPPET_TEXTS)
 
-# Text, skeletons and figures agree with their sources.
-check: check-skeletons check-snippets check-figures
+# Text, skeletons and figures agree with their sources (in the repository;
+# a student's copy has no solutions/ to compare them with).
+check: $(if $(HANDOUT),,check-skeletons check-snippets check-figures check-links)
+	@$(if $(HANDOUT),echo "make check: nothing to check in a student's copy (it compares texts, skeletons and figures with solutions/)")
 
 # ---- tests ----------------------------------------------------------------------
 
@@ -419,7 +430,7 @@ help:
 	@echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
-	@echo "make check           check-skeletons, check-snippets, check-figures: fail naming what is stale"
+	@echo "make check           check-skeletons, check-snippets, check-figures, check-links: fail naming what is stale"
 	@echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
 	@echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"
 	@echo "make fuzz            build the libFuzzer targets (clang) and fuzz each for FUZZ_SECONDS (60) seconds;"

@@ -1,4 +1,4 @@
-/* scene2pov.c - a scene file (SCENES.md) as a POV-Ray 3.7 scene, for the bench.
+/* scene2pov.c - a scene file (docs/scenes.md) as a POV-Ray 3.7 scene, for the bench.
  *
  *     scene2pov SCENE.xml OUT.pov [r|g|b]
  *

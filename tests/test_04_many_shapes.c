@@ -472,13 +472,19 @@ static void test_rays_from_a_surface(void **state)
             const char *why = "is the window open at t_min, so that the start point (t = 0) is refused?";
             /* On the box's face x = 1, at (1, 0.25, -0.5): inwards the face x = -1 at t = 2. */
             ray in_box = {{1, 0.25, -0.5}, {-1, 0, 0}};
-            hit_record hit;
-            if (!surfaces_intersect(&list, in_box, 0, REAL_INFINITY, &hit) || hit.t != 2 || hit.point.x != -1)
-                fail_msg("--sphere=%s, --triangle=%s: ray from (1, 0.25, -0.5) on the cube's face x = 1, along -x: "
-                         "expected the face x = -1 at t 2, got %s t %g (%s)",
-                         f ? "textbook" : "robust", g ? "watertight" : "cramer",
-                         surfaces_intersect(&list, in_box, 0, REAL_INFINITY, &hit) ? "a hit at" : "no hit",
-                         (double)hit.t, why);
+            hit_record hit = {0};
+            bool got = surfaces_intersect(&list, in_box, 0, REAL_INFINITY, &hit);
+            static const char *const knob_names[2][2] = {
+                {"--sphere=robust, --triangle=cramer", "--sphere=robust, --triangle=watertight"},
+                {"--sphere=textbook, --triangle=cramer", "--sphere=textbook, --triangle=watertight"}};
+            const char *knobs = knob_names[f][g];
+            if (!got)
+                fail_msg("%s: ray from (1, 0.25, -0.5) on the cube's face x = 1, along -x: expected the face x = -1 "
+                         "at t 2, got no hit (%s)", knobs, why);
+            if (hit.t != 2 || hit.point.x != -1)
+                fail_msg("%s: ray from (1, 0.25, -0.5) on the cube's face x = 1, along -x: expected the face x = -1 "
+                         "at t 2, got a hit at t %.17g, x = %.17g (%s)",
+                         knobs, (double)hit.t, (double)hit.point.x, why);
             /* ... outwards along +x it leaves the box and meets the sphere at x = 3, t = 2. */
             expect_closest(&list, (ray){{1, 0.25, -0.5}, {1, 0, 0}}, 0, REAL_INFINITY, BOX_TRIANGLES, 2,
                            TOL(4), why);
@@ -488,10 +494,14 @@ static void test_rays_from_a_surface(void **state)
              * the box (the face x = 1 at t = 2). */
             expect_closest(&list, (ray){{3, 0.25, -0.5}, {1, 0, 0}}, 0, REAL_INFINITY, BOX_TRIANGLES, 4, TOL(8),
                            why);
-            if (!surfaces_intersect(&list, (ray){{3, 0.25, -0.5}, {-1, 0, 0}}, 0, REAL_INFINITY, &hit) ||
-                hit.source != 0 || real_abs(hit.t - 2) > TOL(4))
-                fail_msg("ray from (3, 0.25, -0.5) on the sphere, along -x: expected the cube's face x = 1 at t 2, "
-                         "got source %d at t %g (%s)", hit.source, (double)hit.t, why);
+            hit = (hit_record){0};
+            got = surfaces_intersect(&list, (ray){{3, 0.25, -0.5}, {-1, 0, 0}}, 0, REAL_INFINITY, &hit);
+            if (!got)
+                fail_msg("%s: ray from (3, 0.25, -0.5) on the sphere, along -x: expected the cube's face x = 1 at t 2, "
+                         "got no hit (%s)", knobs, why);
+            if (hit.source != 0 || real_abs(hit.t - 2) > TOL(4))
+                fail_msg("%s: ray from (3, 0.25, -0.5) on the sphere, along -x: expected the cube's face x = 1 at t 2, "
+                         "got source %d at t %.17g (%s)", knobs, hit.source, (double)hit.t, why);
             /* On the sphere at (5, 2.25, -0.5), outwards (+y): nothing. */
             expect_closest(&list, (ray){{5, 2.25, -0.5}, {0, 1, 0}}, 0, REAL_INFINITY, -1, 0, 0, why);
             surface_list_free(&list);

@@ -1,4 +1,4 @@
-/* Display encoding (SCENES.md) and the atomic PNG writer. */
+/* Display encoding (docs/scenes.md) and the atomic PNG writer. */
 #include <dirent.h>
 #include <stdio.h>
 #include <stdlib.h>

@@ -87,7 +87,6 @@ rm -f "$root/results/results.json"
 notes=build-grade/submission.txt
 mkdir -p build-grade
 tools/take-submission.sh "$root/submission" pristine "$CHAPTER" >"$notes"
-cat "$notes"
 make --no-print-directory grade CHAPTER="$CHAPTER" TIMEOUT="$TIMEOUT" GRADE_USER="$user" GRADE_NOTES="$notes" \
     GRADE_JSON="$root/results/results.json" GRADE_JUNIT=build-grade/junit.xml
 if [ ! -s "$root/results/results.json" ]; then

@@ -325,7 +325,8 @@ static char *read_file(const char *path)
 }
 
 /* Prints the lines of a failed test's output that say why (the test's
- * messages, cmocka's ERROR and LINE lines, the grader's note), at most five. */
+ * messages, cmocka's ERROR and LINE lines, the grader's note), at most five,
+ * each cut at 400 characters. */
 static void print_reason(const char *output)
 {
     int shown = 0;
@@ -338,7 +339,13 @@ static void print_reason(const char *output)
         for (int k = 0; show && framing[k]; k++)
             show = strncmp(line, framing[k], strlen(framing[k])) != 0;
         if (show) {
-            printf("        %.*s\n", (int)(n > 200 ? 200 : n), line);
+            /* An unfinished exercise's line (common/exercise.c) up to its file: what the
+             * line goes on to say about images and REFERENCE= is for the renderers. */
+            size_t shown_n = n;
+            const char *cut = strstr(line, " is still an exercise (") ? strstr(line, "); it returns") : NULL;
+            if (cut && cut < line + n)
+                shown_n = (size_t)(cut - line) + 1;
+            printf("        %.*s\n", (int)(shown_n > 400 ? 400 : shown_n), line);
             shown++;
         }
         line += n + (end != NULL);

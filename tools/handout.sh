@@ -1,7 +1,8 @@
 #!/bin/bash
 # handout.sh DEST DOUBLE_LIBS FLOAT_LIBS - write the repository a student receives.
 #
-# DEST gets the project without solutions/: Makefile, README.md, common/,
+# DEST gets the project without solutions/: Makefile, README.md (with a first
+# section for the student), common/,
 # chapters/ (the skeletons), tests/, tools/, docs/, and reference/double/ and
 # reference/float/, the compiled reference of each chapter's exercise files
 # (libNN_name.a from DOUBLE_LIBS and FLOAT_LIBS, which `make handout` builds).
@@ -44,10 +45,38 @@ if [ -e "$dest" ] && [ -n "$(ls -A "$dest")" ]; then
     exit 1
 fi
 mkdir -p "$dest/reference/double" "$dest/reference/float" || exit 1
-cp -R Makefile README.md common chapters tests tools docs "$dest/" || exit 1
+cp -R Makefile common chapters tests tools docs "$dest/" || exit 1
 [ -e .gitignore ] && cp .gitignore "$dest/"
 cp "$double_libs"/lib*.a "$dest/reference/double/" || exit 1
 cp "$float_libs"/lib*.a "$dest/reference/float/" || exit 1
+# The copy's README.md starts with what a student does in it, before the
+# repository's first section.
+student_text=$(cat <<'TEXT'
+## Your copy
+
+This is a student's copy: the exercise files in `chapters/NN_name/` are skeletons for you to complete, and
+the reference versions of them come compiled, in `reference/`.  Start with
+[chapters/01_camera_rays/README.md](chapters/01_camera_rays/README.md).  From this folder:
+
+```sh
+make                  # builds your renderers into build-student/, each built-in scene into out-student/
+make grade CHAPTER=01 # your points for chapter 01: each test alone, and why it failed
+make REFERENCE=01     # your renderers with chapter 01 taken from the reference (out-student-ref01/)
+make STUDENT=0        # the reference renderers (build/) and images (out/), to compare yours with
+```
+
+An exercise you have not done yet prints one line the first time it runs, naming its `TODO` and file:
+until then the images that need it show only the background (black, or the scene's colour).  Chapter N's
+renderer uses your chapters 1 to N, so finish them in order or take the earlier ones from the reference
+with `REFERENCE=`.  `make grade` always links the reference for the other chapters: your points for a
+chapter depend on that chapter's files only.  `make test` runs every suite on all your files at once (it
+fails until every chapter is done).  Where the text below says `make` renders into `out/`, in this copy
+your images go to `out-student/` and your renderers to `build-student/`; `out/` and `build/` hold the
+reference's, once `make STUDENT=0` has built them.
+
+TEXT
+)
+awk -v text="$student_text" '!done && /^## / { print text; print ""; done = 1 } { print }' README.md >"$dest/README.md" || exit 1
 cat >"$dest/reference/README.md" <<'TEXT'
 # The compiled reference
 
