@@ -55,7 +55,7 @@ int texture_image_decode(const unsigned char *bytes, size_t size, texture_image 
         snprintf(problem, problem_size, "%s", size ? "the file is too large" : "the file is empty");
         return -1;
     }
-    /* PNG only, as SCENES.md says: it is the one format whose decoder in
+    /* PNG only, as docs/scenes.md says: it is the one format whose decoder in
      * stb_image notices a file cut short (the zlib stream ends early).  Its
      * JPEG, BMP and TGA decoders read missing bytes as zeros, its PNM decoder
      * leaves them undefined, and (found by fuzz/texture.c, stb_image 2.27)

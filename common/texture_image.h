@@ -2,7 +2,7 @@
  *
  * The scene reader decodes the image of every <texture> fully, here, with
  * stb_image, and keeps the texels in the scene description
- * (scene_texture.image).  The image is a PNG file (SCENES.md), the one format
+ * (scene_texture.image).  The image is a PNG file (docs/scenes.md), the one format
  * whose decoder notices a file cut short (texture_image.c says why).  So a broken image (a PNG cut
  * short, say) is refused with the scene's file and line before anything is
  * rendered, and a renderer looks texels up here and never reads a file.

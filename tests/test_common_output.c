@@ -23,7 +23,7 @@ static const char *in_folder(const char *name)
 }
 
 /* A 3x2 image of radiances that display_encode maps to known bytes: L = 1
- * is 255, L = 0 is 0 (SCENES.md's encoding at exposure 1). */
+ * is 255, L = 0 is 0 (docs/scenes.md's encoding at exposure 1). */
 static void make_image(image *img)
 {
     assert_int_equal(0, image_init(img, 3, 2));

@@ -7,7 +7,7 @@
  * R is the diffuse reflectance, I the intensity of the point light, r the
  * distance from the point to the light and l the unit vector towards it.  The
  * course's scene files give the diffuse coefficient k_d = R / pi directly as
- * a shader's diffuseColor (SCENES.md), so here L_d = k_d max(0, n . l) I / r^2,
+ * a shader's diffuseColor (docs/scenes.md), so here L_d = k_d max(0, n . l) I / r^2,
  * per colour channel.
  */
 #ifndef CH05_LAMBERT_H

@@ -18,7 +18,7 @@ vec3 normal_towards_viewer(vec3 n, vec3 d)
 
 const scene_shader *hit_shader(const scene *desc, const hit_record *hit)
 {
-    /* SCENES.md: a surface without a shader is white Lambertian (the
+    /* docs/scenes.md: a surface without a shader is white Lambertian (the
      * defaults of scene_default_shader). */
     static const scene_shader white = {
         .kind = SHADER_LAMBERTIAN,

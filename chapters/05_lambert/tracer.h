@@ -87,7 +87,7 @@ color trace(const tracer *tr, ray r, real t_min, real t_max, int depth, uint64_t
 vec3 normal_towards_viewer(vec3 n, vec3 d);
 
 /* The scene shader of a hit; a surface without a shader is white Lambertian
- * (SCENES.md). */
+ * (docs/scenes.md). */
 const scene_shader *hit_shader(const scene *desc, const hit_record *hit);
 
 #endif

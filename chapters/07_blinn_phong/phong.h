@@ -14,7 +14,7 @@
  *     course:  k_s max(0, n . h)^p I / r^2                (the course's images)
  *     lecture: k_s max(0, n . h)^p max(0, n . l) I / r^2  ("modified Blinn-Phong")
  *
- * k_s is the shader's specularColor and p its exponent (SCENES.md).  The
+ * k_s is the shader's specularColor and p its exponent (docs/scenes.md).  The
  * lecture writes L_r = (R/pi + k_s (n . h)^p) max(0, n . l) I / r^2: its
  * specular term is weighted by the cosine like the diffuse one.  The course's
  * solution leaves the cosine out of the specular term; --phong chooses.

@@ -11,7 +11,7 @@
  *
  * The contribution of one light is chapter 05's Lambert term, plus the
  * specular term (phong.h) for a Phong shader.  The ambient term is the
- * scene's <ambient> radiance, added as it is (SCENES.md); black when the
+ * scene's <ambient> radiance, added as it is (docs/scenes.md); black when the
  * scene has none, as in the course's scenes.
  */
 #ifndef CH07_SHADE_PHONG_H
