@@ -61,6 +61,8 @@ int renderer_main(const renderer *r, int argc, char **argv)
             fprintf(stderr, "%s: %s\n", r->name, err);
         } else {
             render_summary(stderr, r->name, &img, &opt, stats, output);
+            if (r->report && !opt.quiet)
+                r->report(prepared, stats, stderr);
             status = 0;
         }
         image_free(&img);

@@ -31,6 +31,9 @@ typedef struct {
     void *(*prepare)(const scene *desc, char *err, size_t err_size);
     sample_fn sample;
     void (*release)(void *prepared);
+    /* Optional: one more line after the summary (not with -q), such as what
+     * an acceleration structure cost and did. */
+    void (*report)(const void *prepared, render_stats stats, FILE *out);
 } renderer;
 
 int renderer_main(const renderer *r, int argc, char **argv);
