@@ -240,11 +240,15 @@ help:
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
 	@echo "make check           check-skeletons, check-snippets, check-figures: fail naming what is stale"
+	@echo "make bench-grid      chapter 11's grid against the linear scan and Embree 3 (installs libembree-dev, glmark2-data)"
 	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
 	@echo "chapters: $(CHAPTERS)"
 
 clean:
 	rm -rf build build-* out out-student
+
+# The grid's benchmark against Embree (make bench-grid).
+include bench/grid/grid.mk
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -104,10 +104,10 @@ static void compare_grid(const surface_list *list, grid_options opt, const ray *
         if (!same_hit(found[k], &expected[k], fb, &b)) {
             grid_free(&g);
             fail_msg("ray %ld: p = (%.17g, %.17g, %.17g), d = (%.17g, %.17g, %.17g), t in (%g, %g), density %g, "
-                     "mailbox %d: linear scan %s surface %d at t = %.17g, grid %s surface %d at t = %.17g",
+                     "mailbox %d, leap %d: linear scan %s surface %d at t = %.17g, grid %s surface %d at t = %.17g",
                      k, (double)rays[k].p.x, (double)rays[k].p.y, (double)rays[k].p.z, (double)rays[k].d.x,
                      (double)rays[k].d.y, (double)rays[k].d.z, (double)t_min[k], (double)t_max[k], opt.density,
-                     opt.mailbox, found[k] ? "hits" : "misses", found[k] ? expected[k].surface : -1,
+                     opt.mailbox, opt.leap, found[k] ? "hits" : "misses", found[k] ? expected[k].surface : -1,
                      found[k] ? (double)expected[k].t : 0.0, fb ? "hits" : "misses", fb ? b.surface : -1,
                      fb ? (double)b.t : 0.0);
         }
@@ -129,7 +129,7 @@ static long linear_answers(const surface_list *list, const ray *rays, const real
     return hits;
 }
 
-/* The same with mailboxing on and off and a few densities. */
+/* The same with mailboxing on and off, leaping on and off, and a few densities. */
 static long compare_all_knobs(const surface_list *list, const ray *rays, const real *t_min, const real *t_max,
                               long n)
 {
@@ -140,10 +140,12 @@ static long compare_all_knobs(const surface_list *list, const ray *rays, const r
     assert_non_null(found);
     long hits = linear_answers(list, rays, t_min, t_max, n, expected, found);
     for (int m = 0; m < 2; m++)
-        for (int k = 0; k < 3; k++) {
-            grid_options opt = {.density = densities[k], .max_cells = 1L << 20, .mailbox = m == 0};
-            compare_grid(list, opt, rays, t_min, t_max, n, expected, found);
-        }
+        for (int leap = 0; leap < 2; leap++)
+            for (int k = 0; k < 3; k++) {
+                grid_options opt = {
+                    .density = densities[k], .max_cells = 1L << 20, .mailbox = m == 0, .leap = leap == 1};
+                compare_grid(list, opt, rays, t_min, t_max, n, expected, found);
+            }
     free(expected);
     free(found);
     return hits;

@@ -17,8 +17,10 @@
  * So a renderer swaps the one for the other in one line.
  *
  * Knobs (DESIGN.md, principle 6): the cell density (cells per surface) with
- * a cap on the number of cells, and mailboxing (a surface already tested
- * along the ray is not tested again).
+ * a cap on the number of cells, mailboxing (a surface already tested along
+ * the ray is not tested again), and leaping (a ray in an empty cell whose
+ * neighbours up to r cells away are empty too crosses that whole block of
+ * empty cells in one step, as in Cohen and Sheffer's proximity clouds).
  */
 #ifndef CH11_GRID_H
 #define CH11_GRID_H
@@ -34,6 +36,7 @@ typedef struct {
     double density;  /* cells per surface: n_x n_y n_z is about density x (number of surfaces) */
     long max_cells;  /* the cap on n_x n_y n_z */
     bool mailbox;    /* skip a surface already tested along the ray */
+    bool leap;       /* leap over blocks of empty cells in one step */
 } grid_options;
 /* end snippet */
 
@@ -52,11 +55,15 @@ typedef struct {
      * in increasing index. */
     uint32_t *start;          /* n_x n_y n_z + 1 offsets */
     uint32_t *refs;           /* surface indices */
+    uint8_t *empty;           /* per cell: every cell within empty[c] - 1 cells (in each
+                               * axis) of c is empty; 0 for a cell with surfaces.  NULL
+                               * when leaping is off */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
     long n_cells, n_refs, n_unbinned;
     real margin;              /* every surface's box is widened by this before it is binned */
     real scale;               /* the largest coordinate of the box, for the rounding bounds */
     bool mailbox;
+    size_t peak_bytes;        /* the most memory the build held at once */
 } grid;
 /* end snippet */
 
@@ -66,12 +73,12 @@ typedef struct {
     uint64_t tests; /* surface_intersect calls */
 } grid_counts;
 
-/* The default knobs: GRID_DEFAULT_DENSITY, GRID_DEFAULT_MAX_CELLS, mailboxing on. */
+/* The default knobs: GRID_DEFAULT_DENSITY, GRID_DEFAULT_MAX_CELLS, mailboxing and leaping on. */
 grid_options grid_default_options(void);
 
 /* Builds the grid of `list`, which must outlive it and not change.  Returns
- * 0, or -1 with the problem in err (out of memory, more references than
- * 32-bit indices hold, a bad knob). */
+ * 0, or -1 with the problem in err (out of memory, more cell entries than
+ * 32-bit offsets hold, a bad knob). */
 int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, size_t err_size);
 void grid_free(grid *g);
 

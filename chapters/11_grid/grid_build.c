@@ -7,7 +7,8 @@
 
 grid_options grid_default_options(void)
 {
-    return (grid_options){.density = GRID_DEFAULT_DENSITY, .max_cells = GRID_DEFAULT_MAX_CELLS, .mailbox = true};
+    return (grid_options){
+        .density = GRID_DEFAULT_DENSITY, .max_cells = GRID_DEFAULT_MAX_CELLS, .mailbox = true, .leap = true};
 }
 
 static real get(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
@@ -86,13 +87,13 @@ static bool plane_touches_cell(const grid *g, const triangle *tri, vec3 n, int i
 }
 
 /* Lists surface s in every cell it overlaps: counts it there (fill NULL) or
- * writes its index at fill[cell]++.  False when a count passes 2^32. */
-static bool bin_surface(grid *g, const surface *s, uint32_t index, uint64_t *count, uint32_t *fill)
+ * writes its index at fill[cell]++. */
+static void bin_surface(grid *g, const surface *s, uint32_t index, uint32_t *count, uint32_t *fill)
 {
     vec3 lo, hi;
     surface_bounds(s, &lo, &hi);
     if (!vec3_is_finite(lo) || !vec3_is_finite(hi))
-        return true; /* unbinned: tested for every ray */
+        return; /* unbinned: tested for every ray */
     int first[3], last[3];
     grid_cell_range(g, widen(lo, -g->margin), widen(hi, g->margin), first, last);
     int spread = (last[0] > first[0]) + (last[1] > first[1]) + (last[2] > first[2]);
@@ -107,10 +108,9 @@ static bool bin_surface(grid *g, const surface *s, uint32_t index, uint64_t *cou
                 long c = i + (long)g->n[0] * (j + (long)g->n[1] * k);
                 if (fill)
                     g->refs[fill[c]++] = index;
-                else if (++count[c] > UINT32_MAX)
-                    return false;
+                else
+                    count[c]++;
             }
-    return true;
 }
 
 /* snippet: resolution */
@@ -139,6 +139,45 @@ static void resolution(const double extent[3], long surfaces, double density, lo
         if (cells <= (double)max_cells)
             return;
         s *= 0.99 * pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1));
+    }
+}
+/* end snippet */
+
+/* snippet: empty_distances */
+/* empty[c]: the distance from cell c to the nearest cell with surfaces,
+ * counted as the largest of the index differences along x, y and z (the
+ * chessboard distance), at most 255; 0 for a cell with surfaces.  Two
+ * sweeps of the 26 neighbours (Rosenfeld and Pfaltz's chamfer transform with
+ * every step weighing 1, which is exact for this distance): the first in
+ * increasing cell order takes the neighbours before the cell, the second in
+ * decreasing order those after it. */
+static void empty_distances(grid *g)
+{
+    const int nx = g->n[0], ny = g->n[1], nz = g->n[2];
+    for (long c = 0; c < g->n_cells; c++)
+        g->empty[c] = g->start[c + 1] > g->start[c] ? 0 : 255;
+    for (int sweep = 0; sweep < 2; sweep++) {
+        const int sign = sweep == 0 ? 1 : -1;
+        for (long q = 0; q < g->n_cells; q++) {
+            long c = sweep == 0 ? q : g->n_cells - 1 - q;
+            int i = (int)(c % nx), j = (int)(c / nx % ny), k = (int)(c / ((long)nx * ny));
+            int best = g->empty[c];
+            /* the 13 neighbours that come before c in this sweep's order: offsets
+             * (di, dj, dk) that are negative in the order of k, then j, then i */
+            for (int dk = -1; dk <= 0; dk++)
+                for (int dj = -1; dj <= 1; dj++)
+                    for (int di = -1; di <= 1; di++) {
+                        if (!(dk < 0 || dj < 0 || (dj == 0 && di < 0)))
+                            continue;
+                        int ii = i + sign * di, jj = j + sign * dj, kk = k + sign * dk;
+                        if (ii < 0 || ii >= nx || jj < 0 || jj >= ny || kk < 0 || kk >= nz)
+                            continue;
+                        int d = g->empty[ii + (long)nx * (jj + (long)ny * kk)] + 1;
+                        if (d < best)
+                            best = d;
+                    }
+            g->empty[c] = (uint8_t)best;
+        }
     }
 }
 /* end snippet */
@@ -201,21 +240,17 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
     g->n_cells = (long)g->n[0] * g->n[1] * g->n[2];
 
     /* Two passes over the surfaces: count each cell's surfaces, then, with the
-     * offsets summed from the counts, write them in increasing index. */
-    uint64_t *count = calloc((size_t)g->n_cells, sizeof *count);
+     * offsets summed from the counts, write them in increasing index.  A cell
+     * lists each surface at most once, so its count fits 32 bits; the same
+     * array then holds where the next index of each cell goes. */
+    uint32_t *count = calloc((size_t)g->n_cells, sizeof *count);
     g->start = malloc(((size_t)g->n_cells + 1) * sizeof *g->start);
     if (!count || !g->start) {
         free(count);
         goto out_of_memory;
     }
-    for (int k = 0; k < list->n; k++) {
-        if (!bin_surface(g, &list->items[k], (uint32_t)k, count, NULL)) {
-            free(count);
-            grid_free(g);
-            snprintf(err, err_size, "grid: a cell lists more than 2^32 surfaces; lower the density");
-            return -1;
-        }
-    }
+    for (int k = 0; k < list->n; k++)
+        bin_surface(g, &list->items[k], (uint32_t)k, count, NULL);
     uint64_t total = 0;
     for (long c = 0; c < g->n_cells; c++) {
         g->start[c] = (uint32_t)total;
@@ -229,18 +264,26 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
     }
     g->start[g->n_cells] = (uint32_t)total;
     g->n_refs = (long)total;
-    free(count);
-    uint32_t *fill = malloc((size_t)g->n_cells * sizeof *fill);
     g->refs = malloc((total ? (size_t)total : 1) * sizeof *g->refs);
-    if (!fill || !g->refs) {
-        free(fill);
+    if (!g->refs) {
+        free(count);
         goto out_of_memory;
     }
+    uint32_t *fill = count;
     for (long c = 0; c < g->n_cells; c++)
         fill[c] = g->start[c];
     for (int k = 0; k < list->n; k++)
         bin_surface(g, &list->items[k], (uint32_t)k, NULL, fill);
     free(fill);
+    /* the most the build held at once: the grid and the fill array */
+    g->peak_bytes = grid_memory(g) + (size_t)g->n_cells * sizeof *fill;
+    if (opt.leap) {
+        g->empty = malloc((size_t)g->n_cells);
+        if (!g->empty)
+            goto out_of_memory;
+        empty_distances(g);
+        g->peak_bytes += (size_t)g->n_cells;
+    }
     return 0;
 
 out_of_memory:
@@ -254,12 +297,15 @@ void grid_free(grid *g)
     free(g->start);
     free(g->refs);
     free(g->unbinned);
+    free(g->empty);
     g->start = g->refs = g->unbinned = NULL;
+    g->empty = NULL;
     g->n_cells = g->n_refs = g->n_unbinned = 0;
 }
 
 size_t grid_memory(const grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
-    return sizeof *g + (cells + (size_t)g->n_refs + (size_t)g->n_unbinned) * sizeof(uint32_t);
+    return sizeof *g + (cells + (size_t)g->n_refs + (size_t)g->n_unbinned) * sizeof(uint32_t) +
+           (g->empty ? (size_t)g->n_cells : 0);
 }

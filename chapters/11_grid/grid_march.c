@@ -97,14 +97,67 @@ static inline int nearest_axis(const dda *m)
     return m->next[0] < m->next[1] ? (m->next[0] < m->next[2] ? 0 : 2) : (m->next[1] < m->next[2] ? 1 : 2);
 }
 
-static inline int first_cell(const grid *g, int a, real f)
+/* The cell index along axis a of coordinate f (in cells from the grid's low
+ * corner), clamped to lowest .. highest. */
+static inline int index_in(real f, int lowest, int highest)
 {
-    if (!(f >= 0)) /* also NaN */
-        return 0;
-    if (f >= (real)(g->n[a] - 1))
-        return g->n[a] - 1;
+    if (!(f >= (real)lowest)) /* also NaN */
+        return lowest;
+    if (f >= (real)highest)
+        return highest;
     return (int)f;
 }
+
+static inline int first_cell(const grid *g, int a, real f) { return index_in(f, 0, g->n[a] - 1); }
+
+/* snippet: leap */
+/* The ray is in an empty cell whose neighbours up to r cells away along
+ * every axis are empty too: the block of (2r + 1)^3 cells around it holds
+ * nothing.  Leave the block in one step: along the axis whose block face the
+ * ray crosses first, the new index is just past that face, exactly; along the
+ * others it is the cell of the exit point, moved back along the ray by the
+ * rounding of that point (`back`, in units of length) and kept inside the
+ * block, so that rounding can only land the ray a cell short (in the empty
+ * block), never a cell too far.  False when the ray leaves the grid. */
+static inline bool dda_leap(const grid *g, dda *m, int r, const real p[3], const real d[3], const real inv_d[3],
+                            real reach, real d_max)
+{
+    real t_exit = REAL_INFINITY;
+    int axis = -1;
+    for (int a = 0; a < 3; a++) {
+        if (!m->step[a])
+            continue;
+        real t = crossing(g, a, m->step[a] > 0 ? m->i[a] + r + 1 : m->i[a] - r, p, inv_d);
+        if (t < t_exit) {
+            t_exit = t;
+            axis = a;
+        }
+    }
+    if (axis < 0)
+        return false;
+    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, inv_cell[3] = {g->inv_cell.x, g->inv_cell.y, g->inv_cell.z};
+    const real back = reach + 16 * REAL_EPSILON * real_abs(t_exit) * d_max;
+    int next[3];
+    for (int a = 0; a < 3; a++) {
+        if (a == axis) {
+            next[a] = m->i[a] + m->step[a] * (r + 1);
+        } else if (m->step[a]) {
+            real f = (p[a] + t_exit * d[a] - lo[a] - (real)m->step[a] * back) * inv_cell[a];
+            next[a] = index_in(f, m->i[a] - r, m->i[a] + r);
+        } else {
+            next[a] = m->i[a];
+        }
+        if (next[a] < 0 || next[a] >= g->n[a])
+            return false;
+    }
+    for (int a = 0; a < 3; a++) {
+        m->i[a] = next[a];
+        m->next[a] = m->step[a] ? crossing(g, a, m->i[a] + (m->step[a] > 0), p, inv_d) : REAL_INFINITY;
+    }
+    m->cell = m->i[0] + (long)g->n[0] * (m->i[1] + (long)g->n[1] * m->i[2]);
+    return true;
+}
+/* end snippet */
 
 bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_record *hit, grid_counts *counts)
 {
@@ -151,7 +204,8 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
     /* The first cell: the one holding p + t0 d, moved back along the ray by
      * the rounding of that point, and clamped to the grid. */
     dda m;
-    const real back = reach + 16 * REAL_EPSILON * real_abs(t0) * vec3_max_abs(r.d);
+    const real d_max = vec3_max_abs(r.d);
+    const real back = reach + 16 * REAL_EPSILON * real_abs(t0) * d_max;
     const real inv_cell[3] = {g->inv_cell.x, g->inv_cell.y, g->inv_cell.z};
     for (int a = 0; a < 3; a++) {
         m.step[a] = inv_d[a] > 0 ? 1 : inv_d[a] < 0 ? -1 : 0;
@@ -188,6 +242,11 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
         int a = nearest_axis(&m);
         if (s.best_t <= m.next[a] - slack[a])
             break;
+        if (g->empty && g->empty[m.cell] >= 2) { /* a block of empty cells: leap over it */
+            if (!dda_leap(g, &m, g->empty[m.cell] - 1, p, d, inv_d, reach, d_max))
+                break;
+            continue;
+        }
         if (!dda_step(g, &m, a, p, inv_d))
             break;
     }

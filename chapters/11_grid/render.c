@@ -11,7 +11,7 @@
  * only the knobs and the report.
  *
  * Knobs: --grid-density (cells per surface), --grid-cells (the cap on the
- * cells), --mailbox=on|off, --accel=grid|list (list: chapter 04's linear
+ * cells), --mailbox=on|off, --leap=on|off, --accel=grid|list (list: chapter 04's linear
  * scan, for comparison), --show=image|cells|tests (a heat map of the cells
  * visited or the surfaces tested per pixel), --heat-max (the count shown
  * white), and chapter 02's --sphere and chapter 03's --triangle.
@@ -40,6 +40,7 @@ static real density = (real)GRID_DEFAULT_DENSITY;
 static int max_cells = (int)GRID_DEFAULT_MAX_CELLS;
 static const char *const on_off[] = {"on", "off", NULL};
 static int mailbox_choice = 0;
+static int leap_choice = 0;
 static const char *const accel_choices[] = {"grid", "list", NULL};
 static int accel_choice = 0;
 enum { SHOW_IMAGE, SHOW_CELLS, SHOW_TESTS };
@@ -53,6 +54,7 @@ static const knob knobs[] = {
     {"grid-density", KNOB_REAL, &density, NULL, "grid cells per surface"},
     {"grid-cells", KNOB_INT, &max_cells, NULL, "the most cells the grid may have"},
     {"mailbox", KNOB_CHOICE, &mailbox_choice, on_off, "skip surfaces already tested along the ray"},
+    {"leap", KNOB_CHOICE, &leap_choice, on_off, "cross blocks of empty cells in one step"},
     {"accel", KNOB_CHOICE, &accel_choice, accel_choices, "grid, or chapter 04's linear scan over the list"},
     {"show", KNOB_CHOICE, &show_choice, show_choices, "the image, or cells visited or surfaces tested per pixel"},
     {"heat-max", KNOB_INT, &heat_max, NULL, "--show=cells|tests: the count shown white"},
@@ -137,7 +139,10 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
         return NULL;
     }
     if (accel_choice == 0) {
-        grid_options opt = {.density = (double)density, .max_cells = max_cells, .mailbox = mailbox_choice == 0};
+        grid_options opt = {.density = (double)density,
+                            .max_cells = max_cells,
+                            .mailbox = mailbox_choice == 0,
+                            .leap = leap_choice == 0};
         double start = now();
         char why[256];
         if (grid_build(&st->grid, &st->list, opt, why, sizeof why) != 0) {
