@@ -62,7 +62,7 @@ OUT := out$(if $(filter 1,$(STUDENT)),-student)
 IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
-        figure-renderers figures check-figures snippets check-snippets check
+        figure-renderers figures check-figures snippets check-snippets check check-grid-images
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -202,8 +202,12 @@ snippets:
 check-snippets:
 	@tools/snippets.sh check $(SNIPPET_TEXTS)
 
-# Text, skeletons and figures agree with their sources.
-check: check-skeletons check-snippets check-figures
+# Chapter 11's grid renders the images of the linear scan, byte for byte.
+check-grid-images: $(BUILD)/04_many_shapes/render $(BUILD)/11_grid/render
+	@tools/check-grid-images.sh $(BUILD)
+
+# Text, skeletons and figures agree with their sources; the grid changes no pixel.
+check: check-skeletons check-snippets check-figures check-grid-images
 
 # ---- tests ----------------------------------------------------------------------
 
@@ -239,7 +243,8 @@ help:
 	@echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
-	@echo "make check           check-skeletons, check-snippets, check-figures: fail naming what is stale"
+	@echo "make check           check-skeletons, check-snippets, check-figures, check-grid-images (chapter 11's"
+	@echo "                     images byte for byte the linear scan's): fail naming what is stale or differs"
 	@echo "make bench-grid      chapter 11's grid against the linear scan and Embree 3 (installs libembree-dev, glmark2-data)"
 	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"

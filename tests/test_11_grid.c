@@ -104,10 +104,10 @@ static void compare_grid(const surface_list *list, grid_options opt, const ray *
         if (!same_hit(found[k], &expected[k], fb, &b)) {
             grid_free(&g);
             fail_msg("ray %ld: p = (%.17g, %.17g, %.17g), d = (%.17g, %.17g, %.17g), t in (%g, %g), density %g, "
-                     "mailbox %d, leap %d: linear scan %s surface %d at t = %.17g, grid %s surface %d at t = %.17g",
+                     "mailbox %d, leap %d, cull %d: linear scan %s surface %d at t = %.17g, grid %s surface %d at t = %.17g",
                      k, (double)rays[k].p.x, (double)rays[k].p.y, (double)rays[k].p.z, (double)rays[k].d.x,
                      (double)rays[k].d.y, (double)rays[k].d.z, (double)t_min[k], (double)t_max[k], opt.density,
-                     opt.mailbox, opt.leap, found[k] ? "hits" : "misses", found[k] ? expected[k].surface : -1,
+                     opt.mailbox, opt.leap, opt.cull, found[k] ? "hits" : "misses", found[k] ? expected[k].surface : -1,
                      found[k] ? (double)expected[k].t : 0.0, fb ? "hits" : "misses", fb ? b.surface : -1,
                      fb ? (double)b.t : 0.0);
         }
@@ -129,23 +129,28 @@ static long linear_answers(const surface_list *list, const ray *rays, const real
     return hits;
 }
 
-/* The same with mailboxing on and off, leaping on and off, and a few densities. */
+/* The same through grids of a few densities with every knob on, and with
+ * mailboxing, leaping and culling off one at a time and all together. */
 static long compare_all_knobs(const surface_list *list, const ray *rays, const real *t_min, const real *t_max,
                               long n)
 {
-    static const double densities[] = {0.3, 2, 10};
+    static const struct {
+        double density;
+        bool mailbox, leap, cull;
+    } knobs[] = {
+        {0.3, true, true, true},  {2, true, true, true},  {10, true, true, true},   {2, false, true, true},
+        {2, true, false, true},   {2, true, true, false}, {2, false, false, false},
+    };
     hit_record *expected = malloc((size_t)n * sizeof *expected);
     bool *found = malloc((size_t)n * sizeof *found);
     assert_non_null(expected);
     assert_non_null(found);
     long hits = linear_answers(list, rays, t_min, t_max, n, expected, found);
-    for (int m = 0; m < 2; m++)
-        for (int leap = 0; leap < 2; leap++)
-            for (int k = 0; k < 3; k++) {
-                grid_options opt = {
-                    .density = densities[k], .max_cells = 1L << 20, .mailbox = m == 0, .leap = leap == 1};
-                compare_grid(list, opt, rays, t_min, t_max, n, expected, found);
-            }
+    for (size_t k = 0; k < sizeof knobs / sizeof knobs[0]; k++) {
+        grid_options opt = {.density = knobs[k].density, .max_cells = 1L << 20, .mailbox = knobs[k].mailbox,
+                            .leap = knobs[k].leap, .cull = knobs[k].cull};
+        compare_grid(list, opt, rays, t_min, t_max, n, expected, found);
+    }
     free(expected);
     free(found);
     return hits;
@@ -524,7 +529,7 @@ static void test_mailbox_counts(void **state)
         assert_int_equal(1, g.n[2]);
         /* along +x at y = 0.6, z = 0.45: through all 10 cells, missing everything */
         ray r = {{-1, (real)0.6, (real)0.45}, {1, 0, 0}};
-        grid_counts counts = {0, 0};
+        grid_counts counts = {0, 0, 0};
         hit_record hit;
         assert_false(grid_intersect_counted(&g, r, 0, REAL_INFINITY, &hit, &counts));
         assert_int_equal(10, counts.cells);
@@ -689,7 +694,7 @@ static void test_dda_cells(void **state)
             }
         if (near_corner)
             continue;
-        grid_counts counts = {0, 0};
+        grid_counts counts = {0, 0, 0};
         hit_record hit;
         assert_false(grid_intersect_counted(&g, r, 0, REAL_INFINITY, &hit, &counts));
         if (counts.cells != (uint64_t)crossings + 1)

@@ -20,7 +20,9 @@
  * a cap on the number of cells, mailboxing (a surface already tested along
  * the ray is not tested again), and leaping (a ray in an empty cell whose
  * neighbours up to r cells away are empty too crosses that whole block of
- * empty cells in one step, as in Cohen and Sheffer's proximity clouds).
+ * empty cells in one step, as in Cohen and Sheffer's proximity clouds),
+ * and culling (a surface of the cell is handed to surface_intersect only
+ * when the ray passes through the surface's bounding box within the window).
  */
 #ifndef CH11_GRID_H
 #define CH11_GRID_H
@@ -37,6 +39,7 @@ typedef struct {
     long max_cells;  /* the cap on n_x n_y n_z */
     bool mailbox;    /* skip a surface already tested along the ray */
     bool leap;       /* leap over blocks of empty cells in one step */
+    bool cull;       /* test a surface only when the ray passes through its box */
 } grid_options;
 /* end snippet */
 
@@ -58,6 +61,8 @@ typedef struct {
     uint8_t *empty;           /* per cell: every cell within empty[c] - 1 cells (in each
                                * axis) of c is empty; 0 for a cell with surfaces.  NULL
                                * when leaping is off */
+    float (*box)[6];          /* per surface: its bounding box, widened by the margin and rounded
+                               * outwards (lo x, y, z, hi x, y, z); NULL when culling is off */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
     long n_cells, n_refs, n_unbinned;
     real margin;              /* every surface's box is widened by this before it is binned */
@@ -69,11 +74,12 @@ typedef struct {
 
 /* What a march did: added to by grid_intersect_counted. */
 typedef struct {
-    uint64_t cells; /* cells visited */
-    uint64_t tests; /* surface_intersect calls */
+    uint64_t cells;  /* cells visited */
+    uint64_t tests;  /* surface_intersect calls */
+    uint64_t culled; /* surfaces of those cells whose boxes the ray passes by */
 } grid_counts;
 
-/* The default knobs: GRID_DEFAULT_DENSITY, GRID_DEFAULT_MAX_CELLS, mailboxing and leaping on. */
+/* The default knobs: GRID_DEFAULT_DENSITY, GRID_DEFAULT_MAX_CELLS, mailboxing, leaping and culling on. */
 grid_options grid_default_options(void);
 
 /* Builds the grid of `list`, which must outlive it and not change.  Returns

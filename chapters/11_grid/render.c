@@ -11,7 +11,7 @@
  * only the knobs and the report.
  *
  * Knobs: --grid-density (cells per surface), --grid-cells (the cap on the
- * cells), --mailbox=on|off, --leap=on|off, --accel=grid|list (list: chapter 04's linear
+ * cells), --mailbox=on|off, --leap=on|off, --cull=on|off, --accel=grid|list (list: chapter 04's linear
  * scan, for comparison), --show=image|cells|tests (a heat map of the cells
  * visited or the surfaces tested per pixel), --heat-max (the count shown
  * white), and chapter 02's --sphere and chapter 03's --triangle.
@@ -41,6 +41,7 @@ static int max_cells = (int)GRID_DEFAULT_MAX_CELLS;
 static const char *const on_off[] = {"on", "off", NULL};
 static int mailbox_choice = 0;
 static int leap_choice = 0;
+static int cull_choice = 0;
 static const char *const accel_choices[] = {"grid", "list", NULL};
 static int accel_choice = 0;
 enum { SHOW_IMAGE, SHOW_CELLS, SHOW_TESTS };
@@ -55,6 +56,7 @@ static const knob knobs[] = {
     {"grid-cells", KNOB_INT, &max_cells, NULL, "the most cells the grid may have"},
     {"mailbox", KNOB_CHOICE, &mailbox_choice, on_off, "skip surfaces already tested along the ray"},
     {"leap", KNOB_CHOICE, &leap_choice, on_off, "cross blocks of empty cells in one step"},
+    {"cull", KNOB_CHOICE, &cull_choice, on_off, "test a surface only when the ray meets its box"},
     {"accel", KNOB_CHOICE, &accel_choice, accel_choices, "grid, or chapter 04's linear scan over the list"},
     {"show", KNOB_CHOICE, &show_choice, show_choices, "the image, or cells visited or surfaces tested per pixel"},
     {"heat-max", KNOB_INT, &heat_max, NULL, "--show=cells|tests: the count shown white"},
@@ -91,7 +93,7 @@ static color sample(const void *prepared, real u, real v, uint64_t *rays)
     ray r = camera_ray(&st->cam, u, v);
     if (accel_choice == 1) /* the linear scan: chapter 04 as it is */
         return trace_flat(&st->list, st->desc, r, 0, REAL_INFINITY);
-    grid_counts counts = {0, 0};
+    grid_counts counts = {0, 0, 0};
     hit_record hit;
     /* snippet: swap */
     bool found = grid_intersect_counted(&st->grid, r, 0, REAL_INFINITY, &hit, &counts);
@@ -142,7 +144,8 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
         grid_options opt = {.density = (double)density,
                             .max_cells = max_cells,
                             .mailbox = mailbox_choice == 0,
-                            .leap = leap_choice == 0};
+                            .leap = leap_choice == 0,
+                            .cull = cull_choice == 0};
         double start = now();
         char why[256];
         if (grid_build(&st->grid, &st->list, opt, why, sizeof why) != 0) {
@@ -165,7 +168,7 @@ static void report(const void *prepared, render_stats stats, FILE *out)
                 st->list.n, st->list.n, stats.seconds);
         return;
     }
-    grid_counts sum = {0, 0};
+    grid_counts sum = {0, 0, 0};
     for (int t = 0; t < SLOTS; t++) {
         sum.cells += st->slots[t].counts.cells;
         sum.tests += st->slots[t].counts.tests;

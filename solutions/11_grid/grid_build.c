@@ -8,7 +8,7 @@
 grid_options grid_default_options(void)
 {
     return (grid_options){
-        .density = GRID_DEFAULT_DENSITY, .max_cells = GRID_DEFAULT_MAX_CELLS, .mailbox = true, .leap = true};
+        .density = GRID_DEFAULT_DENSITY, .max_cells = GRID_DEFAULT_MAX_CELLS, .mailbox = true, .leap = true, .cull = true};
 }
 
 static real get(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
@@ -150,6 +150,21 @@ static void resolution(const double extent[3], long surfaces, double density, lo
 }
 /* end snippet */
 
+/* A surface's box for culling: widened by the margin, then rounded outwards
+ * to float, so that it holds every point the real-valued box holds. */
+static void cull_box(const grid *g, const surface *s, float box[6])
+{
+    vec3 lo, hi;
+    surface_bounds(s, &lo, &hi);
+    lo = widen(lo, -g->margin);
+    hi = widen(hi, g->margin);
+    for (int a = 0; a < 3; a++) {
+        float l = (float)get(lo, a), h = (float)get(hi, a);
+        box[a] = (real)l > get(lo, a) ? nextafterf(l, -INFINITY) : l;
+        box[3 + a] = (real)h < get(hi, a) ? nextafterf(h, INFINITY) : h;
+    }
+}
+
 /* snippet: empty_distances */
 /* empty[c]: the distance from cell c to the nearest cell with surfaces,
  * counted as the largest of the index differences along x, y and z (the
@@ -284,6 +299,14 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
     free(fill);
     /* the most the build held at once: the grid and the fill array */
     g->peak_bytes = grid_memory(g) + (size_t)g->n_cells * sizeof *fill;
+    if (opt.cull) {
+        g->box = malloc((size_t)list->n * sizeof *g->box);
+        if (!g->box)
+            goto out_of_memory;
+        for (int k = 0; k < list->n; k++)
+            cull_box(g, &list->items[k], g->box[k]);
+        g->peak_bytes += (size_t)list->n * sizeof *g->box;
+    }
     if (opt.leap) {
         g->empty = malloc((size_t)g->n_cells);
         if (!g->empty)
@@ -305,8 +328,10 @@ void grid_free(grid *g)
     free(g->refs);
     free(g->unbinned);
     free(g->empty);
+    free(g->box);
     g->start = g->refs = g->unbinned = NULL;
     g->empty = NULL;
+    g->box = NULL;
     g->n_cells = g->n_refs = g->n_unbinned = 0;
 }
 
@@ -314,5 +339,5 @@ size_t grid_memory(const grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
     return sizeof *g + (cells + (size_t)g->n_refs + (size_t)g->n_unbinned) * sizeof(uint32_t) +
-           (g->empty ? (size_t)g->n_cells : 0);
+           (g->empty ? (size_t)g->n_cells : 0) + (g->box ? (size_t)g->list->n * sizeof *g->box : 0);
 }

@@ -47,6 +47,42 @@ static inline void test_surface(search *s, uint32_t k)
 }
 /* end snippet */
 
+/* snippet: cull */
+/* Whether the ray can meet a surface whose (widened) box is `box` at some t
+ * in (t_min, upper): the slabs of the three axes overlap there.  `near[a]`
+ * picks the side of the box the ray enters by along axis a (box[a] for
+ * d_a > 0, box[3 + a] for d_a < 0) and far[a] the other; each crossing is
+ * widened by the axis's rounding slack, and a NaN never culls, so that a
+ * surface surface_intersect would report is never culled.  A ray with a
+ * zero component (inv_d = 0) takes the slower, general path. */
+static inline bool passes_box(const float box[6], const real p[3], const real inv_d[3], const real slack[3],
+                              const int near[3], const int far[3], bool parallel, real t_min, real upper)
+{
+    real t_in = t_min, t_out = upper;
+    if (!parallel) {
+        for (int a = 0; a < 3; a++) {
+            real t0 = ((real)box[near[a]] - p[a]) * inv_d[a] - slack[a];
+            real t1 = ((real)box[far[a]] - p[a]) * inv_d[a] + slack[a];
+            t_in = t0 > t_in ? t0 : t_in;
+            t_out = t1 < t_out ? t1 : t_out;
+        }
+        return !(t_in > t_out);
+    }
+    for (int a = 0; a < 3; a++) {
+        if (inv_d[a] == 0) { /* parallel to the slab: inside it or never */
+            if (p[a] < (real)box[a] || p[a] > (real)box[3 + a])
+                return false;
+            continue;
+        }
+        real t0 = ((real)box[near[a]] - p[a]) * inv_d[a] - slack[a];
+        real t1 = ((real)box[far[a]] - p[a]) * inv_d[a] + slack[a];
+        t_in = t0 > t_in ? t0 : t_in;
+        t_out = t1 < t_out ? t1 : t_out;
+    }
+    return !(t_in > t_out);
+}
+/* end snippet */
+
 /* snippet: dda */
 /* The march's state (Amanatides and Woo): the cell the ray is in, the
  * direction of its steps, and the t at which it crosses the next cell
@@ -100,10 +136,14 @@ static inline bool dda_step(const grid *g, dda *m, int a, const real p[3], const
 }
 /* end snippet */
 
-/* The axis whose boundary the ray crosses first: the cell's far side. */
+/* The axis whose boundary the ray crosses first: the cell's far side.  From
+ * the three comparisons, without branches (which way they go changes from
+ * cell to cell, and a mispredicted branch costs more than the lookup). */
 static inline int nearest_axis(const dda *m)
 {
-    return m->next[0] < m->next[1] ? (m->next[0] < m->next[2] ? 0 : 2) : (m->next[1] < m->next[2] ? 1 : 2);
+    static const int8_t axis[8] = {2, 1, 2, 1, 2, 2, 0, 0}; /* by (x<y, x<z, y<z) */
+    int k = ((m->next[0] < m->next[1]) << 2) | ((m->next[0] < m->next[2]) << 1) | (m->next[1] < m->next[2]);
+    return axis[k];
 }
 
 /* The cell index along axis a of coordinate f (in cells from the grid's low
@@ -171,7 +211,7 @@ static inline bool dda_leap(const grid *g, dda *m, int r, const real p[3], const
 bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_record *hit, grid_counts *counts)
 {
     search s = {.list = g->list, .r = r, .t_min = t_min, .best_t = t_max, .upper = t_max, .best = -1};
-    uint64_t cells = 0;
+    uint64_t cells = 0, culled = 0;
     for (long u = 0; u < g->n_unbinned; u++)
         test_surface(&s, g->unbinned[u]);
     if (g->n_cells == 0)
@@ -189,10 +229,15 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
     const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, hi[3] = {g->hi.x, g->hi.y, g->hi.z};
     const real reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
     real inv_d[3], slack[3], t0 = t_min, t1 = t_max;
+    int near[3], far[3];
+    bool parallel = false;
     for (int a = 0; a < 3; a++) {
         inv_d[a] = 1 / d[a];
+        near[a] = d[a] < 0 ? 3 + a : a;
+        far[a] = d[a] < 0 ? a : 3 + a;
         if (!isfinite(inv_d[a])) { /* d_a = +0 or -0, or tiny */
             inv_d[a] = slack[a] = 0;
+            parallel = true;
             if (!(p[a] >= lo[a] && p[a] <= hi[a]))
                 goto done;
             continue;
@@ -242,6 +287,10 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
                     continue; /* tested already along this ray */
                 mailbox[k % MAILBOX] = k;
             }
+            if (g->box && !passes_box(g->box[k], p, inv_d, slack, near, far, parallel, t_min, s.upper)) {
+                culled++;
+                continue; /* the ray passes by its box */
+            }
             test_surface(&s, k);
         }
         /* The cell ends where the ray crosses its nearest boundary.  A hit no
@@ -265,6 +314,7 @@ done:
     if (counts) {
         counts->cells += cells;
         counts->tests += s.tests;
+        counts->culled += culled;
     }
     if (s.best < 0)
         return false;
