@@ -77,20 +77,42 @@ void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int 
 }
 /* end snippet */
 
-/* Whether a triangle can touch cell (i, j, k): its plane passes within the
- * cell widened by the margin.  With n = (b - a) x (c - a), the plane is
- * n.(x - a) = 0 and a box of centre m and half-sizes h reaches it when
- * |n.(m - a)| <= |n_x| h_x + |n_y| h_y + |n_z| h_z.  The margin in h is far
- * larger than the rounding of either side, so the test only ever says yes
- * too often.  Spheres and the triangles that fill one row of cells at most
- * are binned by their boxes alone. */
-static bool plane_touches_cell(const grid *g, const triangle *tri, vec3 n, int i, int j, int k)
+/* Whether a triangle can touch cell (i, j, k), by the separating axis test
+ * of Akenine-Moller (2001): the triangle and the box are apart when their
+ * projections on some axis are, and it suffices to try the box's three
+ * axes (the cell range has done that), the triangle's normal and the nine
+ * cross products of a box axis with a triangle edge.  The box is the cell
+ * widened by the margin, and each comparison allows a rounding term on top,
+ * so the test says yes too often, never too rarely: a triangle is listed in
+ * every cell it meets.  Spheres and triangles within one cell's box along
+ * every axis are binned by their boxes alone. */
+static bool triangle_touches_cell(const grid *g, const triangle *tri, int i, int j, int k)
 {
     vec3 h = widen(vec3_scale(g->cell, (real)0.5), g->margin);
     vec3 m = vec3_make(g->lo.x + ((real)i + (real)0.5) * g->cell.x, g->lo.y + ((real)j + (real)0.5) * g->cell.y,
                        g->lo.z + ((real)k + (real)0.5) * g->cell.z);
-    real reach = real_abs(n.x) * h.x + real_abs(n.y) * h.y + real_abs(n.z) * h.z;
-    return !(real_abs(vec3_dot(n, vec3_sub(m, tri->a))) > reach); /* NaN: touches */
+    /* the vertices relative to the cell's centre, and the edges */
+    const vec3 v[3] = {vec3_sub(tri->a, m), vec3_sub(tri->b, m), vec3_sub(tri->c, m)};
+    const vec3 e[3] = {vec3_sub(v[1], v[0]), vec3_sub(v[2], v[1]), vec3_sub(v[0], v[2])};
+    const real rounding = 8 * REAL_EPSILON * (g->scale + vec3_max_abs(m));
+    vec3 axes[10];
+    int n = 0;
+    axes[n++] = vec3_cross(e[0], e[1]); /* the normal */
+    const vec3 unit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            axes[n++] = vec3_cross(unit[a], e[b]);
+    for (int q = 0; q < n; q++) {
+        vec3 u = axes[q];
+        real p0 = vec3_dot(v[0], u), p1 = vec3_dot(v[1], u), p2 = vec3_dot(v[2], u);
+        real lo = p0 < p1 ? (p0 < p2 ? p0 : p2) : (p1 < p2 ? p1 : p2);
+        real hi = p0 > p1 ? (p0 > p2 ? p0 : p2) : (p1 > p2 ? p1 : p2);
+        real sum = real_abs(u.x) + real_abs(u.y) + real_abs(u.z);
+        real r = real_abs(u.x) * h.x + real_abs(u.y) * h.y + real_abs(u.z) * h.z + rounding * sum;
+        if (lo > r || hi < -r) /* apart along u (a NaN never separates) */
+            return false;
+    }
+    return true;
 }
 
 /* Lists surface s in every cell it overlaps: counts it there (fill NULL) or
@@ -103,14 +125,12 @@ static void bin_surface(grid *g, const surface *s, uint32_t index, uint32_t *cou
         return; /* unbinned: tested for every ray */
     int first[3], last[3];
     grid_cell_range(g, widen(lo, -g->margin), widen(hi, g->margin), first, last);
-    int spread = (last[0] > first[0]) + (last[1] > first[1]) + (last[2] > first[2]);
-    bool by_plane = s->kind == SHAPE_TRIANGLE && spread >= 2;
-    vec3 n = by_plane ? vec3_cross(vec3_sub(s->triangle.b, s->triangle.a), vec3_sub(s->triangle.c, s->triangle.a))
-                      : vec3_make(0, 0, 0);
+    bool one_cell = first[0] == last[0] && first[1] == last[1] && first[2] == last[2];
+    bool by_axes = s->kind == SHAPE_TRIANGLE && !one_cell;
     for (int k = first[2]; k <= last[2]; k++)
         for (int j = first[1]; j <= last[1]; j++)
             for (int i = first[0]; i <= last[0]; i++) {
-                if (by_plane && !plane_touches_cell(g, &s->triangle, n, i, j, k))
+                if (by_axes && !triangle_touches_cell(g, &s->triangle, i, j, k))
                     continue;
                 long c = i + (long)g->n[0] * (j + (long)g->n[1] * k);
                 if (fill)
