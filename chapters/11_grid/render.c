@@ -102,11 +102,14 @@ static color sample(const void *prepared, real u, real v, uint64_t *rays)
     if (t < SLOTS) {
         st->slots[t].counts.cells += counts.cells;
         st->slots[t].counts.tests += counts.tests;
+        st->slots[t].counts.culled += counts.culled;
     } else {
 #pragma omp atomic
         st->slots[0].counts.cells += counts.cells;
 #pragma omp atomic
         st->slots[0].counts.tests += counts.tests;
+#pragma omp atomic
+        st->slots[0].counts.culled += counts.culled;
     }
     if (show_choice != SHOW_IMAGE)
         return heat_color(show_choice == SHOW_CELLS ? counts.cells : counts.tests, heat_max);
@@ -172,14 +175,16 @@ static void report(const void *prepared, render_stats stats, FILE *out)
     for (int t = 0; t < SLOTS; t++) {
         sum.cells += st->slots[t].counts.cells;
         sum.tests += st->slots[t].counts.tests;
+        sum.culled += st->slots[t].counts.culled;
     }
     const grid *g = &st->grid;
     fprintf(out,
             "11_grid: grid %dx%dx%d = %ld cells for %d surfaces (%.2f per cell), %.1f MB, built in %.3f s; "
-            "per ray %.2f cells, %.2f intersection tests; traced in %.3f s\n",
+            "per ray %.2f cells, %.2f intersection tests (%.2f more culled by their boxes); traced in %.3f s\n",
             g->n[0], g->n[1], g->n[2], g->n_cells, st->list.n,
             g->n_cells ? (double)g->n_refs / (double)g->n_cells : 0.0, (double)grid_memory(g) / 1e6,
-            st->build_seconds, (double)sum.cells / rays, (double)sum.tests / rays, stats.seconds);
+            st->build_seconds, (double)sum.cells / rays, (double)sum.tests / rays, (double)sum.culled / rays,
+            stats.seconds);
 }
 
 /* snippet: builtin */
