@@ -157,8 +157,9 @@ static inline int first_cell(const grid *g, int a, real f) { return index_in(f, 
  * ray crosses first, the new index is just past that face, exactly; along the
  * others it is the cell of the exit point, moved back along the ray by the
  * rounding of that point (`back`, in units of length) and kept inside the
- * block, so that rounding can only land the ray a cell short (in the empty
- * block), never a cell too far.  False when the ray leaves the grid. */
+ * block and the grid, so that rounding can only land the ray a cell short
+ * (in the empty block), never a cell too far.  False when the ray leaves the
+ * grid through the block's face. */
 static inline bool dda_leap(const grid *g, dda *m, int r, const real p[3], const real d[3], const real inv_d[3],
                             real reach, real d_max)
 {
@@ -181,14 +182,16 @@ static inline bool dda_leap(const grid *g, dda *m, int r, const real p[3], const
     for (int a = 0; a < 3; a++) {
         if (a == axis) {
             next[a] = m->i[a] + m->step[a] * (r + 1);
-        } else if (m->step[a]) {
+            if (next[a] < 0 || next[a] >= g->n[a])
+                return false; /* the block's face is beyond the grid's */
+        } else if (m->step[a]) { /* in the block and in the grid */
             real f = (p[a] + t_exit * d[a] - lo[a] - (real)m->step[a] * back) * inv_cell[a];
-            next[a] = index_in(f, m->i[a] - r, m->i[a] + r);
+            int lowest = m->i[a] - r > 0 ? m->i[a] - r : 0;
+            int highest = m->i[a] + r < g->n[a] - 1 ? m->i[a] + r : g->n[a] - 1;
+            next[a] = index_in(f, lowest, highest);
         } else {
             next[a] = m->i[a];
         }
-        if (next[a] < 0 || next[a] >= g->n[a])
-            return false;
     }
     for (int a = 0; a < 3; a++) {
         m->i[a] = next[a];
