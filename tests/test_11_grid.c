@@ -104,7 +104,8 @@ static void compare_grid(const surface_list *list, grid_options opt, const ray *
         if (!same_hit(found[k], &expected[k], fb, &b)) {
             grid_free(&g);
             fail_msg("ray %ld: p = (%.17g, %.17g, %.17g), d = (%.17g, %.17g, %.17g), t in (%g, %g), density %g, "
-                     "mailbox %d, leap %d, cull %d: linear scan %s surface %d at t = %.17g, grid %s surface %d at t = %.17g",
+                     "mailbox %d, leap %d, cull %d: linear scan %s surface %d at t = %.17g, "
+                     "grid %s surface %d at t = %.17g",
                      k, (double)rays[k].p.x, (double)rays[k].p.y, (double)rays[k].p.z, (double)rays[k].d.x,
                      (double)rays[k].d.y, (double)rays[k].d.z, (double)t_min[k], (double)t_max[k], opt.density,
                      opt.mailbox, opt.leap, opt.cull, found[k] ? "hits" : "misses", found[k] ? expected[k].surface : -1,
@@ -626,7 +627,8 @@ static void test_cell_range(void **state)
     h.cell = vec3_make((real)0.31, (real)0.77, (real)0.093);
     h.inv_cell = vec3_make(1 / h.cell.x, 1 / h.cell.y, 1 / h.cell.z);
     for (int k = 0; k < 2000; k++) {
-        vec3 a = uniform_vec(vec3_make(-5, 1, 9), vec3_make(2, 8, 12)), b = uniform_vec(vec3_make(-5, 1, 9), vec3_make(2, 8, 12));
+        const vec3 box_lo = {-5, 1, 9}, box_hi = {2, 8, 12};
+        vec3 a = uniform_vec(box_lo, box_hi), b = uniform_vec(box_lo, box_hi);
         vec3 lo = vec3_make(real_fmin(a.x, b.x), real_fmin(a.y, b.y), real_fmin(a.z, b.z));
         vec3 hi = vec3_make(real_fmax(a.x, b.x), real_fmax(a.y, b.y), real_fmax(a.z, b.z));
         int first[3], last[3];

@@ -14,6 +14,8 @@ bench-grid:
 	@$(MAKE) --no-print-directory STUDENT=0 SANITIZE=0 $(BENCH_GRID)
 	@bench/grid/run.sh $(BENCH_GRID)
 
-$(BENCH_GRID): $(call objs,bench/grid/grid_vs_embree.c $(foreach c,$(call upto,11_grid),$(call stage_src,$c,0)) $(COMMON_SRC))
+BENCH_GRID_SRC := bench/grid/grid_vs_embree.c $(foreach c,$(call upto,11_grid),$(call stage_src,$c,0)) $(COMMON_SRC)
+
+$(BENCH_GRID): $(call objs,$(BENCH_GRID_SRC))
 	@mkdir -p $(@D)
 	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lembree3 -o $@

@@ -7,8 +7,11 @@
 
 grid_options grid_default_options(void)
 {
-    return (grid_options){
-        .density = GRID_DEFAULT_DENSITY, .max_cells = GRID_DEFAULT_MAX_CELLS, .mailbox = true, .leap = true, .cull = true};
+    return (grid_options){.density = GRID_DEFAULT_DENSITY,
+                          .max_cells = GRID_DEFAULT_MAX_CELLS,
+                          .mailbox = true,
+                          .leap = true,
+                          .cull = true};
 }
 
 static real get(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
