@@ -1,11 +1,23 @@
 #!/bin/sh
-# deps.sh CC - make sure the Debian packages the build needs are installed.
+# deps.sh CC [GROUP...] - make sure the Debian packages the build needs are installed.
 #
 # Each need is probed by compiling a one-line program with CC.  What is
 # missing is installed with apt-get (as root) or sudo apt-get (when sudo works
 # without a password); otherwise one line names the packages and the build stops.
+# Optional groups add the needs of one target: bench (make bench: gnuplot-nox
+# for the plots, povray for the comparison with POV-Ray).
 cc=${1:-cc}
+[ $# -gt 0 ] && shift
 missing=""
+for group in "$@"; do
+    case "$group" in
+        bench)
+            command -v gnuplot >/dev/null 2>&1 || missing="$missing gnuplot-nox"
+            command -v povray >/dev/null 2>&1 || missing="$missing povray"
+            ;;
+        *) echo "deps.sh: unknown group '$group' (known: bench)" >&2; exit 2 ;;
+    esac
+done
 
 probe() { # package, program, extra flags
     printf '%s\n' "$2" | $cc $3 -x c -fsyntax-only - >/dev/null 2>&1 || missing="$missing $1"

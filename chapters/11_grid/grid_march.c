@@ -1,5 +1,6 @@
 /* grid_march.c - chapter 11: the closest hit, cell by cell along the ray. */
 #include "11_grid/grid.h"
+#include "exercise.h"
 
 #include <math.h>
 
@@ -118,6 +119,7 @@ static inline bool dda_step(const grid *g, dda *m, int a, const real p[3], const
      *              (crossing(g, a, plane, p, inv_d) computes it)
      * Compute next_a from the plane each time rather than adding a fixed
      * t step: the sum would gather one rounding per cell. */
+    EXERCISE_STUB("11_grid", "grid_march.c", "dda_step");
     (void)g;
     (void)m;
     (void)a;

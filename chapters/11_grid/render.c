@@ -22,6 +22,7 @@
 #include <time.h>
 
 #include "01_camera_rays/camera.h"
+#include "01_camera_rays/pixel.h"
 #include "04_many_shapes/closest_hit.h"
 #include "04_many_shapes/flat_shading.h"
 #include "04_many_shapes/scene_surfaces.h"
@@ -35,7 +36,7 @@ static const sphere_formula sphere_formulas[] = {SPHERE_ROBUST, SPHERE_TEXTBOOK}
 static int sphere_choice = 0;
 static const char *const triangle_choices[] = {"cramer", "watertight", NULL};
 static const triangle_test triangle_tests[] = {TRIANGLE_CRAMER, TRIANGLE_WATERTIGHT};
-static int triangle_choice = 0;
+static int triangle_choice = TRIANGLE_TEST_DEFAULT; /* triangle_choices is in the order of the enum */
 static real density = (real)GRID_DEFAULT_DENSITY;
 static int max_cells = (int)GRID_DEFAULT_MAX_CELLS;
 static const char *const on_off[] = {"on", "off", NULL};
@@ -276,6 +277,7 @@ int main(int argc, char **argv)
         .prepare = prepare,
         .sample = sample,
         .release = release,
+        .pixel_to_image = pixel_to_image,
         .report = report,
     };
     return renderer_main(&r, argc, argv);

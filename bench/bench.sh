@@ -1,0 +1,315 @@
+#!/bin/bash
+# bench.sh BUILD FLOAT_BUILD TOOLS - the measurements of docs/measurements.md.
+#
+# Run by `make bench`, which builds the renderers of the double build BUILD and
+# the float build FLOAT_BUILD and the bench's tools into TOOLS first.  Writes
+# docs/measurements.md and docs/figures/bench_*.png; its scratch files go into
+# BUILD/bench/.  Nothing is listed by hand: the chapters are the folders
+# chapters/NN_name/, each renderer's knobs the --NAME=V lines of its --help,
+# and a chapter's sweep of extremes is its optional hook (bench/hooks/README.md).
+#
+# Environment: BENCH_REPS (rounds per timing, default 5), BENCH_TARGET (the
+# seconds one timed render is sized to take on one thread, default 0.2),
+# BENCH_MAX_TRIANGLES (largest tessellated sphere, default 1000000),
+# BENCH_CUT (seconds after which timings take 3 rounds at most, default 300),
+# RT_CORNELL (the course's data folder, default ../shared/cornell/sp17-ray1/data).
+set -u
+if [ $# -ne 3 ]; then
+    echo "usage: $0 BUILD FLOAT_BUILD TOOLS" >&2
+    exit 2
+fi
+build=$1 fbuild=$2 tools=$3
+reps=${BENCH_REPS:-5}
+target=${BENCH_TARGET:-0.2}
+max_triangles=${BENCH_MAX_TRIANGLES:-1000000}
+budget_cut=${BENCH_CUT:-300}
+cornell=${RT_CORNELL:-../shared/cornell/sp17-ray1/data}
+figures=docs/figures
+page=docs/measurements.md
+work=$build/bench
+stage_scene=bench/scenes/stages.xml
+here=$(dirname "$0")
+# shellcheck source=bench/lib.sh
+. "$here/lib.sh"
+
+rm -rf "$work"
+mkdir -p "$work/img" "$work/page" "$figures" || exit 1
+: >"$work/commands.txt"
+
+mapfile -t chapters < <(for d in chapters/[0-9][0-9]_*/; do basename "$d"; done | sort)
+if [ ${#chapters[@]} -eq 0 ]; then
+    echo "bench: no chapters/NN_name/ folders" >&2
+    exit 1
+fi
+latest=${chapters[${#chapters[@]} - 1]}
+num() { echo "${1%%_*}"; }
+title() { echo "$1" | sed 's/^\([0-9]*\)_/\1 /; s/_/ /g'; }
+for c in "${chapters[@]}"; do
+    for b in "$build" "$fbuild"; do
+        [ -x "$b/$c/render" ] || { echo "bench: $b/$c/render is missing (run make bench)" >&2; exit 1; }
+    done
+done
+
+started=$(date -u '+%Y-%m-%d %H:%M UTC')
+cpu=$(awk -F': ' '/^model name/ { print $2; exit }' /proc/cpuinfo 2>/dev/null)
+cores=$(nproc 2>/dev/null || echo 1)
+compiler=$(${CC:-cc} --version 2>/dev/null | head -n 1)
+load_before=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
+note "bench: ${#chapters[@]} chapters (${chapters[*]}), $reps rounds per timing, $cores cores ($cpu)"
+
+# ---- 1. the knob table --------------------------------------------------------------
+#
+# Each knob is measured where it first appears, on that chapter's built-in
+# scene, and in the latest chapter that still has it, on the scene of all
+# stages (bench/scenes/stages.xml), where every later stage runs too.  Each
+# setting is timed on one thread at a size calibrated for the default
+# setting; its image is compared with the image of the reference setting.
+
+# The calibrated sizes, one per chapter and scene, found once (in this shell,
+# not in a $(...) subshell, so that they are kept): calibrate CHAPTER, then
+# builtin_size CHAPTER and stage_size CHAPTER print them.
+declare -A size_builtin size_stage
+calibrate() {
+    [ -n "${size_builtin[$1]:-}" ] || size_builtin[$1]=$(calibrated_size "$build/$1/render")
+    [ -n "${size_stage[$1]:-}" ] || size_stage[$1]=$(calibrated_size "$build/$1/render" "$stage_scene")
+}
+builtin_size() { echo "${size_builtin[$1]}"; }
+stage_size() { echo "${size_stage[$1]}"; }
+for c in "${chapters[@]}"; do
+    calibrate "$c"
+    note "calibrated $c: built-in scene ${size_builtin[$c]}, scene of all stages ${size_stage[$c]} (about $target s on 1 thread)"
+done
+
+knob_rows=$work/knob_rows.tsv # id chapter knob value default? ref? b_time b_min b_max b_ratio b_share b_max s_... stage_chapter
+: >"$knob_rows"
+skipped_knobs=""
+prev_knobs=""
+for c in "${chapters[@]}"; do
+    knobs_of "$build/$c/render" >"$work/knobs_$c.tsv"
+    while IFS=$'\t' read -r name kind default choices help; do
+        case " $prev_knobs " in *" $name "*) continue ;; esac
+        plan=$(knob_plan "$name" "$kind" "$default" "$choices")
+        if [ "$plan" = skip ]; then
+            skipped_knobs="$skipped_knobs $(num "$c"):--$name"
+            continue
+        fi
+        ref=${plan##*ref=}
+        values=${plan% ref=*}
+        # The latest chapter that still has the knob renders the scene of all stages.
+        last=$c
+        for d in "${chapters[@]}"; do
+            [[ "$d" > "$c" ]] && "$build/$d/render" --help 2>/dev/null | grep -q -- "^      --$name=V " && last=$d
+        done
+        for where in builtin stage; do
+            settings_clear
+            if [ $where = builtin ]; then
+                size=$(builtin_size "$c")
+                for v in $values; do
+                    setting "--$name=$v" "$work/img/k_${c}_${name}_$v.png" "$build/$c/render" -j 1 -s "$size" "--$name=$v"
+                done
+            else
+                size=$(stage_size "$last")
+                for v in $values; do
+                    setting "--$name=$v" "$work/img/ks_${c}_${name}_$v.png" "$build/$last/render" -j 1 -s "$size" \
+                        "--$name=$v" "$stage_scene"
+                done
+            fi
+            measure "knob_${where}_${c}_$name" "$reps"
+        done
+        for v in $values; do
+            row="$(num "$c").$name=$v	$c	$name	$v	$([ "$v" = "$default" ] && echo 1 || echo 0)	$([ "$v" = "$ref" ] && echo 1 || echo 0)"
+            for where in builtin stage; do
+                g=knob_${where}_${c}_$name
+                t=$(field "$g" "--$name=$v" 2) t_min=$(field "$g" "--$name=$v" 3) t_max=$(field "$g" "--$name=$v" 4)
+                t_def=$(field "$g" "--$name=$default" 2)
+                prefix=$([ $where = builtin ] && echo k || echo ks)
+                read -r share maxd < <(diff_of "$work/img/${prefix}_${c}_${name}_$v.png" "$work/img/${prefix}_${c}_${name}_$ref.png")
+                row="$row	$t	$t_min	$t_max	$(ratio "$t" "$t_def")	$share	$maxd"
+            done
+            printf '%s\t%s\t%s\n' "$row" "$last" "$help" >>"$knob_rows"
+        done
+    done <"$work/knobs_$c.tsv"
+    prev_knobs=$(cut -f1 "$work/knobs_$c.tsv" | tr '\n' ' ')
+done
+
+# The sweeps of extremes: each chapter's hook (bench/hooks/README.md).
+for c in "${chapters[@]}"; do
+    hook=""
+    for h in "chapters/$c/bench.sh" "bench/hooks/$c.sh"; do
+        [ -f "$h" ] && { hook=$h; break; }
+    done
+    [ -n "$hook" ] || continue
+    note "extremes $c: $hook"
+    if ! sh "$hook" "$build" "$fbuild" >"$work/page/extremes_$c.md" 2>"$work/extremes_$c.log"; then
+        { echo; echo "(\`$hook\` failed: $(tail -n 1 "$work/extremes_$c.log"))"; } >>"$work/page/extremes_$c.md"
+    fi
+    echo "sh $hook $build $fbuild" >>"$work/commands.txt"
+done
+
+# The options every renderer shares: samples per pixel and threads, in the
+# latest chapter (precision is section 4).
+common_rows=$work/common_rows.tsv
+: >"$common_rows"
+for where in builtin stage; do
+    scene_arg=""
+    [ $where = stage ] && scene_arg=$stage_scene
+    size=$([ $where = builtin ] && builtin_size "$latest" || stage_size "$latest")
+    half=$(scaled_size "$size" 0.5)
+    settings_clear
+    for n in 1 4 16; do
+        setting "-n $n" "$work/img/spp_${where}_$n.png" "$build/$latest/render" -j 1 -s "$half" -n $n $scene_arg
+    done
+    measure "spp_$where" "$reps"
+    settings_clear
+    for ((j = 1; j <= cores; j++)); do
+        setting "-j $j" "$work/img/thr_${where}_$j.png" "$build/$latest/render" -j $j -s "$size" $scene_arg
+    done
+    measure "threads_$where" "$reps"
+done
+for n in 1 4 16; do
+    row="all.samples=$n	$latest	samples	$n	$([ $n = 1 ] && echo 1 || echo 0)	$([ $n = 16 ] && echo 1 || echo 0)"
+    for where in builtin stage; do
+        t=$(field "spp_$where" "-n $n" 2)
+        read -r share maxd < <(diff_of "$work/img/spp_${where}_$n.png" "$work/img/spp_${where}_16.png")
+        row="$row	$t	$(field "spp_$where" "-n $n" 3)	$(field "spp_$where" "-n $n" 4)	$(ratio "$t" "$(field "spp_$where" "-n 1" 2)")	$share	$maxd"
+    done
+    printf '%s\t%s\t%s\n' "$row" "$latest" "samples per pixel (-n), at half the side" >>"$common_rows"
+done
+for ((j = 1; j <= cores; j++)); do
+    row="all.threads=$j	$latest	threads	$j	$([ $j = "$cores" ] && echo 1 || echo 0)	$([ $j = 1 ] && echo 1 || echo 0)"
+    for where in builtin stage; do
+        t=$(field "threads_$where" "-j $j" 2)
+        read -r share maxd < <(diff_of "$work/img/thr_${where}_$j.png" "$work/img/thr_${where}_1.png")
+        row="$row	$t	$(field "threads_$where" "-j $j" 3)	$(field "threads_$where" "-j $j" 4)	$(ratio "$t" "$(field "threads_$where" "-j $cores" 2)")	$share	$maxd"
+    done
+    printf '%s\t%s\t%s\n' "$row" "$latest" "threads (-j)" >>"$common_rows"
+done
+
+# ---- 4. float against double (measured here: the knob table shows it too) -------------
+
+precision_rows=$work/precision_rows.tsv
+: >"$precision_rows"
+precision() { # id label chapter scene-or-empty size
+    local id=$1 label=$2 c=$3 scene=$4 size=$5
+    settings_clear
+    setting double "$work/img/p_${id}_double.png" "$build/$c/render" -j 1 -s "$size" $scene
+    setting float "$work/img/p_${id}_float.png" "$fbuild/$c/render" -j 1 -s "$size" $scene
+    measure "precision_$id" "$reps"
+    local td tf
+    td=$(field "precision_$id" double 2) tf=$(field "precision_$id" float 2)
+    read -r share maxd < <(diff_of "$work/img/p_${id}_double.png" "$work/img/p_${id}_float.png")
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$id" "$label" "$size" "$td" \
+        "$(field "precision_$id" double 3)-$(field "precision_$id" double 4)" "$tf" \
+        "$(field "precision_$id" float 3)-$(field "precision_$id" float 4)" "$(ratio "$tf" "$td")" "$share" "$maxd" \
+        >>"$precision_rows"
+}
+for c in "${chapters[@]}"; do
+    precision "$(num "$c")" "$c, built-in scene" "$c" "" "$(builtin_size "$c")"
+done
+precision stages "$latest, scene of all stages" "$latest" "$stage_scene" "$(stage_size "$latest")"
+
+# ---- 3. growth with the work ----------------------------------------------------------
+
+mkdir -p "$work/growth"
+growth_rows=$work/growth_rows.tsv
+: >"$growth_rows"
+# The linear scan: the first chapter that renders meshes; the grid: chapters named *grid*.
+growth_chapters=()
+"$tools/tessellate" 100 "$work/growth/probe.obj" >/dev/null
+printf '<scene><image>8 8</image><surface type="Mesh"><data>probe.obj</data></surface></scene>\n' \
+    >"$work/growth/probe.xml"
+for c in "${chapters[@]}"; do
+    if "$build/$c/render" -j 1 -o "$work/growth/probe.png" "$work/growth/probe.xml" 2>&1 | grep -q 'ignores:.*meshes'; then
+        continue
+    fi
+    growth_chapters+=("$c")
+    break
+done
+for c in "${chapters[@]}"; do
+    case "$c" in *grid*) [ "$c" != "${growth_chapters[0]:-}" ] && growth_chapters+=("$c") ;; esac
+done
+triangle_counts=""
+for n in 100 1000 10000 100000 1000000 10000000; do
+    [ "$n" -le "$max_triangles" ] && triangle_counts="$triangle_counts $n"
+done
+if [ ${#growth_chapters[@]} -gt 0 ]; then
+    for n in $triangle_counts; do
+        t=$("$tools/tessellate" "$n" "$work/growth/sphere_$n.obj") || continue
+        side=$(awk -v n="$n" 'BEGIN { s = int(sqrt(2e7 / n)); if (s < 8) s = 8; if (s > 512) s = 512; print s }')
+        cat >"$work/growth/sphere_$n.xml" <<EOF
+<scene>
+  <image>$side $side</image>
+  <camera type="PerspectiveCamera"><viewPoint>0 0 4</viewPoint><viewDir>0 0 -1</viewDir>
+    <projDistance>2</projDistance><viewWidth>1.2</viewWidth><viewHeight>1.2</viewHeight></camera>
+  <surface type="Mesh"><data>sphere_$n.obj</data></surface>
+</scene>
+EOF
+        settings_clear
+        for c in "${growth_chapters[@]}"; do
+            size=$(min_side=8 calibrated_size "$build/$c/render" "$work/growth/sphere_$n.xml")
+            setting "$c" "$work/growth/img_${c}_$n.png" "$build/$c/render" -j 1 -s "$size" "$work/growth/sphere_$n.xml"
+        done
+        measure "growth_$n" "$([ "$n" -ge 1000000 ] && echo 3 || echo "$reps")"
+        for c in "${growth_chapters[@]}"; do
+            tm=$(field "growth_$n" "$c" 2) rays=$(field "growth_$n" "$c" 5)
+            [ "$tm" = "-" ] && continue
+            # Microseconds per ray: three significant digits, no exponent.
+            us() { awk -v t="$1" -v r="$rays" 'BEGIN { x = 1e6 * t / r; d = x >= 100 ? 0 : x >= 10 ? 1 : 2; printf "%.*f", d, x }'; }
+            printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$c" "$t" "$tm" "$rays" "$(us "$tm")" \
+                "$(us "$(field "growth_$n" "$c" 3)")" "$(us "$(field "growth_$n" "$c" 4)")" >>"$growth_rows"
+        done
+        rm -f "$work/growth/sphere_$n.obj"
+    done
+fi
+# Image size and samples per pixel against time, in the latest chapter on the scene of all stages.
+size=$(stage_size "$latest")
+settings_clear
+for f in 0.25 0.5 1 2; do
+    s=$(scaled_size "$size" $f)
+    setting "-s $s" "$work/img/size_$f.png" "$build/$latest/render" -j 1 -s "$s" "$stage_scene"
+done
+measure sizes "$reps"
+
+# ---- 5. POV-Ray -------------------------------------------------------------------------
+
+. "$here/povray.sh"
+
+# ---- 6. one scene through all stages ---------------------------------------------------
+
+strip_list=$work/strip.txt
+: >"$strip_list"
+for c in "${chapters[@]}"; do
+    log=$work/strip_$c.log
+    echo "$build/$c/render $stage_scene -o OUT.png" >>"$work/commands.txt"
+    if "$build/$c/render" -o "$work/img/stage_$c.png" "$stage_scene" >"$log" 2>&1; then
+        ignores=$(sed -n 's/.*: ignores: //p' "$log" | head -n 1)
+        printf '%s\t%s\t%s\n' "$c" "$work/img/stage_$c.png" "$ignores" >>"$strip_list"
+        note "stages $c: $(summary_of "$log" | awk '{ printf "%.3f s", $1 }')"
+    else
+        note "stages $c: failed: $(head -n 1 "$log")"
+    fi
+done
+
+# ---- 7. the grid against Embree (bench/grid/, when present) -----------------------------
+
+grid_log=""
+# The target is the Makefile's or that of a file it includes from bench/grid/.
+if grep -qs '^bench-grid:' Makefile bench/grid/*.mk; then
+    note "make bench-grid"
+    grid_log=$work/grid.log
+    if make --no-print-directory bench-grid >"$grid_log" 2>&1; then
+        note "bench-grid: done"
+    else
+        note "bench-grid: failed (see $grid_log)"
+    fi
+fi
+
+load_after=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
+
+# ---- plots and the page -----------------------------------------------------------------
+
+note "plots"
+. "$here/plots.sh"
+note "page"
+. "$here/page.sh"
+note "bench: wrote $page and $(ls "$figures"/bench_*.png 2>/dev/null | wc -l) figures in ${SECONDS} s"

@@ -1,0 +1,183 @@
+# plots.sh - the figures of bench/bench.sh (sourced): gnuplot, PNG, into docs/figures/bench_*.png.
+#
+#   bench_knobs_NN.png   chapter NN's knobs: time against error, one point per setting
+#   bench_knobs_all.png  samples per pixel and precision, in the latest chapter (threads: bench_scaling)
+#   bench_growth.png     time per ray against triangles, log-log, with the fitted slopes
+#   bench_scaling.png    time against image size and samples per pixel; thread speed-up
+#   bench_stages.png     the scene of all stages, rendered by every chapter (tools/panels)
+
+rm -f "$figures"/bench_*.png
+plot_term='set terminal pngcairo size 900,600 font "sans,12" noenhanced'
+
+# knob_plot OUT TITLE DATA: DATA lines are "X Y LABEL DEFAULT SCENE" (SCENE 0:
+# built-in, 1: scene of all stages); the default settings get an open square.
+# Settings that failed ("-") are left out.
+knob_plot() {
+    local out=$1 title=$2 data=$3 ymax
+    awk '$1 != "-" && $2 != "-"' "$data" >"$data.ok" && mv "$data.ok" "$data"
+    ymax=$(awk '$2 != "-" && $2 + 0 > m { m = $2 + 0 } END { print m + 0 }' "$data")
+    if [ "$ymax" = 0 ]; then
+        speed_plot "$out" "$title" "$data"
+        return
+    fi
+    gnuplot <<EOF
+$plot_term
+set output "$out"
+set title "$title"
+set xlabel "render time relative to the default setting (1 thread, median of $reps runs)"
+set ylabel "pixels differing from the reference setting (%)"
+set grid
+set key top right box opaque
+set yrange [$(awk -v m="$ymax" 'BEGIN { if (m == 0) print "-1:10"; else printf "%g:%g", -0.08 * m, 1.25 * m }')]
+set offsets graph 0.12, graph 0.12, 0, 0
+$(awk '$1 > 0 { if (min == "" || $1 < min) min = $1; if ($1 > max) max = $1 }
+      END { if (min != "" && max / min > 4) print "set logscale x; set offsets 0, 0, 0, 0; set xrange [" min / 1.5 ":" max * 2.5 "]" }' "$data")
+plot "$data" using (\$5 == 0 ? \$1 : 1/0):2 with points pt 7 ps 1.6 lc rgb "#1f77b4" title "built-in scene of the chapter", \
+     "$data" using (\$5 == 1 ? \$1 : 1/0):2 with points pt 9 ps 1.8 lc rgb "#d62728" title "scene of all stages (latest chapter with the knob)", \
+     "$data" using (\$4 == 1 ? \$1 : 1/0):2 with points pt 4 ps 3.2 lw 2 lc rgb "black" title "default setting", \
+     "$data" using (\$5 == 0 ? \$1 : 1/0):2:3 with labels offset char 1.2, char 0.9 left font "sans,10" tc rgb "#1f77b4" notitle, \
+     "$data" using (\$5 == 1 ? \$1 : 1/0):2:3 with labels offset char 1.2, char -0.9 left font "sans,10" tc rgb "#d62728" notitle
+EOF
+}
+
+# speed_plot OUT TITLE DATA: when no setting changes a pixel (the knobs are
+# about speed alone, as the grid's), the time of each setting as bars, one
+# pair per setting (built-in scene, scene of all stages), on a log scale.
+speed_plot() {
+    local out=$1 title=$2 data=$3 n
+    awk '{ key = $3; if (!(key in seen)) { seen[key] = 1; order[++n] = key }; v[key, $5] = $1; d[key] = $4 }
+         END { for (k = 1; k <= n; k++) { key = order[k]
+                   printf "\"%s%s\" %s %s\n", key, (d[key] == 1 ? " (default)" : ""),
+                       ((key, 0) in v ? v[key, 0] : "-"), ((key, 1) in v ? v[key, 1] : "-") } }' "$data" >"$data.bars"
+    n=$(wc -l <"$data.bars")
+    gnuplot <<EOF
+set terminal pngcairo size $((n > 10 ? 300 + 60 * n : 900)),600 font "sans,12" noenhanced
+set output "$out"
+set title "$title\nevery setting gives the same image: the cost alone"
+set ylabel "time relative to the default (1 thread)"
+set logscale y
+set yrange [$(awk '{ for (k = 2; k <= 3; k++) if ($k != "-") { if (lo == "" || $k < lo) lo = $k; if ($k > hi) hi = $k } }
+                END { printf "%g:%g", (lo < 1 ? lo : 1) / 2, (hi > 1 ? hi : 1) * 3 }' "$data.bars")]
+set grid ytics
+set style data histograms
+set style histogram clustered gap 1
+set style fill solid 0.8 border -1
+set boxwidth 0.9
+set xtics rotate by -30 left font "sans,10" offset -1, 0
+set key below
+set datafile missing "-"
+plot "$data.bars" using 2:xtic(1) lc rgb "#1f77b4" title "built-in scene of the chapter", \
+     "" using 3 lc rgb "#d62728" title "scene of all stages (latest chapter with the knob)", \
+     1 with lines dt 2 lc rgb "black" notitle
+EOF
+}
+
+awk -F'\t' '{ print $2 }' "$knob_rows" | sort -u | while read -r c; do
+    [ -n "$c" ] || continue
+    data=$work/plot_knobs_$c.dat
+    # Labels: the value alone when the chapter adds one knob (named in the title), else knob=value.
+    knob_names=$(awk -F'\t' -v c="$c" '$2 == c { print $3 }' "$knob_rows" | sort -u)
+    one=$([ "$(echo "$knob_names" | wc -l)" = 1 ] && echo 1 || echo 0)
+    awk -F'\t' -v c="$c" -v one="$one" '$2 == c {
+        label = one ? $4 : $3 "=" $4
+        if ($10 != "-") print $10, ($11 == "-" ? "-" : $11), label, $5, 0
+        if ($16 != "-") print $16, ($17 == "-" ? "-" : $17), label, $5, 1
+    }' "$knob_rows" >"$data"
+    what=$([ "$one" = 1 ] && echo "--$knob_names" || echo "the knobs it adds")
+    knob_plot "$figures/bench_knobs_$(num "$c").png" "Chapter $(title "$c"): $what, cost against error" "$data"
+done
+
+data=$work/plot_knobs_all.dat
+{
+    awk -F'\t' '$3 != "threads" { label = $3 "=" $4
+        if ($10 != "-") print $10, $11, label, $5, 0
+        if ($16 != "-") print $16, $17, label, $5, 1 }' "$common_rows"
+    awk -F'\t' -v latest="$(num "$latest")" '$1 == latest && $8 != "-" { print $8, $9, "float", 0, 0 }
+        $1 == "stages" && $8 != "-" { print $8, $9, "float", 0, 1 }' "$precision_rows"
+    # double: the reference and the default, at (1, 0) under the square; unlabelled, as float sits beside it.
+    awk -F'\t' -v latest="$(num "$latest")" '$1 == latest { print 1, 0, "\"\"", 1, 0 }
+        $1 == "stages" { print 1, 0, "\"\"", 1, 1 }' "$precision_rows"
+} >"$data"
+knob_plot "$figures/bench_knobs_all.png" "Every renderer's knobs, in $(title "$latest"): samples per pixel, precision" "$data"
+
+# Growth: time per ray against triangles, with a least-squares line through
+# the points from about 1000 triangles up (fewer, and the eye ray's own cost shows).
+growth_fits=$work/growth_fits.tsv
+: >"$growth_fits"
+if [ -s "$growth_rows" ]; then
+    plots=""
+    colours=("#1f77b4" "#d62728" "#2ca02c" "#9467bd")
+    k=0
+    for c in "${growth_chapters[@]}"; do
+        awk -F'\t' -v c="$c" '$1 == c { print $2, $5, $6, $7 }' "$growth_rows" >"$work/growth_$c.dat"
+        [ -s "$work/growth_$c.dat" ] || continue
+        read -r a b < <(awk '$1 >= 500 { x = log($1) / log(10); y = log($2) / log(10); n++; sx += x; sy += y; sxx += x * x; sxy += x * y }
+            END { if (n >= 2) { b = (n * sxy - sx * sy) / (n * sxx - sx * sx); a = (sy - b * sx) / n; printf "%.6g %.6g\n", a, b } else print "- -" }' \
+            "$work/growth_$c.dat")
+        printf '%s\t%s\t%s\n' "$c" "$a" "$b" >>"$growth_fits"
+        kind=$(case "$c" in *grid*) echo "grid" ;; *) echo "linear scan" ;; esac)
+        col=${colours[k % 4]}
+        plots="$plots${plots:+, }\"$work/growth_$c.dat\" using 1:2:3:4 with yerrorbars pt 7 ps 1.4 lc rgb \"$col\" title \"$(title "$c") ($kind): measured, min-max\""
+        if [ "$a" != "-" ]; then
+            plots="$plots, 10**($a) * x**($b) with lines lw 2 dt 2 lc rgb \"$col\" title sprintf(\"fit from about 1000 triangles up: slope %.2f\", $b)"
+        fi
+        k=$((k + 1))
+    done
+    gnuplot <<EOF
+$plot_term
+set output "$figures/bench_growth.png"
+set title "Time per eye ray against the number of triangles (tessellated sphere, 1 thread)"
+set xlabel "triangles in the scene"
+set ylabel "render time per eye ray (microseconds)"
+set logscale xy
+set format x "%.0f"
+set format y "%g"
+set grid
+set key top left box opaque
+set xrange [50:2*$max_triangles]
+plot $plots
+EOF
+fi
+
+# Scaling: time against eye rays (image size; samples per pixel), and threads.
+awk -F'\t' '$2 != "-" { print $5, $2, $3, $4 }' "$work/sizes.tsv" >"$work/scale_sizes.dat"
+awk -F'\t' '$2 != "-" { print $5, $2, $3, $4 }' "$work/spp_stage.tsv" >"$work/scale_spp.dat"
+awk -F'\t' '$2 != "-" { split($1, w, " "); print w[2], $2, $3, $4 }' "$work/threads_stage.tsv" >"$work/scale_threads.dat"
+awk -F'\t' '$2 != "-" { split($1, w, " "); print w[2], $2, $3, $4 }' "$work/threads_builtin.tsv" >"$work/scale_threads_b.dat"
+t1_stage=$(awk 'NR == 1 { print $2 }' "$work/scale_threads.dat")
+t1_builtin=$(awk 'NR == 1 { print $2 }' "$work/scale_threads_b.dat")
+gnuplot <<EOF
+set terminal pngcairo size 1200,520 font "sans,12" noenhanced
+set output "$figures/bench_scaling.png"
+set multiplot layout 1,2 title "$(title "$latest"), scene of all stages"
+set key below
+set title "Time against the work (1 thread)"
+set xlabel "rays cast (all kinds)"
+set ylabel "render time (s)"
+set logscale xy
+set grid
+set key below
+plot "$work/scale_sizes.dat" using 1:2:3:4 with yerrorlines pt 7 lc rgb "#1f77b4" title "image size x1/4 to x2 per side, 1 spp", \
+     "$work/scale_spp.dat" using 1:2:3:4 with yerrorlines pt 9 lc rgb "#d62728" title "1, 4, 16 samples per pixel, half size"
+unset logscale
+set title "Threads on this machine ($cores cores)"
+set xlabel "threads (-j)"
+set ylabel "speed-up over 1 thread (median time ratio)"
+set xrange [0.5:$cores + 0.5]
+set xtics 1
+set yrange [0:$cores + 0.5]
+plot x with lines dt 2 lc rgb "gray" title "ideal", \
+     "$work/scale_threads.dat" using 1:($t1_stage / \$2) with linespoints pt 7 lw 2 lc rgb "#d62728" title "scene of all stages", \
+     "$work/scale_threads_b.dat" using 1:($t1_builtin / \$2) with linespoints pt 9 lw 2 lc rgb "#1f77b4" title "built-in scene"
+unset multiplot
+EOF
+
+# The strip: every chapter's image of the scene of all stages, side by side,
+# each under its chapter's name (tools/panels.c, as the chapters' figures).
+if [ -s "$strip_list" ]; then
+    set --
+    while IFS=$'\t' read -r c img ignores; do
+        set -- "$@" "$img" "$(title "$c")"
+    done <"$strip_list"
+    "$build/tools/panels" "$figures/bench_stages.png" "$@" || note "the strip failed"
+fi

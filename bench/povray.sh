@@ -1,0 +1,106 @@
+# povray.sh - section 5 of bench/bench.sh (sourced): the course's scenes in POV-Ray 3.7.
+#
+# bench/scene2pov translates wire-box, two-boxes and bunny (scene2pov.c says
+# how); POV-Ray renders them without antialiasing on 1 and 2 threads, and its
+# image is compared with the course's reference image.  The project's side is
+# the latest chapter that models every feature of the scene (its renderer
+# prints no "ignores:" line for it), with the course's Phong form where the
+# renderer offers a choice named "course".  Writes $work/pov_rows.tsv:
+#   scene size pov_vs_ref(share max) pov_j1 pov_j2 chapter chapter_vs_ref ch_j1 ch_j2 note
+
+pov_rows=$work/pov_rows.tsv
+: >"$pov_rows"
+pov_scenes="wire-box two-boxes bunny"
+pov_version=""
+pov_note=""
+slow="" # the scenes the project's renderer took too long on for rounds
+
+# pov_summary LOG: "SECONDS RAYS": POV-Ray's own trace time (without its
+# parse time and start-up), and the pixel count of the image as its rays.
+pov_summary() {
+    awk '/^ *Trace Time:/ && match($0, /\([0-9.]+ seconds\)/) { s = substr($0, RSTART + 1, RLENGTH - 10) }
+         END { if (s != "") print s, (pixels + 0) }' pixels="$pov_pixels" "$1"
+}
+
+if ! command -v povray >/dev/null 2>&1; then
+    pov_note="POV-Ray is not installed (tools/deps.sh installs it for make bench)."
+elif [ ! -d "$cornell/scenes/ray1" ]; then
+    pov_note="The course's scenes ($cornell) are absent: the comparison needs them."
+else
+    pov_version=$(povray -version 2>&1 | grep -m1 -i 'POV-Ray' | sed 's/^ *//')
+    mkdir -p "$work/pov"
+    for s in $pov_scenes; do
+        xml=$cornell/scenes/ray1/$s.xml
+        ref=$cornell/scenes/ray1/reference/$s.xml.png
+        [ -f "$xml" ] && [ -f "$ref" ] || continue
+        read -r W H < <("$tools/imgcmp" size "$ref")
+        pov_pixels=$((W * H))
+        kind=$("$tools/scene2pov" "$xml" "$work/pov/$s.pov") || { note "pov $s: cannot translate"; continue; }
+        echo "$tools/scene2pov $xml $work/pov/$s.pov" >>"$work/commands.txt"
+        povopts="+W$W +H$H -D +FN -A File_Gamma=2.2"
+        timed=$work/pov/$s.pov
+        if [ "$kind" = colour ]; then
+            # One render per channel; each traces the whole scene, so one of them is timed.
+            for ch in r g b; do
+                "$tools/scene2pov" "$xml" "$work/pov/${s}_$ch.pov" $ch >/dev/null
+                echo "$tools/scene2pov $xml $work/pov/${s}_$ch.pov $ch" >>"$work/commands.txt"
+                povray "+I$work/pov/${s}_$ch.pov" "+O$work/pov/${s}_$ch.png" $povopts +WT2 >"$work/pov/${s}_$ch.log" 2>&1
+            done
+            "$tools/imgcmp" merge "$work/pov/${s}_r.png" "$work/pov/${s}_g.png" "$work/pov/${s}_b.png" \
+                "$work/pov/${s}_pov.png"
+            timed=$work/pov/${s}_r.pov
+        fi
+        # The project's renderer: the latest chapter that ignores nothing in the scene.
+        chapter="" knob="" why=""
+        for c in "${chapters[@]}"; do
+            probe=$("$build/$c/render" -j 1 -s 8x8 -o "$work/pov/probe.png" "$xml" 2>&1 | sed -n 's/.*: ignores: //p')
+            if [ -z "$probe" ]; then
+                chapter=$c
+            else
+                why="$c ignores: $probe"
+            fi
+        done
+        if [ -n "$chapter" ]; then
+            knob=$(knobs_of "$build/$chapter/render" | awk -F'\t' '$2 == "choice" && (" " $4 " ") ~ / course / { printf "--%s=course", $1; exit }')
+        fi
+        MEASURE_PARSE=pov_summary
+        settings_clear
+        setting "pov -j1" "$work/pov/${s}_t1.png" povray "+I$timed" "+O@OUT@" $povopts +WT1
+        setting "pov -j2" "$work/pov/${s}_t2.png" povray "+I$timed" "+O@OUT@" $povopts +WT2
+        measure "pov_$s" "$reps"
+        MEASURE_PARSE=summary_of
+        pov_parse=$(awk '/^ *Parse Time:/ && match($0, /\([0-9.]+ seconds\)/) { p = substr($0, RSTART + 1, RLENGTH - 10) }
+            END { print p }' "$work/run.log")
+        [ "$kind" = colour ] || cp "$work/pov/${s}_t2.png" "$work/pov/${s}_pov.png"
+        read -r pshare pmax < <(diff_of "$work/pov/${s}_pov.png" "$ref")
+        ch_share="-" ch_max="-" c1="-" c2="-" c1r="" c2r=""
+        if [ -n "$chapter" ]; then
+            # A single calibration run says whether several rounds fit the budget.
+            "$build/$chapter/render" -j 2 $knob -o "$work/pov/${s}_ours.png" "$xml" >"$work/pov/${s}_ours.log" 2>&1
+            t_one=$(summary_of "$work/pov/${s}_ours.log" | awk '{ print $1 }')
+            echo "$build/$chapter/render -j 2 $knob $xml -o OUT.png" >>"$work/commands.txt"
+            read -r ch_share ch_max < <(diff_of "$work/pov/${s}_ours.png" "$ref")
+            if awk -v t="${t_one:-99}" 'BEGIN { exit !(t > 3) }'; then
+                # Too slow for rounds within the bench's ten minutes (a linear scan over a mesh):
+                # the one run on 2 threads stands alone.
+                c2=${t_one:--} slow="$slow $s"
+                note "ours $s: $chapter, one run on 2 threads: ${t_one:-failed} s (too slow for rounds)"
+            else
+                settings_clear
+                setting "ours -j1" "$work/pov/${s}_o1.png" "$build/$chapter/render" -j 1 $knob "$xml"
+                setting "ours -j2" "$work/pov/${s}_o2.png" "$build/$chapter/render" -j 2 $knob "$xml"
+                measure "ours_$s" "$reps"
+                c1=$(field "ours_$s" "ours -j1" 2) c2=$(field "ours_$s" "ours -j2" 2)
+                c1r="$(field "ours_$s" "ours -j1" 3)-$(field "ours_$s" "ours -j1" 4)"
+                c2r="$(field "ours_$s" "ours -j2" 3)-$(field "ours_$s" "ours -j2" 4)"
+            fi
+        fi
+        p1=$(field "pov_$s" "pov -j1" 2) p2=$(field "pov_$s" "pov -j2" 2)
+        # Empty fields would merge when read back with IFS=tab: "-" stands for none.
+        printf '%s\t%s\t%s %s\t%s\t%s\t%s\t%s\t%s %s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$s" "${W}x$H" "$pshare" "$pmax" \
+            "$p1" "$(field "pov_$s" "pov -j1" 3)-$(field "pov_$s" "pov -j1" 4)" \
+            "$p2" "$(field "pov_$s" "pov -j2" 3)-$(field "pov_$s" "pov -j2" 4)" \
+            "$ch_share" "$ch_max" "${chapter:--}" "${knob:--}" "$c1" "${c1r:--}" "$c2" "${c2r:--}" "$kind" "${why:--}" "${pov_parse:--}" \
+            >>"$pov_rows"
+    done
+fi
