@@ -281,7 +281,7 @@ int main(int argc, char **argv)
     fm.v = realloc(fm.v, ((size_t)fm.n_v * 3 + 4) * sizeof *fm.v);
 
     surface_list list;
-    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER); /* the lecture's test, as the README measures it */
     for (long k = 0; k < fm.n_tri; k++) {
         const unsigned *t = fm.tri + 3 * k;
         triangle tri = {vertex(&fm, t[0]), vertex(&fm, t[1]), vertex(&fm, t[2])};
