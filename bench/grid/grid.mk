@@ -14,8 +14,10 @@ bench-grid:
 	@$(MAKE) --no-print-directory STUDENT=0 SANITIZE=0 $(BENCH_GRID)
 	@bench/grid/run.sh $(BENCH_GRID)
 
-BENCH_GRID_SRC := bench/grid/grid_vs_embree.c $(foreach c,$(call upto,11_grid),$(call stage_src,$c,0)) $(COMMON_SRC)
+# The reference (solution) stage objects of chapters 01-11, as the renderers link them.
+BENCH_GRID_OBJS := $(call objs,bench/grid/grid_vs_embree.c) $(foreach c,$(call upto,11_grid),$(call stage_objs,$c,0)) \
+                   $(call objs,$(COMMON_SRC))
 
-$(BENCH_GRID): $(call objs,$(BENCH_GRID_SRC))
+$(BENCH_GRID): $(BENCH_GRID_OBJS)
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lembree3 -o $@
+	$(call link,$^) -lembree3 -o $@
