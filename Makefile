@@ -92,7 +92,7 @@ IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
         handout handout-libs reference-libs \
         figure-renderers figures check-figures snippets check-snippets check-links check fuzz fuzz-build deps-fuzz \
-        test-extremes
+        test-extremes check-grid-images
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -352,9 +352,14 @@ check-links:
 check-snippets:
 	@tools/snippets.sh check $(SNIPPET_TEXTS)
 
-# Text, skeletons and figures agree with their sources (in the repository;
-# a student's copy has no solutions/ to compare them with).
-check: $(if $(HANDOUT),,check-skeletons check-snippets check-figures check-links)
+# Chapter 11's grid renders the images of the linear scan, byte for byte.
+check-grid-images: $(BUILD)/04_many_shapes/render $(BUILD)/11_grid/render
+	@tools/check-grid-images.sh $(BUILD)
+
+# Text, skeletons and figures agree with their sources; the grid changes no
+# pixel (in the repository; a student's copy has no solutions/ to compare
+# them with).
+check: $(if $(HANDOUT),,check-skeletons check-snippets check-figures check-links check-grid-images)
 	@$(if $(HANDOUT),echo "make check: nothing to check in a student's copy (it compares texts, skeletons and figures with solutions/)")
 
 # ---- tests ----------------------------------------------------------------------
@@ -430,9 +435,11 @@ help:
 	@echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
-	@echo "make check           check-skeletons, check-snippets, check-figures, check-links: fail naming what is stale"
+	@echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-grid-images"
+	@echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"
 	@echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
 	@echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"
+	@echo "make bench-grid      chapter 11's grid against the linear scan and Embree 3 (installs libembree-dev, glmark2-data)"
 	@echo "make fuzz            build the libFuzzer targets (clang) and fuzz each for FUZZ_SECONDS (60) seconds;"
 	@echo "                     findings go to $(FUZZ_BUILD)/ (docs/fuzzing.md)"
 	@echo "make clean           remove build*/ and out*/"
@@ -442,5 +449,8 @@ help:
 
 clean:
 	rm -rf build build-* out out-student*
+
+# The grid's benchmark against Embree (make bench-grid).
+include bench/grid/grid.mk
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

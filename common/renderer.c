@@ -70,6 +70,8 @@ int renderer_main(const renderer *r, int argc, char **argv)
             if (stats.nonfinite > 0 && opt.quiet) /* without -q, the summary line says it */
                 fprintf(stderr, "%s: %llu samples were NaN or infinite (see --nonfinite)\n", r->name,
                         (unsigned long long)stats.nonfinite);
+            if (r->report && !opt.quiet)
+                r->report(prepared, stats, stderr);
             status = 0;
         }
         image_free(&img);

@@ -34,6 +34,9 @@ typedef struct {
     void (*release)(void *prepared);
     /* Chapter 01's pixel_to_image; NULL: render_image_mapped's own. */
     pixel_map_fn pixel_to_image;
+    /* Optional: one more line after the summary (not with -q), such as what
+     * an acceleration structure cost and did. */
+    void (*report)(const void *prepared, render_stats stats, FILE *out);
 } renderer;
 
 int renderer_main(const renderer *r, int argc, char **argv);

@@ -1,0 +1,14 @@
+#!/bin/sh
+# run.sh BENCH - the grid against the linear scan and Embree: the Stanford
+# bunny of Debian's glmark2-data, then a procedural sphere of 1 million
+# triangles, 512x512 primary rays each.  The linear scan takes every 64-th
+# row of the bunny (8 rows, 4096 rays) and none of the sphere.
+bench=$1
+bunny=$(dpkg -L glmark2-data 2>/dev/null | grep '/bunny\.obj$' | head -n 1)
+if [ -z "$bunny" ] || [ ! -r "$bunny" ]; then
+    echo "bench-grid: the bunny of glmark2-data is not installed (bench/grid/deps.sh installs it)" >&2
+    exit 1
+fi
+"$bench" "$bunny" --size 512 --linear-rows 64 || exit 1
+echo
+"$bench" sphere:1000000 --size 512 --linear-rows 0 || exit 1

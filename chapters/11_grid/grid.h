@@ -1,0 +1,107 @@
+/* grid.h - chapter 11: a uniform grid over the scene, marched by a 3D-DDA.
+ *
+ * The lecture's "Acceleration and Regular Grids": split the scene's bounding
+ * box into n_x x n_y x n_z equal cells; each cell lists the surfaces that
+ * overlap it.  A ray walks through the cells it pierces, in order, with the
+ * 3D-DDA of Amanatides and Woo (1987), and tests only the surfaces listed in
+ * them.  It stops in the first cell that holds a hit no farther than the
+ * cell's far boundary: a hit found in an earlier cell that lies beyond that
+ * cell (a long triangle, a big sphere) does not end the march, because a
+ * later cell may hold something closer.
+ *
+ * grid_intersect has the shape of chapter 04's surfaces_intersect, with the
+ * grid in place of the list, and returns the same hit: the same surface and
+ * bit for bit the same t (every surface is tested by chapter 04's
+ * surface_intersect, with the list's knobs, on the ray as given).  Surfaces
+ * hit at exactly the same t: the first in the list wins, as in the linear scan.
+ * So a renderer swaps the one for the other in one line.
+ *
+ * Knobs (docs/design.md, principle 6): the cell density (cells per surface) with
+ * a cap on the number of cells, mailboxing (a surface already tested along
+ * the ray is not tested again), and leaping (a ray in an empty cell whose
+ * neighbours up to r cells away are empty too crosses that whole block of
+ * empty cells in one step, as in Cohen and Sheffer's proximity clouds),
+ * and culling (a surface of the cell is handed to surface_intersect only
+ * when the ray passes through the surface's bounding box within the window).
+ */
+#ifndef CH11_GRID_H
+#define CH11_GRID_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "04_many_shapes/surface.h"
+
+/* snippet: grid_options */
+typedef struct {
+    double density;  /* cells per surface: n_x n_y n_z is about density x (number of surfaces) */
+    long max_cells;  /* the cap on n_x n_y n_z */
+    bool mailbox;    /* skip a surface already tested along the ray */
+    bool leap;       /* leap over blocks of empty cells in one step */
+    bool cull;       /* test a surface only when the ray passes through its box */
+} grid_options;
+/* end snippet */
+
+#define GRID_DEFAULT_DENSITY 2.0
+#define GRID_DEFAULT_MAX_CELLS (1L << 24)
+
+/* snippet: grid */
+typedef struct {
+    const surface_list *list; /* the surfaces; the grid holds their indices only */
+    vec3 lo, hi;              /* the grid's box: the surfaces' bounding box, widened by `margin` */
+    vec3 cell;                /* the size of one cell along x, y and z */
+    vec3 inv_cell;            /* 1 / cell */
+    int n[3];                 /* cells along x, y and z */
+    /* The cells' lists, flat (compressed sparse rows): the surfaces of cell
+     * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],
+     * in increasing index. */
+    uint32_t *start;          /* n_x n_y n_z + 1 offsets */
+    uint32_t *refs;           /* surface indices */
+    uint8_t *empty;           /* per cell: every cell within empty[c] - 1 cells (in each
+                               * axis) of c is empty; 0 for a cell with surfaces.  NULL
+                               * when leaping is off */
+    float (*box)[6];          /* per surface: its bounding box, widened by the margin and rounded
+                               * outwards (lo x, y, z, hi x, y, z); NULL when culling is off */
+    uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
+    long n_cells, n_refs, n_unbinned;
+    real margin;              /* every surface's box is widened by this before it is binned */
+    real scale;               /* the largest coordinate of the box, for the rounding bounds */
+    bool mailbox;
+    size_t peak_bytes;        /* the most memory the build held at once */
+} grid;
+/* end snippet */
+
+/* What a march did: added to by grid_intersect_counted. */
+typedef struct {
+    uint64_t cells;  /* cells visited */
+    uint64_t tests;  /* surface_intersect calls */
+    uint64_t culled; /* surfaces of those cells whose boxes the ray passes by */
+} grid_counts;
+
+/* The default knobs: GRID_DEFAULT_DENSITY, GRID_DEFAULT_MAX_CELLS, mailboxing, leaping and culling on. */
+grid_options grid_default_options(void);
+
+/* Builds the grid of `list`, which must outlive it and not change.  Returns
+ * 0, or -1 with the problem in err (out of memory, more cell entries than
+ * 32-bit offsets hold, a bad knob). */
+int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, size_t err_size);
+void grid_free(grid *g);
+
+/* The grid's own memory in bytes (the surfaces aside). */
+size_t grid_memory(const grid *g);
+
+/* The cells a box [box_lo, box_hi] overlaps: first[a] .. last[a] along each
+ * axis a, clamped to the grid; first[a] > last[a] on some axis when the box
+ * lies wholly outside.  A box that touches a cell boundary overlaps the
+ * cells on both sides. */
+void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int last[3]);
+
+/* The hit with the smallest t in (t_min, t_max), as surfaces_intersect
+ * finds it over g->list: the same surface, the same t, the same record. */
+bool grid_intersect(const grid *g, ray r, real t_min, real t_max, hit_record *hit);
+
+/* The same, adding what the march did to *counts (when not NULL). */
+bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_record *hit, grid_counts *counts);
+
+#endif

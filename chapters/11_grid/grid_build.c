@@ -1,0 +1,361 @@
+/* grid_build.c - chapter 11: the cells of the grid and the surfaces in each. */
+#include "11_grid/grid.h"
+#include "exercise.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+grid_options grid_default_options(void)
+{
+    return (grid_options){.density = GRID_DEFAULT_DENSITY,
+                          .max_cells = GRID_DEFAULT_MAX_CELLS,
+                          .mailbox = true,
+                          .leap = true,
+                          .cull = true};
+}
+
+static real get(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
+
+/* A surface's bounding box: a sphere's centre +- R, a triangle's vertices' extremes. */
+static void surface_bounds(const surface *s, vec3 *lo, vec3 *hi)
+{
+    if (s->kind == SHAPE_SPHERE) {
+        real r = real_abs(s->sphere.radius);
+        vec3 c = s->sphere.center;
+        *lo = vec3_make(c.x - r, c.y - r, c.z - r);
+        *hi = vec3_make(c.x + r, c.y + r, c.z + r);
+    } else {
+        const triangle *t = &s->triangle;
+        *lo = vec3_make(real_fmin(t->a.x, real_fmin(t->b.x, t->c.x)), real_fmin(t->a.y, real_fmin(t->b.y, t->c.y)),
+                        real_fmin(t->a.z, real_fmin(t->b.z, t->c.z)));
+        *hi = vec3_make(real_fmax(t->a.x, real_fmax(t->b.x, t->c.x)), real_fmax(t->a.y, real_fmax(t->b.y, t->c.y)),
+                        real_fmax(t->a.z, real_fmax(t->b.z, t->c.z)));
+    }
+}
+
+static vec3 widen(vec3 v, real m) { return vec3_make(v.x + m, v.y + m, v.z + m); }
+
+/* The index of the cell holding coordinate x along axis a, as a real:
+ * (x - lo_a) / cell_a. */
+static real cell_coordinate(const grid *g, vec3 x, int a) { return (get(x, a) - get(g->lo, a)) * get(g->inv_cell, a); }
+
+/* A real cell index clamped to [lowest, highest] before it becomes an int,
+ * so that a far or non-finite coordinate never overflows the conversion. */
+static int clamp_index(real f, int lowest, int highest)
+{
+    if (!(f >= (real)lowest)) /* also NaN */
+        return lowest;
+    if (f >= (real)highest)
+        return highest;
+    return (int)f;
+}
+
+/* snippet: cell_range */
+void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int last[3])
+{
+    /* TODO cell_range: the cells the box [box_lo, box_hi] overlaps, axis by axis.
+     * Along axis a, coordinate x lies at f = (x - lo_a) / cell_a in units of cells from
+     * the grid's low corner (cell_coordinate(g, x, a) computes it): cell i covers
+     * i <= f <= i + 1, so boundaries belong to both cells they separate.  The box covers
+     *     first = ceil(f_lo) - 1   (f_lo = 2.0 touches cell 1; f_lo = 2.3 starts in cell 2)
+     *     last  = floor(f_hi)      (f_hi = 3.0 touches cell 3)
+     * clamped to the grid, 0 .. n_a - 1, with clamp_index (it never overflows an int).
+     * A box wholly outside the grid then has first > last. */
+    EXERCISE_STUB("11_grid", "grid_build.c", "cell_range");
+    (void)g;
+    (void)box_lo;
+    (void)box_hi;
+    (void)cell_coordinate;
+    (void)clamp_index;
+    for (int a = 0; a < 3; a++) {
+        first[a] = 0;
+        last[a] = -1;
+    }
+}
+/* end snippet */
+
+/* Whether a triangle can touch cell (i, j, k), by the separating axis test
+ * of Akenine-Moller (2001): the triangle and the box are apart when their
+ * projections on some axis are, and it suffices to try the box's three
+ * axes (the cell range has done that), the triangle's normal and the nine
+ * cross products of a box axis with a triangle edge.  The box is the cell
+ * widened by the margin, and each comparison allows a rounding term on top,
+ * so the test says yes too often, never too rarely: a triangle is listed in
+ * every cell it meets.  Spheres and triangles within one cell's box along
+ * every axis are binned by their boxes alone. */
+static bool triangle_touches_cell(const grid *g, const triangle *tri, int i, int j, int k)
+{
+    vec3 h = widen(vec3_scale(g->cell, (real)0.5), g->margin);
+    vec3 m = vec3_make(g->lo.x + ((real)i + (real)0.5) * g->cell.x, g->lo.y + ((real)j + (real)0.5) * g->cell.y,
+                       g->lo.z + ((real)k + (real)0.5) * g->cell.z);
+    /* the vertices relative to the cell's centre, and the edges */
+    const vec3 v[3] = {vec3_sub(tri->a, m), vec3_sub(tri->b, m), vec3_sub(tri->c, m)};
+    const vec3 e[3] = {vec3_sub(v[1], v[0]), vec3_sub(v[2], v[1]), vec3_sub(v[0], v[2])};
+    const real rounding = 8 * REAL_EPSILON * (g->scale + vec3_max_abs(m));
+    vec3 axes[10];
+    int n = 0;
+    axes[n++] = vec3_cross(e[0], e[1]); /* the normal */
+    const vec3 unit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    for (int a = 0; a < 3; a++)
+        for (int b = 0; b < 3; b++)
+            axes[n++] = vec3_cross(unit[a], e[b]);
+    for (int q = 0; q < n; q++) {
+        vec3 u = axes[q];
+        real p0 = vec3_dot(v[0], u), p1 = vec3_dot(v[1], u), p2 = vec3_dot(v[2], u);
+        real lo = p0 < p1 ? (p0 < p2 ? p0 : p2) : (p1 < p2 ? p1 : p2);
+        real hi = p0 > p1 ? (p0 > p2 ? p0 : p2) : (p1 > p2 ? p1 : p2);
+        real sum = real_abs(u.x) + real_abs(u.y) + real_abs(u.z);
+        real r = real_abs(u.x) * h.x + real_abs(u.y) * h.y + real_abs(u.z) * h.z + rounding * sum;
+        if (lo > r || hi < -r) /* apart along u (a NaN never separates) */
+            return false;
+    }
+    return true;
+}
+
+/* Lists surface s in every cell it overlaps: counts it there (fill NULL) or
+ * writes its index at fill[cell]++. */
+static void bin_surface(grid *g, const surface *s, uint32_t index, uint32_t *count, uint32_t *fill)
+{
+    vec3 lo, hi;
+    surface_bounds(s, &lo, &hi);
+    if (!vec3_is_finite(lo) || !vec3_is_finite(hi))
+        return; /* unbinned: tested for every ray */
+    int first[3], last[3];
+    grid_cell_range(g, widen(lo, -g->margin), widen(hi, g->margin), first, last);
+    bool one_cell = first[0] == last[0] && first[1] == last[1] && first[2] == last[2];
+    bool by_axes = s->kind == SHAPE_TRIANGLE && !one_cell;
+    for (int k = first[2]; k <= last[2]; k++)
+        for (int j = first[1]; j <= last[1]; j++)
+            for (int i = first[0]; i <= last[0]; i++) {
+                if (by_axes && !triangle_touches_cell(g, &s->triangle, i, j, k))
+                    continue;
+                long c = i + (long)g->n[0] * (j + (long)g->n[1] * k);
+                if (fill)
+                    g->refs[fill[c]++] = index;
+                else
+                    count[c]++;
+            }
+}
+
+/* snippet: resolution */
+/* Cells along each axis: about density x N cells in all, as cubic as the box
+ * allows (n_a proportional to the box's extent e_a).  An axis of zero extent
+ * (a flat scene) gets one cell and the others share the count. */
+static void resolution(const double extent[3], long surfaces, double density, long max_cells, int n[3])
+{
+    double volume = 1;
+    int spanned = 0;
+    for (int a = 0; a < 3; a++)
+        if (extent[a] > 0) {
+            volume *= extent[a];
+            spanned++;
+        }
+    double wanted = fmin(density * (double)surfaces, (double)max_cells);
+    /* s cells per unit length along every spanned axis: prod (e_a s) = wanted */
+    double s = spanned ? fmin(pow(fmax(wanted, 1) / volume, 1.0 / spanned), 1e300) : 0;
+    for (;;) {
+        double cells = 1;
+        for (int a = 0; a < 3; a++) {
+            double na = extent[a] > 0 ? fmin(fmax(round(extent[a] * s), 1), 1 << 20) : 1;
+            n[a] = (int)na;
+            cells *= na;
+        }
+        if (cells <= (double)max_cells)
+            return;
+        s *= 0.99 * pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1));
+    }
+}
+/* end snippet */
+
+/* A surface's box for culling: widened by the margin, then rounded outwards
+ * to float, so that it holds every point the real-valued box holds. */
+static void cull_box(const grid *g, const surface *s, float box[6])
+{
+    vec3 lo, hi;
+    surface_bounds(s, &lo, &hi);
+    lo = widen(lo, -g->margin);
+    hi = widen(hi, g->margin);
+    for (int a = 0; a < 3; a++) {
+        float l = (float)get(lo, a), h = (float)get(hi, a);
+        box[a] = (real)l > get(lo, a) ? nextafterf(l, -INFINITY) : l;
+        box[3 + a] = (real)h < get(hi, a) ? nextafterf(h, INFINITY) : h;
+    }
+}
+
+/* snippet: empty_distances */
+/* empty[c]: the distance from cell c to the nearest cell with surfaces,
+ * counted as the largest of the index differences along x, y and z (the
+ * chessboard distance), at most 255; 0 for a cell with surfaces.  Two
+ * sweeps of the 26 neighbours (Rosenfeld and Pfaltz's chamfer transform with
+ * every step weighing 1, which is exact for this distance): the first in
+ * increasing cell order takes the neighbours before the cell, the second in
+ * decreasing order those after it. */
+static void empty_distances(grid *g)
+{
+    const int nx = g->n[0], ny = g->n[1], nz = g->n[2];
+    for (long c = 0; c < g->n_cells; c++)
+        g->empty[c] = g->start[c + 1] > g->start[c] ? 0 : 255;
+    for (int sweep = 0; sweep < 2; sweep++) {
+        const int sign = sweep == 0 ? 1 : -1;
+        for (long q = 0; q < g->n_cells; q++) {
+            long c = sweep == 0 ? q : g->n_cells - 1 - q;
+            int i = (int)(c % nx), j = (int)(c / nx % ny), k = (int)(c / ((long)nx * ny));
+            int best = g->empty[c];
+            /* the 13 neighbours that come before c in this sweep's order: offsets
+             * (di, dj, dk) that are negative in the order of k, then j, then i */
+            for (int dk = -1; dk <= 0; dk++)
+                for (int dj = -1; dj <= 1; dj++)
+                    for (int di = -1; di <= 1; di++) {
+                        if (!(dk < 0 || dj < 0 || (dj == 0 && di < 0)))
+                            continue;
+                        int ii = i + sign * di, jj = j + sign * dj, kk = k + sign * dk;
+                        if (ii < 0 || ii >= nx || jj < 0 || jj >= ny || kk < 0 || kk >= nz)
+                            continue;
+                        int d = g->empty[ii + (long)nx * (jj + (long)ny * kk)] + 1;
+                        if (d < best)
+                            best = d;
+                    }
+            g->empty[c] = (uint8_t)best;
+        }
+    }
+}
+/* end snippet */
+
+int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, size_t err_size)
+{
+    *g = (grid){.list = list, .mailbox = opt.mailbox};
+    if (!(opt.density > 0) || opt.max_cells < 1 || opt.max_cells > (1L << 30)) {
+        snprintf(err, err_size, "grid: density must be > 0 and the cell cap 1 .. 2^30 (got %g, %ld)", opt.density,
+                 opt.max_cells);
+        return -1;
+    }
+    /* The box of every surface with finite bounds; the others are tested for every ray. */
+    vec3 lo = vec3_make(REAL_INFINITY, REAL_INFINITY, REAL_INFINITY), hi = vec3_neg(lo);
+    long binned = 0;
+    for (int k = 0; k < list->n; k++) {
+        vec3 slo, shi;
+        surface_bounds(&list->items[k], &slo, &shi);
+        if (vec3_is_finite(slo) && vec3_is_finite(shi)) {
+            lo = vec3_make(real_fmin(lo.x, slo.x), real_fmin(lo.y, slo.y), real_fmin(lo.z, slo.z));
+            hi = vec3_make(real_fmax(hi.x, shi.x), real_fmax(hi.y, shi.y), real_fmax(hi.z, shi.z));
+            binned++;
+        } else {
+            g->n_unbinned++;
+        }
+    }
+    if (g->n_unbinned) {
+        g->unbinned = malloc((size_t)g->n_unbinned * sizeof *g->unbinned);
+        if (!g->unbinned)
+            goto out_of_memory;
+        long u = 0;
+        for (int k = 0; k < list->n; k++) {
+            vec3 slo, shi;
+            surface_bounds(&list->items[k], &slo, &shi);
+            if (!(vec3_is_finite(slo) && vec3_is_finite(shi)))
+                g->unbinned[u++] = (uint32_t)k;
+        }
+    }
+    if (binned == 0)
+        return 0; /* no cells: n_cells = 0 and every ray misses the (empty) grid */
+
+    /* snippet: margin */
+    /* The margin: rounding moves a computed point (a hit, a cell boundary) by
+     * a few units of REAL_EPSILON times the size of its coordinates; every box
+     * is widened by far more than that, so a surface is listed in every cell
+     * its hits can be computed to lie in.  It also gives a flat scene's box a
+     * thickness. */
+    g->scale = real_fmax(vec3_max_abs(lo), vec3_max_abs(hi));
+    g->margin = 64 * REAL_EPSILON * g->scale;
+    if (!(g->margin > 0))
+        g->margin = 1; /* every surface is a point at the origin */
+    /* end snippet */
+    double extent[3] = {(double)hi.x - (double)lo.x, (double)hi.y - (double)lo.y, (double)hi.z - (double)lo.z};
+    resolution(extent, binned, opt.density, opt.max_cells, g->n);
+    g->lo = widen(lo, -g->margin);
+    g->hi = widen(hi, g->margin);
+    vec3 size = vec3_sub(g->hi, g->lo);
+    g->cell = vec3_make(size.x / (real)g->n[0], size.y / (real)g->n[1], size.z / (real)g->n[2]);
+    g->inv_cell = vec3_make(1 / g->cell.x, 1 / g->cell.y, 1 / g->cell.z);
+    g->n_cells = (long)g->n[0] * g->n[1] * g->n[2];
+
+    /* Two passes over the surfaces: count each cell's surfaces, then, with the
+     * offsets summed from the counts, write them in increasing index.  A cell
+     * lists each surface at most once, so its count fits 32 bits; the same
+     * array then holds where the next index of each cell goes. */
+    uint32_t *count = calloc((size_t)g->n_cells, sizeof *count);
+    g->start = malloc(((size_t)g->n_cells + 1) * sizeof *g->start);
+    if (!count || !g->start) {
+        free(count);
+        goto out_of_memory;
+    }
+    for (int k = 0; k < list->n; k++)
+        bin_surface(g, &list->items[k], (uint32_t)k, count, NULL);
+    uint64_t total = 0;
+    for (long c = 0; c < g->n_cells; c++) {
+        g->start[c] = (uint32_t)total;
+        total += count[c];
+        if (total > UINT32_MAX) {
+            free(count);
+            grid_free(g);
+            snprintf(err, err_size, "grid: more than 2^32 cell entries; lower the density or the cell cap");
+            return -1;
+        }
+    }
+    g->start[g->n_cells] = (uint32_t)total;
+    g->n_refs = (long)total;
+    g->refs = malloc((total ? (size_t)total : 1) * sizeof *g->refs);
+    if (!g->refs) {
+        free(count);
+        goto out_of_memory;
+    }
+    uint32_t *fill = count;
+    for (long c = 0; c < g->n_cells; c++)
+        fill[c] = g->start[c];
+    for (int k = 0; k < list->n; k++)
+        bin_surface(g, &list->items[k], (uint32_t)k, NULL, fill);
+    free(fill);
+    /* the most the build held at once: the grid and the fill array */
+    g->peak_bytes = grid_memory(g) + (size_t)g->n_cells * sizeof *fill;
+    if (opt.cull) {
+        g->box = malloc((size_t)list->n * sizeof *g->box);
+        if (!g->box)
+            goto out_of_memory;
+        for (int k = 0; k < list->n; k++)
+            cull_box(g, &list->items[k], g->box[k]);
+        g->peak_bytes += (size_t)list->n * sizeof *g->box;
+    }
+    if (opt.leap) {
+        g->empty = malloc((size_t)g->n_cells);
+        if (!g->empty)
+            goto out_of_memory;
+        empty_distances(g);
+        g->peak_bytes += (size_t)g->n_cells;
+    }
+    return 0;
+
+out_of_memory:
+    grid_free(g);
+    snprintf(err, err_size, "grid: out of memory");
+    return -1;
+}
+
+void grid_free(grid *g)
+{
+    free(g->start);
+    free(g->refs);
+    free(g->unbinned);
+    free(g->empty);
+    free(g->box);
+    g->start = g->refs = g->unbinned = NULL;
+    g->empty = NULL;
+    g->box = NULL;
+    g->n_cells = g->n_refs = g->n_unbinned = 0;
+}
+
+size_t grid_memory(const grid *g)
+{
+    size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
+    return sizeof *g + (cells + (size_t)g->n_refs + (size_t)g->n_unbinned) * sizeof(uint32_t) +
+           (g->empty ? (size_t)g->n_cells : 0) + (g->box ? (size_t)g->list->n * sizeof *g->box : 0);
+}

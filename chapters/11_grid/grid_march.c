@@ -1,0 +1,324 @@
+/* grid_march.c - chapter 11: the closest hit, cell by cell along the ray. */
+#include "11_grid/grid.h"
+#include "exercise.h"
+
+#include <math.h>
+
+#ifdef RT_REAL_FLOAT
+#define real_next_up(x) nextafterf((x), INFINITY)
+#else
+#define real_next_up(x) nextafter((x), INFINITY)
+#endif
+
+/* The mailbox: the last surfaces tested along this ray, one slot per value
+ * of (index mod MAILBOX).  A surface found in its slot was tested already
+ * and is skipped; a slot taken over by another surface only costs a second
+ * test of the first, never a wrong answer. */
+#define MAILBOX 32
+
+/* The search so far: the best hit, and the window a new hit must fall in. */
+typedef struct {
+    const surface_list *list;
+    ray r;
+    real t_min;
+    real best_t;     /* the t of the best hit, t_max before any */
+    real upper;      /* surfaces are asked for hits in (t_min, upper) */
+    int best;        /* its surface, -1 before any */
+    hit_record hit;  /* its record */
+    uint64_t tests;
+} search;
+
+/* snippet: test_surface */
+/* Surface k against the ray.  The linear scan keeps the first surface in
+ * the list among those hit at the smallest t; the grid meets the surfaces
+ * in another order, so it also asks for hits AT the best t so far (upper is
+ * the next real above it) and takes one there when its index is smaller. */
+static inline void test_surface(search *s, uint32_t k)
+{
+    hit_record candidate;
+    s->tests++;
+    if (surface_intersect(&s->list->items[k], s->list, s->r, s->t_min, s->upper, &candidate) &&
+        (candidate.t < s->best_t || (int)k < s->best)) {
+        s->best_t = candidate.t;
+        s->upper = real_next_up(candidate.t);
+        s->best = (int)k;
+        s->hit = candidate;
+        s->hit.surface = (int)k;
+    }
+}
+/* end snippet */
+
+/* snippet: cull */
+/* Whether the ray can meet a surface whose (widened) box is `box` at some t
+ * in (t_min, upper): the slabs of the three axes overlap there.  `near[a]`
+ * picks the side of the box the ray enters by along axis a (box[a] for
+ * d_a > 0, box[3 + a] for d_a < 0) and far[a] the other; each crossing is
+ * widened by the axis's rounding slack, and a NaN never culls, so that a
+ * surface surface_intersect would report is never culled.  A ray with a
+ * zero component (inv_d = 0) takes the slower, general path. */
+static inline bool passes_box(const float box[6], const real p[3], const real inv_d[3], const real slack[3],
+                              const int near[3], const int far[3], bool parallel, real t_min, real upper)
+{
+    real t_in = t_min, t_out = upper;
+    if (!parallel) {
+        for (int a = 0; a < 3; a++) {
+            real t0 = ((real)box[near[a]] - p[a]) * inv_d[a] - slack[a];
+            real t1 = ((real)box[far[a]] - p[a]) * inv_d[a] + slack[a];
+            t_in = t0 > t_in ? t0 : t_in;
+            t_out = t1 < t_out ? t1 : t_out;
+        }
+        return !(t_in > t_out);
+    }
+    for (int a = 0; a < 3; a++) {
+        if (inv_d[a] == 0) { /* parallel to the slab: inside it or never */
+            if (p[a] < (real)box[a] || p[a] > (real)box[3 + a])
+                return false;
+            continue;
+        }
+        real t0 = ((real)box[near[a]] - p[a]) * inv_d[a] - slack[a];
+        real t1 = ((real)box[far[a]] - p[a]) * inv_d[a] + slack[a];
+        t_in = t0 > t_in ? t0 : t_in;
+        t_out = t1 < t_out ? t1 : t_out;
+    }
+    return !(t_in > t_out);
+}
+/* end snippet */
+
+/* snippet: dda */
+/* The march's state (Amanatides and Woo): the cell the ray is in, the
+ * direction of its steps, and the t at which it crosses the next cell
+ * boundary along each axis. */
+typedef struct {
+    int i[3];     /* the cell's indices */
+    int step[3];  /* +1 or -1: the sign of d_a; 0 when d_a = 0 (the ray never crosses a boundary of that axis) */
+    real next[3]; /* t of the next boundary crossing along each axis; +infinity when step is 0 */
+    long cell;    /* i[0] + n_x (i[1] + n_y i[2]): the cell's place in g->start */
+} dda;
+/* end snippet */
+
+/* t where the ray p + t d crosses plane `plane` (a cell boundary, counted
+ * from the grid's low corner) of axis a: lo_a + plane cell_a = p_a + t d_a. */
+static inline real crossing(const grid *g, int a, int plane, const real p[3], const real inv_d[3])
+{
+    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, cell[3] = {g->cell.x, g->cell.y, g->cell.z};
+    return (lo[a] + (real)plane * cell[a] - p[a]) * inv_d[a];
+}
+
+/* snippet: dda_step */
+/* Leaves the current cell through its boundary of axis a (the nearest one):
+ * returns false when that boundary is the grid's own, true after moving to
+ * the neighbour. */
+static inline bool dda_step(const grid *g, dda *m, int a, const real p[3], const real inv_d[3])
+{
+    /* TODO dda_step: one step of the 3D-DDA along axis a.
+     *     i_a = i_a + step_a                      (the neighbour across the boundary)
+     *     outside 0 .. n_a - 1: return false      (the ray leaves the grid)
+     *     cell = cell + step_a stride_a           (stride: 1, n_x, n_x n_y for x, y, z)
+     *     next_a = t of the neighbour's far boundary along a:
+     *              plane i_a + 1 when step_a > 0, plane i_a when step_a < 0
+     *              (crossing(g, a, plane, p, inv_d) computes it)
+     * Compute next_a from the plane each time rather than adding a fixed
+     * t step: the sum would gather one rounding per cell. */
+    EXERCISE_STUB("11_grid", "grid_march.c", "dda_step");
+    (void)g;
+    (void)m;
+    (void)a;
+    (void)p;
+    (void)inv_d;
+    return false;
+}
+/* end snippet */
+
+/* The axis whose boundary the ray crosses first: the cell's far side.  From
+ * the three comparisons, without branches (which way they go changes from
+ * cell to cell, and a mispredicted branch costs more than the lookup). */
+static inline int nearest_axis(const dda *m)
+{
+    static const int8_t axis[8] = {2, 1, 2, 1, 2, 2, 0, 0}; /* by (x<y, x<z, y<z) */
+    int k = ((m->next[0] < m->next[1]) << 2) | ((m->next[0] < m->next[2]) << 1) | (m->next[1] < m->next[2]);
+    return axis[k];
+}
+
+/* The cell index along axis a of coordinate f (in cells from the grid's low
+ * corner), clamped to lowest .. highest. */
+static inline int index_in(real f, int lowest, int highest)
+{
+    if (!(f >= (real)lowest)) /* also NaN */
+        return lowest;
+    if (f >= (real)highest)
+        return highest;
+    return (int)f;
+}
+
+static inline int first_cell(const grid *g, int a, real f) { return index_in(f, 0, g->n[a] - 1); }
+
+/* snippet: leap */
+/* The ray is in an empty cell whose neighbours up to r cells away along
+ * every axis are empty too: the block of (2r + 1)^3 cells around it holds
+ * nothing.  Leave the block in one step: along the axis whose block face the
+ * ray crosses first, the new index is just past that face, exactly; along the
+ * others it is the cell of the exit point, moved back along the ray by the
+ * rounding of that point (`back`, in units of length) and kept inside the
+ * block and the grid, so that rounding can only land the ray a cell short
+ * (in the empty block), never a cell too far.  False when the ray leaves the
+ * grid through the block's face. */
+static inline bool dda_leap(const grid *g, dda *m, int r, const real p[3], const real d[3], const real inv_d[3],
+                            real reach, real d_max)
+{
+    real t_exit = REAL_INFINITY;
+    int axis = -1;
+    for (int a = 0; a < 3; a++) {
+        if (!m->step[a])
+            continue;
+        real t = crossing(g, a, m->step[a] > 0 ? m->i[a] + r + 1 : m->i[a] - r, p, inv_d);
+        if (t < t_exit) {
+            t_exit = t;
+            axis = a;
+        }
+    }
+    if (axis < 0)
+        return false;
+    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, inv_cell[3] = {g->inv_cell.x, g->inv_cell.y, g->inv_cell.z};
+    const real back = reach + 16 * REAL_EPSILON * real_abs(t_exit) * d_max;
+    int next[3];
+    for (int a = 0; a < 3; a++) {
+        if (a == axis) {
+            next[a] = m->i[a] + m->step[a] * (r + 1);
+            if (next[a] < 0 || next[a] >= g->n[a])
+                return false; /* the block's face is beyond the grid's */
+        } else if (m->step[a]) { /* in the block and in the grid */
+            real f = (p[a] + t_exit * d[a] - lo[a] - (real)m->step[a] * back) * inv_cell[a];
+            int lowest = m->i[a] - r > 0 ? m->i[a] - r : 0;
+            int highest = m->i[a] + r < g->n[a] - 1 ? m->i[a] + r : g->n[a] - 1;
+            next[a] = index_in(f, lowest, highest);
+        } else {
+            next[a] = m->i[a];
+        }
+    }
+    for (int a = 0; a < 3; a++) {
+        m->i[a] = next[a];
+        m->next[a] = m->step[a] ? crossing(g, a, m->i[a] + (m->step[a] > 0), p, inv_d) : REAL_INFINITY;
+    }
+    m->cell = m->i[0] + (long)g->n[0] * (m->i[1] + (long)g->n[1] * m->i[2]);
+    return true;
+}
+/* end snippet */
+
+bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_record *hit, grid_counts *counts)
+{
+    search s = {.list = g->list, .r = r, .t_min = t_min, .best_t = t_max, .upper = t_max, .best = -1};
+    uint64_t cells = 0, culled = 0;
+    for (long u = 0; u < g->n_unbinned; u++)
+        test_surface(&s, g->unbinned[u]);
+    if (g->n_cells == 0)
+        goto done;
+
+    /* snippet: enter */
+    /* Where the ray enters the grid's box: the slabs lo_a <= p_a + t d_a <= hi_a
+     * of the three axes, within (t_min, t_max).  A component d_a of +0 or -0
+     * (or so small that 1/d_a overflows) never crosses a boundary of its
+     * axis: the ray stays in one slab, or misses the box.
+     * Rounding moves computed crossings by up to a few REAL_EPSILON times the
+     * coordinates involved; `slack` bounds that in t per axis, and the march
+     * errs towards visiting a cell too many, never one too few. */
+    const real p[3] = {r.p.x, r.p.y, r.p.z}, d[3] = {r.d.x, r.d.y, r.d.z};
+    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, hi[3] = {g->hi.x, g->hi.y, g->hi.z};
+    const real reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
+    real inv_d[3], slack[3], t0 = t_min, t1 = t_max;
+    int near[3], far[3];
+    bool parallel = false;
+    for (int a = 0; a < 3; a++) {
+        inv_d[a] = 1 / d[a];
+        near[a] = d[a] < 0 ? 3 + a : a;
+        far[a] = d[a] < 0 ? a : 3 + a;
+        if (!isfinite(inv_d[a])) { /* d_a = +0 or -0, or tiny */
+            inv_d[a] = slack[a] = 0;
+            parallel = true;
+            if (!(p[a] >= lo[a] && p[a] <= hi[a]))
+                goto done;
+            continue;
+        }
+        slack[a] = reach * real_abs(inv_d[a]);
+        real near = (lo[a] - p[a]) * inv_d[a], far = (hi[a] - p[a]) * inv_d[a];
+        if (near > far) {
+            real swap = near;
+            near = far;
+            far = swap;
+        }
+        t0 = real_fmax(t0, near - slack[a]);
+        t1 = real_fmin(t1, far + slack[a]);
+    }
+    if (!(t0 <= t1)) /* misses the box, or the window ends before it */
+        goto done;
+
+    /* The first cell: the one holding p + t0 d, moved back along the ray by
+     * the rounding of that point, and clamped to the grid. */
+    dda m;
+    const real d_max = vec3_max_abs(r.d);
+    const real back = reach + 16 * REAL_EPSILON * real_abs(t0) * d_max;
+    const real inv_cell[3] = {g->inv_cell.x, g->inv_cell.y, g->inv_cell.z};
+    for (int a = 0; a < 3; a++) {
+        m.step[a] = inv_d[a] > 0 ? 1 : inv_d[a] < 0 ? -1 : 0;
+        real x = inv_d[a] != 0 ? p[a] + t0 * d[a] : p[a];
+        m.i[a] = first_cell(g, a, (x - lo[a] - (real)m.step[a] * back) * inv_cell[a]);
+        m.next[a] = m.step[a] ? crossing(g, a, m.i[a] + (m.step[a] > 0), p, inv_d) : REAL_INFINITY;
+    }
+    m.cell = m.i[0] + (long)g->n[0] * (m.i[1] + (long)g->n[1] * m.i[2]);
+    /* end snippet */
+
+    /* snippet: march */
+    uint32_t mailbox[MAILBOX];
+    for (int b = 0; b < MAILBOX; b++)
+        mailbox[b] = UINT32_MAX;
+    for (;;) {
+        /* Every surface of the cell, each tested over the whole window
+         * (t_min, best): a hit beyond this cell is kept too, and counts once
+         * the march reaches its cell. */
+        cells++;
+        const uint32_t *ref = g->refs + g->start[m.cell], *end = g->refs + g->start[m.cell + 1];
+        for (; ref < end; ref++) {
+            uint32_t k = *ref;
+            if (g->mailbox) {
+                if (mailbox[k % MAILBOX] == k)
+                    continue; /* tested already along this ray */
+                mailbox[k % MAILBOX] = k;
+            }
+            if (g->box && !passes_box(g->box[k], p, inv_d, slack, near, far, parallel, t_min, s.upper)) {
+                culled++;
+                continue; /* the ray passes by its box */
+            }
+            test_surface(&s, k);
+        }
+        /* The cell ends where the ray crosses its nearest boundary.  A hit no
+         * farther than that is the closest: every surface before it along the
+         * ray lies in this cell or an earlier one, all tested.  A hit beyond
+         * it may yet lose to a surface of a later cell: march on. */
+        int a = nearest_axis(&m);
+        if (s.best_t <= m.next[a] - slack[a])
+            break;
+        if (g->empty && g->empty[m.cell] >= 2) { /* a block of empty cells: leap over it */
+            if (!dda_leap(g, &m, g->empty[m.cell] - 1, p, d, inv_d, reach, d_max))
+                break;
+            continue;
+        }
+        if (!dda_step(g, &m, a, p, inv_d))
+            break;
+    }
+    /* end snippet */
+
+done:
+    if (counts) {
+        counts->cells += cells;
+        counts->tests += s.tests;
+        counts->culled += culled;
+    }
+    if (s.best < 0)
+        return false;
+    *hit = s.hit;
+    return true;
+}
+
+bool grid_intersect(const grid *g, ray r, real t_min, real t_max, hit_record *hit)
+{
+    return grid_intersect_counted(g, r, t_min, t_max, hit, NULL);
+}

@@ -1,0 +1,774 @@
+/* test_11_grid.c - chapter 11: the uniform grid and its 3D-DDA.
+ *
+ * The grid must give exactly the answer of chapter 04's linear scan: for
+ * every ray the same surface (or the same miss) and bit for bit the same t,
+ * since both call surface_intersect on the same ray and window and keep the
+ * smallest t, the first in the list among equal ones.  So most tests here
+ * compare grid_intersect with surfaces_intersect and allow no tolerance at
+ * all: `same_hit` compares t with ==, and every other field of the record.
+ * They do so on random scenes (arithmetic that is not exact, far from the
+ * origin) and on the cases where grids usually break: directions with +0
+ * and -0 components, origins outside the grid and on its faces, edges and
+ * corners, flat scenes, one huge surface among thousands of tiny ones, rays
+ * that start inside a cell of a surface that spans many cells, and ties.
+ * The exercises' own tests check cell ranges and the cells a ray visits
+ * against numbers computed another way.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "01_camera_rays/camera.h"
+#include "04_many_shapes/closest_hit.h"
+#include "04_many_shapes/scene_surfaces.h"
+#include "11_grid/grid.h"
+#include "scene_build.h"
+#include "suite.h"
+
+static const sphere_formula formulas[] = {SPHERE_ROBUST, SPHERE_TEXTBOOK};
+static const triangle_test triangle_tests[] = {TRIANGLE_CRAMER, TRIANGLE_WATERTIGHT};
+
+/* ---- random numbers and random scenes --------------------------------------------- */
+
+static uint64_t rng_state;
+static uint64_t next_u64(void)
+{
+    uint64_t z = (rng_state += 0x9e3779b97f4a7c15u);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9u;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebu;
+    return z ^ (z >> 31);
+}
+/* Uniform in [lo, hi). */
+static real uniform(real lo, real hi) { return lo + (hi - lo) * (real)((double)(next_u64() >> 11) * 0x1p-53); }
+static vec3 uniform_vec(vec3 lo, vec3 hi)
+{
+    return vec3_make(uniform(lo.x, hi.x), uniform(lo.y, hi.y), uniform(lo.z, hi.z));
+}
+static vec3 random_direction(void)
+{
+    for (;;) {
+        vec3 d = vec3_make(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1));
+        real l = vec3_length(d);
+        if (l > (real)0.1 && l <= 1)
+            return d;
+    }
+}
+
+/* n random surfaces (spheres and triangles, mostly small, a few large) in
+ * the box centre +- half. */
+static void random_scene(surface_list *list, int n, vec3 centre, real half)
+{
+    vec3 lo = vec3_sub(centre, vec3_make(half, half, half)), hi = vec3_add(centre, vec3_make(half, half, half));
+    for (int k = 0; k < n; k++) {
+        real size = half * (next_u64() % 16 == 0 ? uniform((real)0.2, (real)0.8) : uniform((real)0.01, (real)0.1));
+        vec3 c = uniform_vec(lo, hi);
+        if (next_u64() % 2) {
+            surface_list_add_sphere(list, (sphere){c, size}, k % 7, k);
+        } else {
+            triangle t = {vec3_add(c, vec3_scale(random_direction(), size)),
+                          vec3_add(c, vec3_scale(random_direction(), size)),
+                          vec3_add(c, vec3_scale(random_direction(), size))};
+            surface_list_add_triangle(list, t, k % 7, k);
+        }
+    }
+}
+
+/* ---- the same answer as the linear scan ------------------------------------------- */
+
+/* Both found nothing, or both found the same surface at the same t (==, no
+ * tolerance) with the same record. */
+static bool same_hit(bool found_list, const hit_record *a, bool found_grid, const hit_record *b)
+{
+    if (found_list != found_grid)
+        return false;
+    if (!found_list)
+        return true;
+    return a->t == b->t && a->surface == b->surface && a->source == b->source && a->shader == b->shader &&
+           a->beta == b->beta && a->gamma == b->gamma && a->point.x == b->point.x && a->point.y == b->point.y &&
+           a->point.z == b->point.z && a->normal.x == b->normal.x && a->normal.y == b->normal.y &&
+           a->normal.z == b->normal.z;
+}
+
+/* The grid of `list` with the given knobs answers every ray as the linear
+ * scan did (`expected`, `found`); fails naming the first ray that differs. */
+static void compare_grid(const surface_list *list, grid_options opt, const ray *rays, const real *t_min,
+                         const real *t_max, long n, const hit_record *expected, const bool *found)
+{
+    grid g;
+    char err[256];
+    if (grid_build(&g, list, opt, err, sizeof err) != 0)
+        fail_msg("%s", err);
+    for (long k = 0; k < n; k++) {
+        hit_record b = {0};
+        bool fb = grid_intersect(&g, rays[k], t_min[k], t_max[k], &b);
+        if (!same_hit(found[k], &expected[k], fb, &b)) {
+            grid_free(&g);
+            fail_msg("ray %ld: p = (%.17g, %.17g, %.17g), d = (%.17g, %.17g, %.17g), t in (%g, %g), density %g, "
+                     "mailbox %d, leap %d, cull %d: linear scan %s surface %d at t = %.17g, "
+                     "grid %s surface %d at t = %.17g",
+                     k, (double)rays[k].p.x, (double)rays[k].p.y, (double)rays[k].p.z, (double)rays[k].d.x,
+                     (double)rays[k].d.y, (double)rays[k].d.z, (double)t_min[k], (double)t_max[k], opt.density,
+                     opt.mailbox, opt.leap, opt.cull, found[k] ? "hits" : "misses", found[k] ? expected[k].surface : -1,
+                     found[k] ? (double)expected[k].t : 0.0, fb ? "hits" : "misses", fb ? b.surface : -1,
+                     fb ? (double)b.t : 0.0);
+        }
+    }
+    grid_free(&g);
+}
+
+/* The linear scan's answers to the rays; returns how many hit something,
+ * so that a test can check it compared hits and not only misses. */
+static long linear_answers(const surface_list *list, const ray *rays, const real *t_min, const real *t_max, long n,
+                           hit_record *expected, bool *found)
+{
+    long hits = 0;
+    for (long k = 0; k < n; k++) {
+        expected[k] = (hit_record){0};
+        found[k] = surfaces_intersect(list, rays[k], t_min[k], t_max[k], &expected[k]);
+        hits += found[k];
+    }
+    return hits;
+}
+
+/* The same through grids of a few densities with every knob on, and with
+ * mailboxing, leaping and culling off one at a time and all together. */
+static long compare_all_knobs(const surface_list *list, const ray *rays, const real *t_min, const real *t_max,
+                              long n)
+{
+    static const struct {
+        double density;
+        bool mailbox, leap, cull;
+    } knobs[] = {
+        {0.3, true, true, true},  {2, true, true, true},  {10, true, true, true},   {2, false, true, true},
+        {2, true, false, true},   {2, true, true, false}, {2, false, false, false},
+    };
+    hit_record *expected = malloc((size_t)n * sizeof *expected);
+    bool *found = malloc((size_t)n * sizeof *found);
+    assert_non_null(expected);
+    assert_non_null(found);
+    long hits = linear_answers(list, rays, t_min, t_max, n, expected, found);
+    for (size_t k = 0; k < sizeof knobs / sizeof knobs[0]; k++) {
+        grid_options opt = {.density = knobs[k].density, .max_cells = 1L << 20, .mailbox = knobs[k].mailbox,
+                            .leap = knobs[k].leap, .cull = knobs[k].cull};
+        compare_grid(list, opt, rays, t_min, t_max, n, expected, found);
+    }
+    free(expected);
+    free(found);
+    return hits;
+}
+
+typedef struct {
+    ray *r;
+    real *t_min, *t_max;
+    long n;
+} ray_set;
+
+static ray_set rays_alloc(long n)
+{
+    ray_set s = {malloc((size_t)n * sizeof(ray)), malloc((size_t)n * sizeof(real)), malloc((size_t)n * sizeof(real)),
+                 n};
+    assert_non_null(s.r);
+    assert_non_null(s.t_min);
+    assert_non_null(s.t_max);
+    return s;
+}
+static void rays_free(ray_set *s)
+{
+    free(s->r);
+    free(s->t_min);
+    free(s->t_max);
+}
+
+/* Random scenes of spheres and triangles, far from the origin, with both
+ * sphere formulas and both triangle tests: rays from outside the scene, from
+ * inside it, with t_min > 0 (rays that start part-way) and finite t_max
+ * (segments, as shadow rays are).  400 000 grid rays in all. */
+static void test_random_scenes(void **state)
+{
+    (void)state;
+    rng_state = 11;
+    const long n = 5000;
+    ray_set rays = rays_alloc(n);
+    long hits = 0, total = 0;
+    for (int scene_no = 0; scene_no < 4; scene_no++) {
+        surface_list list;
+        surface_list_init(&list, formulas[scene_no % 2], triangle_tests[scene_no / 2]);
+        vec3 centre = vec3_make(uniform(-300, 300), uniform(-300, 300), uniform(-300, 300));
+        real half = uniform(1, 40);
+        random_scene(&list, 150 + 50 * scene_no, centre, half);
+        for (long k = 0; k < n; k++) {
+            int kind = (int)(k % 4);
+            vec3 target = vec3_add(centre, vec3_scale(random_direction(), half));
+            vec3 p = kind == 0 ? vec3_add(centre, vec3_scale(random_direction(), 4 * half)) /* outside */
+                               : vec3_add(centre, vec3_scale(random_direction(), half)); /* inside */
+            rays.r[k] = (ray){p, kind == 3 ? random_direction() : vec3_sub(target, p)};
+            rays.t_min[k] = kind == 2 ? uniform(0, (real)0.5) : 0;
+            rays.t_max[k] = kind == 3 ? uniform(0, half) : REAL_INFINITY;
+        }
+        hits += compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
+        total += n;
+        surface_list_free(&list);
+    }
+    rays_free(&rays);
+    /* The rays must have found something to compare: most aim at the scene. */
+    assert_true(hits > total / 4);
+}
+
+/* ---- where grids break --------------------------------------------------------------- */
+
+/* Rays whose direction has +0 and -0 components, along the axes and in the
+ * axis planes, some exactly on the planes between cells and on the faces of
+ * axis-aligned boxes. */
+static void test_zero_components(void **state)
+{
+    (void)state;
+    rng_state = 12;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    /* Boxes on a lattice of whole numbers (their faces lie on cell planes of
+     * a grid of unit cells), and random spheres and triangles among them. */
+    scene desc;
+    scene_init(&desc);
+    for (int k = 0; k < 40; k++) {
+        vec3 lo = vec3_make((real)(k % 5), (real)(k / 5 % 4), (real)(k / 20));
+        scene_add_surface(&desc, (scene_surface){.kind = SURFACE_BOX, .shader = -1, .min_pt = lo,
+                                                 .max_pt = vec3_add(lo, vec3_make((real)0.5, (real)0.5, 1))});
+    }
+    char err[256];
+    assert_int_equal(0, surface_list_from_scene(&list, &desc, err, sizeof err));
+    scene_free(&desc);
+    random_scene(&list, 60, vec3_make((real)2.5, 2, 1), 2);
+    const long n = 24000;
+    ray_set rays = rays_alloc(n);
+    static const real zeros[2] = {0.0, -0.0};
+    for (long k = 0; k < n; k++) {
+        /* p on a lattice point, a half-lattice point or anywhere; one or two
+         * of d's components +0 or -0 */
+        long kind = k % 3;
+        vec3 p = kind == 0   ? vec3_make((real)(next_u64() % 12) / 2 - 1, (real)(next_u64() % 10) / 2 - 1,
+                                         (real)(next_u64() % 6) / 2 - 1)
+                 : kind == 1 ? vec3_make((real)(next_u64() % 7) - 1, uniform(-1, 5), (real)(next_u64() % 4) - 1)
+                             : uniform_vec(vec3_make(-2, -2, -2), vec3_make(7, 6, 4));
+        real c[3] = {uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)};
+        int first = (int)(next_u64() % 3);
+        c[first] = zeros[next_u64() % 2];
+        if (k % 2)
+            c[(first + 1) % 3] = zeros[next_u64() % 2];
+        rays.r[k] = (ray){p, vec3_make(c[0], c[1], c[2])};
+        rays.t_min[k] = 0;
+        rays.t_max[k] = REAL_INFINITY;
+    }
+    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
+    assert_true(hits > n / 10);
+    rays_free(&rays);
+    surface_list_free(&list);
+}
+
+/* Origins outside the grid, on its faces, edges and corners, looking in,
+ * out and along them. */
+static void test_origins_on_the_grid(void **state)
+{
+    (void)state;
+    rng_state = 13;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+    const vec3 centre = {(real)17.3, (real)-4.1, (real)9.7};
+    random_scene(&list, 300, centre, 3);
+    grid g;
+    char err[256];
+    assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+    const vec3 lo = g.lo, hi = g.hi;
+    grid_free(&g);
+    const long n = 30000;
+    ray_set rays = rays_alloc(n);
+    for (long k = 0; k < n; k++) {
+        /* Each coordinate at the box's low or high side, or inside, or
+         * outside: corners, edges, faces, interior and exterior points. */
+        real c[3];
+        const real l[3] = {lo.x, lo.y, lo.z}, h[3] = {hi.x, hi.y, hi.z};
+        for (int a = 0; a < 3; a++) {
+            switch (next_u64() % 4) {
+            case 0: c[a] = l[a]; break;
+            case 1: c[a] = h[a]; break;
+            case 2: c[a] = uniform(l[a], h[a]); break;
+            default: c[a] = uniform(l[a] - 10, h[a] + 10); break;
+            }
+        }
+        vec3 p = vec3_make(c[0], c[1], c[2]);
+        vec3 d = k % 2 ? vec3_sub(vec3_add(centre, vec3_scale(random_direction(), 3)), p) : random_direction();
+        if (k % 5 == 0) /* along a face: one component zero */
+            d = vec3_make(d.x, 0, d.z);
+        rays.r[k] = (ray){p, d};
+        rays.t_min[k] = 0;
+        rays.t_max[k] = REAL_INFINITY;
+    }
+    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
+    assert_true(hits > n / 10);
+    rays_free(&rays);
+    surface_list_free(&list);
+}
+
+/* Scenes flat in one axis (zero extent): triangles in the plane z = 2.7, and
+ * a second scene in the plane x = -1.3, met by rays from above, at grazing
+ * angles, and lying in the plane. */
+static void test_flat_scenes(void **state)
+{
+    (void)state;
+    rng_state = 14;
+    for (int axis = 0; axis < 2; axis++) {
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, triangle_tests[axis]);
+        const real plane = axis == 0 ? (real)2.7 : (real)-1.3;
+        for (int k = 0; k < 500; k++) {
+            vec3 v[3];
+            real u0 = uniform(-5, 5), w0 = uniform(-5, 5);
+            for (int j = 0; j < 3; j++) {
+                real u = u0 + uniform((real)-0.4, (real)0.4), w = w0 + uniform((real)-0.4, (real)0.4);
+                v[j] = axis == 0 ? vec3_make(u, w, plane) : vec3_make(plane, u, w);
+            }
+            surface_list_add_triangle(&list, (triangle){v[0], v[1], v[2]}, k % 3, k);
+        }
+        grid g;
+        char err[256];
+        assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+        /* The flat axis has one cell, the others share the rest. */
+        assert_int_equal(1, g.n[axis == 0 ? 2 : 0]);
+        assert_true(g.n[1] > 4);
+        grid_free(&g);
+        const long n = 20000;
+        ray_set rays = rays_alloc(n);
+        for (long k = 0; k < n; k++) {
+            vec3 target = axis == 0 ? vec3_make(uniform(-5, 5), uniform(-5, 5), plane)
+                                    : vec3_make(plane, uniform(-5, 5), uniform(-5, 5));
+            vec3 off = random_direction();
+            if (k % 4 == 0) /* in the plane: parallel to every triangle */
+                off = axis == 0 ? vec3_make(off.x, off.y, 0) : vec3_make(0, off.y, off.z);
+            else if (k % 4 == 1) /* grazing */
+                off = axis == 0 ? vec3_make(off.x, off.y, off.z * (real)1e-3)
+                                : vec3_make(off.x * (real)1e-3, off.y, off.z);
+            vec3 p = vec3_add(target, vec3_scale(off, 8));
+            rays.r[k] = (ray){p, vec3_sub(target, p)};
+            rays.t_min[k] = 0;
+            rays.t_max[k] = REAL_INFINITY;
+        }
+        long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
+        assert_true(hits > n / 10);
+        rays_free(&rays);
+        surface_list_free(&list);
+    }
+}
+
+/* One huge triangle and one huge sphere among 3000 tiny triangles: the huge
+ * ones span most cells, the tiny ones set the resolution. */
+static void test_huge_among_tiny(void **state)
+{
+    (void)state;
+    rng_state = 15;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    surface_list_add_triangle(&list, (triangle){{-90, -3, -80}, {85, -2, -70}, {0, 4, 95}}, 1, 0);
+    random_scene(&list, 1500, vec3_make(0, 0, 0), 6);
+    surface_list_add_sphere(&list, (sphere){{3, 1, -2}, (real)70.5}, 2, 1);
+    random_scene(&list, 1500, vec3_make(1, 2, 3), 5);
+    const long n = 6000;
+    ray_set rays = rays_alloc(n);
+    for (long k = 0; k < n; k++) {
+        vec3 p = k % 2 ? uniform_vec(vec3_make(-8, -8, -8), vec3_make(8, 8, 8)) /* inside the big sphere */
+                       : vec3_scale(random_direction(), 200);                  /* outside everything */
+        rays.r[k] = (ray){p, vec3_sub(uniform_vec(vec3_make(-6, -6, -6), vec3_make(6, 6, 6)), p)};
+        rays.t_min[k] = 0;
+        rays.t_max[k] = REAL_INFINITY;
+    }
+    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
+    assert_true(hits > n / 2);
+    rays_free(&rays);
+    surface_list_free(&list);
+}
+
+/* Rays that start inside a cell of a surface spanning many cells: inside
+ * big spheres and just off big triangles, with t_min = 0 and with t_min
+ * small, as the secondary rays of later chapters start. */
+static void test_start_inside_spanning_cells(void **state)
+{
+    (void)state;
+    rng_state = 16;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+    random_scene(&list, 400, vec3_make(50, 50, 50), 4);
+    int big = list.n;
+    surface_list_add_sphere(&list, (sphere){{(real)50.5, (real)49.7, (real)50.2}, (real)2.9}, 3, 0);
+    surface_list_add_triangle(&list, (triangle){{44, 45, 47}, {56, 46, 52}, {49, 56, 53}}, 4, 0);
+    const long n = 20000;
+    ray_set rays = rays_alloc(n);
+    for (long k = 0; k < n; k++) {
+        const surface *s = &list.items[big + (int)(k % 2)];
+        vec3 p;
+        if (s->kind == SHAPE_SPHERE) { /* inside the sphere, near its surface or deep */
+            p = vec3_add(s->sphere.center, vec3_scale(random_direction(), s->sphere.radius * uniform(0, 1)));
+        } else { /* on the triangle, where a hit found by a ray would be */
+            real b = uniform(0, 1), c = uniform(0, 1 - b);
+            const triangle *t = &s->triangle;
+            p = vec3_add(t->a, vec3_add(vec3_scale(vec3_sub(t->b, t->a), b), vec3_scale(vec3_sub(t->c, t->a), c)));
+        }
+        rays.r[k] = (ray){p, random_direction()};
+        rays.t_min[k] = k % 4 < 2 ? 0 : (real)1e-6;
+        rays.t_max[k] = k % 3 ? REAL_INFINITY : uniform(0, 3);
+    }
+    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
+    assert_true(hits > n / 2);
+    rays_free(&rays);
+    surface_list_free(&list);
+}
+
+/* Ties: two triangles in the plane z = 0 with whole-number corners, met by
+ * rays from z = 1 with d_z = -1, are hit at exactly t = 1.  The big one
+ * (listed second) spans the cells the ray crosses first, the small one
+ * (listed first) sits in a later cell.  The grid finds the big one first,
+ * beyond its cell, and must still give the small one, as the linear scan
+ * does: the first in the list among equal t. */
+static void test_ties_first_in_list(void **state)
+{
+    (void)state;
+    rng_state = 17;
+    for (int g_test = 0; g_test < 2; g_test++) {
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, triangle_tests[g_test]);
+        surface_list_add_triangle(&list, (triangle){{4, 0, 0}, {6, 0, 0}, {4, 2, 0}}, 1, 0);    /* small, first */
+        surface_list_add_triangle(&list, (triangle){{-8, -8, 0}, {16, -8, 0}, {-8, 16, 0}}, 2, 1); /* big, second */
+        /* tiny spheres above, so that the grid has cells in z and many in x */
+        for (int k = 0; k < 200; k++)
+            surface_list_add_sphere(&list, (sphere){uniform_vec(vec3_make(-8, -8, 0), vec3_make(8, 8, 4)),
+                                                    (real)0.01},
+                                    3, 2 + k);
+        grid g;
+        char err[256];
+        assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+        assert_true(g.n[0] > 4 && g.n[2] > 1);
+        /* From (-4, y, 1) across to (4.5, y', 0): through many cells of the big triangle first. */
+        int small_hits = 0;
+        for (int k = 0; k < 64; k++) {
+            real y = (real)(k % 8) / 8 + (real)0.0625, target_x = (real)4.25 + (real)(k / 8) / 16;
+            ray r = {{-4, y, 1}, {target_x + 4, 0, -1}};
+            hit_record a, b;
+            bool fa = surfaces_intersect(&list, r, 0, REAL_INFINITY, &a);
+            bool fb = grid_intersect(&g, r, 0, REAL_INFINITY, &b);
+            assert_true(fa && fb);
+            if (a.surface == 0 && a.t == 1)
+                small_hits++;
+            if (!same_hit(fa, &a, fb, &b))
+                fail_msg("ray %d: the linear scan hits surface %d at t = %.17g, the grid %d at t = %.17g", k,
+                         a.surface, (double)a.t, b.surface, (double)b.t);
+        }
+        assert_true(small_hits > 32); /* the case was exercised: the tie went to the small triangle */
+        grid_free(&g);
+        surface_list_free(&list);
+    }
+}
+
+/* ---- the knobs ------------------------------------------------------------------------- */
+
+/* The resolution follows the density and the box's shape, within the cap. */
+static void test_resolution(void **state)
+{
+    (void)state;
+    rng_state = 18;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    /* 1000 tiny spheres in a box 8 x 2 x 4 (plus their radius 0.01) */
+    for (int k = 0; k < 1000; k++)
+        surface_list_add_sphere(&list, (sphere){uniform_vec(vec3_make(-4, 3, 0), vec3_make(4, 5, 4)), (real)0.01},
+                                0, k);
+    grid g;
+    char err[256];
+    grid_options opt = {.density = 8, .max_cells = 1L << 20, .mailbox = true};
+    assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+    /* 8000 cells for a box of volume ~64: s = 5 cells per unit: 40 x 10 x 20 */
+    assert_int_equal(40, g.n[0]);
+    assert_int_equal(10, g.n[1]);
+    assert_int_equal(20, g.n[2]);
+    assert_int_equal(8000, g.n_cells);
+    /* every sphere lies in 1 to 8 cells */
+    assert_true(g.n_refs >= 1000 && g.n_refs <= 8000);
+    assert_true(grid_memory(&g) >= (size_t)(g.n_cells + 1 + g.n_refs) * 4);
+    grid_free(&g);
+    opt.max_cells = 1000; /* the cap wins: about 1000 cells, in the same proportions */
+    assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+    assert_true(g.n_cells <= 1000 && g.n_cells >= 700);
+    assert_true(g.n[0] >= 3 * g.n[1] && g.n[0] <= 5 * g.n[1]);
+    grid_free(&g);
+    opt.density = 0;
+    assert_int_equal(-1, grid_build(&g, &list, opt, err, sizeof err));
+    assert_non_null(strstr(err, "density"));
+    surface_list_free(&list);
+}
+
+/* Mailboxing tests each surface once along a ray: a long thin triangle lying
+ * along a row of cells, which the ray passes without hitting it, is tested
+ * in every cell without the mailbox and once with it. */
+static void test_mailbox_counts(void **state)
+{
+    (void)state;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    /* tiny spheres at the corners of the box [0, 10] x [0, 1] x [0, 1] */
+    for (int k = 0; k < 8; k++)
+        surface_list_add_sphere(&list,
+                                (sphere){{(real)(10 * (k & 1)), (real)((k >> 1) & 1), (real)((k >> 2) & 1)},
+                                         (real)0.001},
+                                0, k);
+    /* a sliver along x at y = 0.3, in the plane z = 0.5 */
+    surface_list_add_triangle(&list, (triangle){{(real)0.2, (real)0.3, (real)0.5}, {(real)9.8, (real)0.3, (real)0.5},
+                                                {(real)9.8, (real)0.35, (real)0.5}},
+                              0, 8);
+    for (int m = 0; m < 2; m++) {
+        grid g;
+        char err[256];
+        grid_options opt = {.density = 1.25, .max_cells = 1000, .mailbox = m == 0};
+        assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+        assert_int_equal(10, g.n[0]); /* 9 surfaces x 1.25 ~ 11 cells for a box 10 x 1 x 1 */
+        assert_int_equal(1, g.n[1]);
+        assert_int_equal(1, g.n[2]);
+        /* along +x at y = 0.6, z = 0.45: through all 10 cells, missing everything */
+        ray r = {{-1, (real)0.6, (real)0.45}, {1, 0, 0}};
+        grid_counts counts = {0, 0, 0};
+        hit_record hit;
+        assert_false(grid_intersect_counted(&g, r, 0, REAL_INFINITY, &hit, &counts));
+        assert_int_equal(10, counts.cells);
+        /* The sliver is in all 10 cells; the corner spheres in the end cells. */
+        assert_int_equal(m == 0 ? 1 + 8 : 10 + 8, counts.tests);
+        grid_free(&g);
+    }
+    surface_list_free(&list);
+}
+
+/* An empty list, and one whose only surface is hit. */
+static void test_empty_and_single(void **state)
+{
+    (void)state;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    grid g;
+    char err[256];
+    assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+    hit_record hit = {.t = 42};
+    const ray r = {{(real)0.3, (real)0.2, 10}, {0, 0, -1}};
+    assert_false(grid_intersect(&g, r, 0, REAL_INFINITY, &hit));
+    assert_true(hit.t == 42);
+    grid_free(&g);
+    surface_list_add_sphere(&list, (sphere){{0, 0, 0}, 1}, 0, 0);
+    assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+    assert_true(grid_intersect(&g, r, 0, REAL_INFINITY, &hit));
+    hit_record expected;
+    assert_true(surfaces_intersect(&list, r, 0, REAL_INFINITY, &expected));
+    assert_true(same_hit(true, &expected, true, &hit));
+    assert_false(grid_intersect(&g, r, 0, 9, &hit)); /* the window ends before the sphere */
+    grid_free(&g);
+    surface_list_free(&list);
+}
+
+/* ---- the exercises ----------------------------------------------------------------------- */
+
+/* A grid laid out by hand: low corner (-1, 2, 0.5), cells 0.25 x 0.5 x 1
+ * (exact in binary), 8 x 4 x 3 cells. */
+static grid hand_grid(void)
+{
+    grid g = {.lo = {-1, 2, (real)0.5}, .cell = {(real)0.25, (real)0.5, 1}, .inv_cell = {4, 2, 1}, .n = {8, 4, 3}};
+    g.hi = vec3_add(g.lo, vec3_make(2, 2, 3));
+    return g;
+}
+
+/* cell_range: boxes inside, on cell boundaries (both sides count), reaching
+ * outside (clamped) and wholly outside (empty). */
+static void test_cell_range(void **state)
+{
+    (void)state;
+    const grid g = hand_grid();
+    static const struct {
+        vec3 lo, hi;
+        int first[3], last[3];
+    } cases[] = {
+        /* inside one cell: (0.1, 2.1, 0.6) is in cell (4, 0, 0) */
+        {{(real)0.1, (real)2.1, (real)0.6}, {(real)0.2, (real)2.4, (real)1.4}, {4, 0, 0}, {4, 0, 0}},
+        /* across cells: x from 1.6 (cell 2) to 2.3 (cell 5)... in units: x = -0.6 .. 0.3 */
+        {{(real)-0.6, (real)2.6, (real)1.7}, {(real)0.3, (real)3.9, (real)2.2}, {1, 1, 1}, {5, 3, 1}},
+        /* corners exactly on boundaries: x = -0.5 is between cells 1 and 2, y = 3 between 1 and 2 */
+        {{(real)-0.5, 3, (real)1.5}, {0, 3, (real)2.5}, {1, 1, 0}, {4, 2, 2}},
+        /* reaching past the grid: clamped */
+        {{-100, -100, -100}, {100, 100, 100}, {0, 0, 0}, {7, 3, 2}},
+        /* on the grid's own faces: the outer cells */
+        {{-1, 2, (real)0.5}, {-1, 2, (real)0.5}, {0, 0, 0}, {0, 0, 0}},
+        {{1, 4, (real)3.5}, {1, 4, (real)3.5}, {7, 3, 2}, {7, 3, 2}},
+    };
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        int first[3], last[3];
+        grid_cell_range(&g, cases[c].lo, cases[c].hi, first, last);
+        for (int a = 0; a < 3; a++) {
+            if (first[a] != cases[c].first[a] || last[a] != cases[c].last[a])
+                fail_msg("case %zu, axis %d: cells %d .. %d, expected %d .. %d", c, a, first[a], last[a],
+                         cases[c].first[a], cases[c].last[a]);
+        }
+    }
+    /* Wholly outside, on each side of each axis: empty on that axis. */
+    const vec3 outside[][2] = {
+        {{-3, 2, 1}, {-2, 3, 2}}, {{2, 2, 1}, {3, 3, 2}}, {{0, -1, 1}, {0, 1, 2}},
+        {{0, 5, 1}, {0, 6, 2}},   {{0, 3, -2}, {0, 3, 0}}, {{0, 3, 4}, {0, 3, 9}},
+    };
+    for (size_t c = 0; c < sizeof outside / sizeof outside[0]; c++) {
+        int first[3], last[3];
+        grid_cell_range(&g, outside[c][0], outside[c][1], first, last);
+        int a = (int)c / 2;
+        if (!(first[a] > last[a]))
+            fail_msg("outside box %zu: axis %d gives cells %d .. %d, expected none", c, a, first[a], last[a]);
+    }
+    /* Random boxes in a grid of inexact sizes: cell i is in the range exactly
+     * when [i, i + 1] meets [f_lo, f_hi], the box in units of cells. */
+    rng_state = 19;
+    grid h = {.lo = {(real)-3.7, (real)1.9, (real)10.1}, .n = {13, 7, 11}};
+    h.cell = vec3_make((real)0.31, (real)0.77, (real)0.093);
+    h.inv_cell = vec3_make(1 / h.cell.x, 1 / h.cell.y, 1 / h.cell.z);
+    for (int k = 0; k < 2000; k++) {
+        const vec3 box_lo = {-5, 1, 9}, box_hi = {2, 8, 12};
+        vec3 a = uniform_vec(box_lo, box_hi), b = uniform_vec(box_lo, box_hi);
+        vec3 lo = vec3_make(real_fmin(a.x, b.x), real_fmin(a.y, b.y), real_fmin(a.z, b.z));
+        vec3 hi = vec3_make(real_fmax(a.x, b.x), real_fmax(a.y, b.y), real_fmax(a.z, b.z));
+        int first[3], last[3];
+        grid_cell_range(&h, lo, hi, first, last);
+        const real l[3] = {lo.x, lo.y, lo.z}, u[3] = {hi.x, hi.y, hi.z}, o[3] = {h.lo.x, h.lo.y, h.lo.z},
+                   inv[3] = {h.inv_cell.x, h.inv_cell.y, h.inv_cell.z};
+        for (int ax = 0; ax < 3; ax++) {
+            real f_lo = (l[ax] - o[ax]) * inv[ax], f_hi = (u[ax] - o[ax]) * inv[ax];
+            for (int i = 0; i < h.n[ax]; i++) {
+                bool meets = (real)i <= f_hi && (real)(i + 1) >= f_lo;
+                bool listed = i >= first[ax] && i <= last[ax];
+                if (meets != listed)
+                    fail_msg("box %d, axis %d: cell %d %s but the range is %d .. %d", k, ax, i,
+                             meets ? "meets the box" : "does not meet the box", first[ax], last[ax]);
+            }
+        }
+    }
+}
+
+/* dda_step: the cells a ray visits, counted against the plane crossings:
+ * a ray through the whole grid that hits nothing visits one cell more than
+ * the cell planes it crosses inside the grid's box. */
+static void test_dda_cells(void **state)
+{
+    (void)state;
+    rng_state = 20;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    /* eight tiny spheres at the corners of [-2, 3] x [1, 4] x [-1, 1]: nothing in between */
+    for (int k = 0; k < 8; k++)
+        surface_list_add_sphere(&list, (sphere){{k & 1 ? 3 : -2, k & 2 ? 4 : 1, k & 4 ? 1 : -1}, (real)1e-3}, 0, k);
+    grid g;
+    char err[256];
+    grid_options opt = {.density = 100, .max_cells = 1000, .mailbox = true};
+    assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+    assert_true(g.n[0] > 3 && g.n[1] > 3 && g.n[2] > 1);
+    const real lo[3] = {g.lo.x, g.lo.y, g.lo.z}, cell[3] = {g.cell.x, g.cell.y, g.cell.z};
+    int checked = 0;
+    for (int k = 0; k < 3000; k++) {
+        /* from outside, through the middle part of the box (missing the corner spheres) */
+        vec3 target = uniform_vec(vec3_make(-1, 2, (real)-0.5), vec3_make(2, 3, (real)0.5));
+        vec3 p = vec3_add(target, vec3_scale(random_direction(), 20));
+        ray r = {p, vec3_sub(target, p)};
+        const real pp[3] = {p.x, p.y, p.z}, dd[3] = {r.d.x, r.d.y, r.d.z};
+        /* where the ray is inside the box, and the planes it crosses there */
+        real t_in = 0, t_out = REAL_INFINITY;
+        for (int a = 0; a < 3; a++) {
+            real t0 = (lo[a] - pp[a]) / dd[a], t1 = (lo[a] + (real)g.n[a] * cell[a] - pp[a]) / dd[a];
+            t_in = real_fmax(t_in, real_fmin(t0, t1));
+            t_out = real_fmin(t_out, real_fmax(t0, t1));
+        }
+        if (!(t_in < t_out))
+            continue;
+        int crossings = 0;
+        bool near_corner = false;
+        for (int a = 0; a < 3; a++)
+            for (int plane = 1; plane < g.n[a]; plane++) {
+                real t = (lo[a] + (real)plane * cell[a] - pp[a]) / dd[a];
+                if (t > t_in && t < t_out)
+                    crossings++;
+                /* a crossing within a hair of the box's entry or exit, or of
+                 * another axis's crossing, may count either way: skip such rays */
+                if (real_abs(t - t_in) < (real)1e-4 * t_in || real_abs(t - t_out) < (real)1e-4 * t_out)
+                    near_corner = true;
+            }
+        if (near_corner)
+            continue;
+        grid_counts counts = {0, 0, 0};
+        hit_record hit;
+        assert_false(grid_intersect_counted(&g, r, 0, REAL_INFINITY, &hit, &counts));
+        if (counts.cells != (uint64_t)crossings + 1)
+            fail_msg("ray %d: %llu cells visited, expected %d (%d plane crossings)", k,
+                     (unsigned long long)counts.cells, crossings + 1, crossings);
+        checked++;
+    }
+    assert_true(checked > 2000);
+    grid_free(&g);
+    surface_list_free(&list);
+}
+
+/* ---- the Cornell corpus -------------------------------------------------------------------- */
+
+/* Every scene of the course: each pixel's eye ray (at a reduced size) gives
+ * the same hit through the grid as through the linear scan, so the images
+ * are the same byte for byte.  Skipped when the corpus is absent. */
+static void test_cornell_scenes(void **state)
+{
+    (void)state;
+    const char *data = cornell_data();
+    if (!data)
+        skip();
+    static const char *const scenes[] = {
+        "bunny", "bunny2", "bunny-norms", "diagnostic", "earth", "earth-eclipse-textured", "one-sphere",
+        "one-sphere-rgb-normals", "teapot", "two-boxes", "two-boxes-rgb-normals", "wire-box",
+        "wire-box-orthographic",
+    };
+    for (size_t s = 0; s < sizeof scenes / sizeof scenes[0]; s++) {
+        char path[512], err[512] = "";
+        snprintf(path, sizeof path, "%s/scenes/ray1/%s.xml", data, scenes[s]);
+        scene desc;
+        if (scene_load(path, &desc, err, sizeof err) != 0)
+            fail_msg("%s", err);
+        camera cam;
+        assert_true(camera_from_scene(&cam, &desc, err, sizeof err));
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+        assert_int_equal(0, surface_list_from_scene(&list, &desc, err, sizeof err));
+        grid g;
+        assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+        int side = list.n > 1000 ? 40 : 96;
+        for (int j = 0; j < side; j++)
+            for (int i = 0; i < side; i++) {
+                ray r = camera_ray(&cam, ((real)i + (real)0.5) / (real)side, ((real)j + (real)0.5) / (real)side);
+                hit_record a, b;
+                bool fa = surfaces_intersect(&list, r, 0, REAL_INFINITY, &a);
+                bool fb = grid_intersect(&g, r, 0, REAL_INFINITY, &b);
+                if (!same_hit(fa, &a, fb, &b))
+                    fail_msg("%s, pixel (%d, %d) of %dx%d: the grid differs from the linear scan", scenes[s], i, j,
+                             side, side);
+            }
+        grid_free(&g);
+        surface_list_free(&list);
+        scene_free(&desc);
+    }
+}
+
+static const graded_test tests[] = {
+    GRADED(test_cell_range, 4),
+    GRADED(test_dda_cells, 4),
+    GRADED(test_random_scenes, 3),
+    GRADED(test_zero_components, 2),
+    GRADED(test_origins_on_the_grid, 2),
+    GRADED(test_flat_scenes, 2),
+    GRADED(test_huge_among_tiny, 2),
+    GRADED(test_start_inside_spanning_cells, 2),
+    GRADED(test_ties_first_in_list, 2),
+    GRADED(test_resolution, 1),
+    GRADED(test_mailbox_counts, 1),
+    GRADED(test_empty_and_single, 1),
+    GRADED(test_cornell_scenes, 0),
+};
+
+SUITE_MAIN("11_grid", tests)
