@@ -28,7 +28,7 @@ BUILD ?= build$(variant)
 
 CPPFLAGS := -D_POSIX_C_SOURCE=200809L -I common -I chapters -I tests -I /usr/include/stb \
             $(if $(filter float,$(REAL)),-DRT_REAL_FLOAT)
-SANITIZERS := -fsanitize=address -fsanitize=undefined
+SANITIZERS := -fsanitize=address -fsanitize=undefined -fsanitize=float-cast-overflow
 CFLAGS := -std=c11 -Wall -Wextra -Wpedantic -Werror -ffp-contract=off -fopenmp $(OPT) -MMD -MP \
           $(if $(filter 1,$(SANITIZE)),$(SANITIZERS) -fno-sanitize-recover=all -fno-omit-frame-pointer)
 LDFLAGS := -fopenmp $(if $(filter 1,$(SANITIZE)),$(SANITIZERS))
@@ -55,7 +55,9 @@ COMMON_TESTS := $(sort $(basename $(notdir $(wildcard tests/test_common_*.c))))
 CHAPTER_TESTS := $(foreach c,$(CHAPTERS),$(if $(wildcard tests/test_$c.c),test_$c))
 # Cross-chapter suites (the course's scenes) link every chapter and are not graded.
 CROSS_TESTS := $(if $(wildcard tests/test_scenes.c),test_scenes)
-ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS)
+# The fuzz corpus replay (tests/test_fuzz_corpus.c) links the fuzz targets.
+FUZZ_TARGETS := scene obj options texture
+ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS) test_fuzz_corpus
 
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
@@ -64,7 +66,7 @@ OUT := out$(if $(filter 1,$(STUDENT)),-student)
 IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
-        figure-renderers figures check-figures snippets check-snippets check
+        figure-renderers figures check-figures snippets check-snippets check fuzz fuzz-build deps-fuzz test-extremes
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -100,6 +102,45 @@ $(BUILD)/tests/test_scenes: $(call objs,tests/test_scenes.c $(TEST_SUPPORT) $(ca
 $(BUILD)/tests/test_common_%: $(call objs,tests/test_common_%.c $(TEST_SUPPORT) $(COMMON_SRC))
 	@mkdir -p $(@D)
 	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+
+$(BUILD)/tests/test_fuzz_corpus: $(call objs,tests/test_fuzz_corpus.c $(TEST_SUPPORT) fuzz/support.c \
+                                  $(FUZZ_TARGETS:%=fuzz/%.c) $(COMMON_SRC))
+	@mkdir -p $(@D)
+	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+
+# ---- fuzzing: libFuzzer targets of the readers (docs/fuzzing.md) ------------------
+#
+# Each target of fuzz/ is built with clang, libFuzzer and the sanitizers (no
+# recovery) and run for FUZZ_SECONDS from its seeds in fuzz/corpus/TARGET/;
+# what it finds is saved under $(FUZZ_BUILD)/.  stb_image is compiled in, so
+# that its decoder is instrumented too.
+
+FUZZ_CC ?= clang
+FUZZ_SECONDS ?= 60
+FUZZ_BUILD ?= build-fuzz
+# What each target links besides fuzz/support.c: only the code it exercises,
+# so that its coverage counts the edges it could reach.
+FUZZ_SRC_obj := common/mesh.c common/input_file.c
+FUZZ_SRC_options := common/options.c
+FUZZ_SRC_texture := common/texture_image.c common/input_file.c fuzz/stb_image_impl.c
+FUZZ_SRC_scene := common/scene.c common/scene_xml.c $(FUZZ_SRC_obj) $(FUZZ_SRC_texture)
+FUZZ_CFLAGS := -std=c11 -Wall -Wextra -Werror -g -O1 -fno-omit-frame-pointer -ffp-contract=off -DRT_LIBFUZZER \
+               -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=all
+
+deps-fuzz:
+	@tools/deps.sh "$(FUZZ_CC)" fuzz
+
+define fuzz_rules
+$(FUZZ_BUILD)/fuzz_$1: fuzz/$1.c fuzz/support.c $(FUZZ_SRC_$1) $(wildcard fuzz/*.h common/*.h) | deps-fuzz
+	@mkdir -p $$(@D)
+	$$(FUZZ_CC) $$(CPPFLAGS) $$(FUZZ_CFLAGS) $$(filter %.c,$$^) -lexpat -lm -o $$@
+endef
+$(foreach t,$(FUZZ_TARGETS),$(eval $(call fuzz_rules,$t)))
+
+fuzz-build: $(FUZZ_TARGETS:%=$(FUZZ_BUILD)/fuzz_%)
+
+fuzz: fuzz-build
+	@tools/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
 # ---- skeletons: the students' files, generated from the solutions ---------------
 
@@ -218,13 +259,21 @@ check: check-skeletons check-snippets check-figures
 test-suites: $(TEST_BINS)
 	@tools/run-tests.sh $(BUILD)/test-results.txt $(TEST_BINS)
 
-# The double build, the float build and the sanitizer build, then the checks
+# Every renderer of this build over the scenes at the extremes, the chapters'
+# own and the Cornell corpus's: no NaN or infinite sample, no crash, and (in
+# the sanitizer build) no undefined behaviour.
+test-extremes: renderers
+	@tools/extremes.sh $(BUILD)
+
+# The double build, the float build and the sanitizer build (with the
+# renders at the extremes and the fuzz corpus replay), then the checks
 # that text, skeletons and figures match their sources.
 test:
 	@rm -f build*/test-results.txt
 	$(MAKE) --no-print-directory test-suites
 	$(MAKE) --no-print-directory REAL=float BUILD=$(BUILD)-float test-suites
 	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-suites
+	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-extremes
 	@tools/sum-results.sh $(BUILD) $(BUILD)-float $(BUILD)-asan
 	$(MAKE) --no-print-directory check
 
@@ -234,6 +283,7 @@ help:
 	@echo "make                 build every chapter and render its built-in scene into out/"
 	@echo "make STUDENT=1       the same from the student's files in chapters/ (into build-student/)"
 	@echo "make test            all suites: double, float (REAL=float) and sanitizer builds, then make check"
+	@echo "make test-extremes   every renderer over tests/extremes/ and the other scenes, failing on NaN"
 	@echo "make renderers       build every chapter's renderer into $(BUILD)/NN_name/render"
 	@echo "make tests           build the test suites of this build"
 	@echo "make test-suites     run the suites of this build only"
@@ -247,6 +297,8 @@ help:
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
 	@echo "make check           check-skeletons, check-snippets, check-figures: fail naming what is stale"
+	@echo "make fuzz            build the libFuzzer targets (clang) and fuzz each for FUZZ_SECONDS (60) seconds;"
+	@echo "                     findings go to $(FUZZ_BUILD)/ (docs/fuzzing.md)"
 	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
 	@echo "chapters: $(CHAPTERS)"

@@ -6,18 +6,64 @@
 #include <string.h>
 
 #include "grow.h"
+#include "input_file.h"
 
 typedef struct {
     const char *path;
-    int line;
+    long line; /* at most MESH_MAX_FILE_BYTES lines */
+    long long bytes; /* read so far, at most MESH_MAX_FILE_BYTES */
     char *err;
     size_t err_size;
 } obj_reader;
 
 static int fail(obj_reader *r, const char *problem, const char *detail)
 {
-    snprintf(r->err, r->err_size, "%s:%d: %s%s", r->path, r->line, problem, detail ? detail : "");
+    snprintf(r->err, r->err_size, "%s:%ld: %s%s", r->path, r->line, problem, detail ? detail : "");
     return -1;
+}
+
+static int failf(obj_reader *r, const char *format, long long limit, const char *what)
+{
+    char problem[160];
+    snprintf(problem, sizeof problem, format, limit, what);
+    return fail(r, problem, NULL);
+}
+
+/* Room for one more of `what` (one of the MESH_MAX_ITEMS kinds). */
+static int make_room(obj_reader *r, void **array, int *capacity, int count, size_t size, const char *what)
+{
+    if (count >= MESH_MAX_ITEMS)
+        return failf(r, "more than %lld %s (the limit of one mesh)", MESH_MAX_ITEMS, what);
+    if (grow(array, capacity, count + 1, size) != 0)
+        return fail(r, "out of memory", NULL);
+    return 0;
+}
+
+/* Reads the next line into buf (MESH_MAX_LINE_BYTES + 1 bytes), without its
+ * newline.  Returns 1 for a line, 0 at the end of the file, -1 after failing. */
+static int read_line(obj_reader *r, FILE *f, char *buf)
+{
+    size_t n = 0;
+    int c;
+    r->line++;
+    while ((c = getc(f)) != EOF) {
+        if (++r->bytes > MESH_MAX_FILE_BYTES)
+            return failf(r, "the file holds more than %lld bytes (the limit of one %s)", MESH_MAX_FILE_BYTES,
+                         "mesh file");
+        if (c == '\n')
+            break;
+        if (c == '\0')
+            return fail(r, "the line holds a NUL byte: this is not a text file", NULL);
+        if (n == MESH_MAX_LINE_BYTES)
+            return failf(r, "the line is longer than %lld bytes (the limit of one %s)", MESH_MAX_LINE_BYTES, "line");
+        buf[n++] = (char)c;
+    }
+    buf[n] = '\0';
+    if (c == EOF && n == 0) {
+        r->line--; /* no line there */
+        return 0;
+    }
+    return 1;
 }
 
 /* Reads n finite numbers from s; the rest of the line must be empty (a
@@ -107,9 +153,11 @@ static int read_face(obj_reader *r, const char *s, mesh *m, int *cap_faces)
             return -1;
         if (corners == 0)
             memcpy(first, c, sizeof c);
+        if (corners == MESH_MAX_CORNERS)
+            return failf(r, "a face has more than %lld corners (the limit of one %s)", MESH_MAX_CORNERS, "face");
         if (corners >= 2) { /* triangle fan: (first, previous, this) */
-            if (grow((void **)&m->faces, cap_faces, m->n_faces + 1, sizeof *m->faces) != 0)
-                return fail(r, "out of memory", NULL);
+            if (make_room(r, (void **)&m->faces, cap_faces, m->n_faces, sizeof *m->faces, "triangles") != 0)
+                return -1;
             mesh_face *f = &m->faces[m->n_faces++];
             const int *corner[3] = {first, previous, c};
             for (int k = 0; k < 3; k++) {
@@ -129,38 +177,42 @@ static int read_face(obj_reader *r, const char *s, mesh *m, int *cap_faces)
 int mesh_load(const char *path, mesh *m, char *err, size_t err_size)
 {
     *m = (mesh){0};
-    obj_reader r = {path, 0, err, err_size};
-    FILE *f = fopen(path, "r");
-    if (!f) {
-        snprintf(err, err_size, "%s: cannot read the mesh: %s", path, strerror(errno));
+    obj_reader r = {path, 0, 0, err, err_size};
+    FILE *f = input_file_open(path, "the mesh", MESH_MAX_FILE_BYTES, err, err_size);
+    if (!f)
         return -1;
-    }
     int cap_positions = 0, cap_normals = 0, cap_uvs = 0, cap_faces = 0;
-    char *line = NULL;
-    size_t line_cap = 0;
-    int status = 0;
-    while (status == 0 && getline(&line, &line_cap, f) != -1) {
-        r.line++;
+    char *line = malloc(MESH_MAX_LINE_BYTES + 1);
+    int status = line ? 0 : fail(&r, "out of memory", NULL);
+    int more;
+    while (status == 0 && (more = read_line(&r, f, line)) != 0) {
+        if (more < 0) {
+            status = -1;
+            break;
+        }
         const char *s = line;
         while (*s == ' ' || *s == '\t')
             s++;
         real x[3];
         if (strncmp(s, "v ", 2) == 0 || strncmp(s, "v\t", 2) == 0) {
             status = read_numbers(&r, s + 2, x, 3, 1);
-            if (status == 0 && grow((void **)&m->positions, &cap_positions, m->n_positions + 1, sizeof *m->positions))
-                status = fail(&r, "out of memory", NULL);
+            if (status == 0)
+                status = make_room(&r, (void **)&m->positions, &cap_positions, m->n_positions, sizeof *m->positions,
+                                   "vertex positions");
             if (status == 0)
                 m->positions[m->n_positions++] = vec3_make(x[0], x[1], x[2]);
         } else if (strncmp(s, "vn ", 3) == 0) {
             status = read_numbers(&r, s + 3, x, 3, 0);
-            if (status == 0 && grow((void **)&m->normals, &cap_normals, m->n_normals + 1, sizeof *m->normals))
-                status = fail(&r, "out of memory", NULL);
+            if (status == 0)
+                status = make_room(&r, (void **)&m->normals, &cap_normals, m->n_normals, sizeof *m->normals,
+                                   "normals");
             if (status == 0)
                 m->normals[m->n_normals++] = vec3_make(x[0], x[1], x[2]);
         } else if (strncmp(s, "vt ", 3) == 0) {
             status = read_numbers(&r, s + 3, x, 2, 1);
-            if (status == 0 && grow((void **)&m->uvs, &cap_uvs, m->n_uvs + 1, sizeof *m->uvs))
-                status = fail(&r, "out of memory", NULL);
+            if (status == 0)
+                status = make_room(&r, (void **)&m->uvs, &cap_uvs, m->n_uvs, sizeof *m->uvs,
+                                   "texture coordinates");
             if (status == 0)
                 m->uvs[m->n_uvs++] = (mesh_uv){x[0], x[1]};
         } else if (strncmp(s, "f ", 2) == 0) {

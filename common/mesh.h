@@ -33,7 +33,17 @@ typedef struct {
     int n_faces;
 } mesh;
 
-/* Returns 0, or -1 with "path:line: problem" in err (nothing to free). */
+/* What one mesh may hold; beyond these the file is refused with a message
+ * naming the limit.  They bound the memory one file can ask for (about
+ * 1.6 GB at most) and keep every count and line number far from INT_MAX. */
+#define MESH_MAX_FILE_BYTES (256LL << 20) /* one .obj file */
+#define MESH_MAX_LINE_BYTES 65536         /* one line, without its newline */
+#define MESH_MAX_CORNERS 1024             /* one face (a polygon, split into corners - 2 triangles) */
+#define MESH_MAX_ITEMS (1 << 24)          /* each of: positions, texture coordinates, normals, triangles */
+
+/* Returns 0, or -1 with "path:line: problem" in err (nothing to free).
+ * A path that is not a regular file (a directory, a FIFO, /dev/zero) is
+ * refused before anything is read. */
 int mesh_load(const char *path, mesh *m, char *err, size_t err_size);
 void mesh_free(mesh *m);
 

@@ -9,7 +9,10 @@
 #define MAX_KNOBS 16
 #define MAX_IMAGE_SIDE 16384
 
-enum { OPT_SEED = 256, OPT_KNOB = 512 };
+enum { OPT_SEED = 256, OPT_NONFINITE, OPT_KNOB = 512 };
+
+static const char *const nonfinite_modes[] = {[NONFINITE_DROP] = "drop", [NONFINITE_SHOW] = "show",
+                                              [NONFINITE_FAIL] = "fail", NULL};
 
 static bool parse_long(const char *s, long min, long max, long *out)
 {
@@ -114,6 +117,9 @@ static void print_help(const char *program, const char *summary, const knob *kno
             "  -j, --threads N     threads to render with (default: all cores)\n"
             "      --seed N        seed for the sub-pixel sample positions (default 0)\n"
             "  -q, --quiet         no progress line and no summary\n"
+            "      --nonfinite=M   a sample whose radiance is NaN or infinite is counted and: drop (left out\n"
+            "                      of its pixel; the default), show (its pixel painted magenta), or fail\n"
+            "                      (no image written, exit status 3)\n"
             "  -h, --help          this text\n",
             summary, program);
     for (int k = 0; k < n_knobs; k++) {
@@ -133,18 +139,22 @@ options_result options_parse(int argc, char **argv, const char *summary, const k
         fprintf(err, "%s: too many knobs (%d > %d)\n", argv[0], n_knobs, MAX_KNOBS);
         return OPTIONS_ERROR;
     }
-    struct option longs[8 + MAX_KNOBS + 1] = {
+    struct option longs[9 + MAX_KNOBS + 1] = {
         {"output", required_argument, NULL, 'o'}, {"size", required_argument, NULL, 's'},
         {"samples", required_argument, NULL, 'n'}, {"threads", required_argument, NULL, 'j'},
         {"seed", required_argument, NULL, OPT_SEED}, {"quiet", no_argument, NULL, 'q'},
-        {"help", no_argument, NULL, 'h'},
+        {"help", no_argument, NULL, 'h'}, {"nonfinite", required_argument, NULL, OPT_NONFINITE},
     };
-    int n_longs = 7;
+    int n_longs = 8;
     for (int k = 0; k < n_knobs; k++)
         longs[n_longs++] = (struct option){knobs[k].name, required_argument, NULL, OPT_KNOB + k};
     longs[n_longs] = (struct option){0};
 
-    optind = 1; /* getopt keeps state: reset it so that tests can parse many times */
+    /* getopt keeps state between calls (optind, and glibc's position inside a
+     * group of short options such as -hq).  optind = 0 resets all of it;
+     * optind = 1 would leave the group position behind, and a second parse
+     * in one process would misread its arguments. */
+    optind = 0;
     opterr = 0;
     int c;
     long value;
@@ -188,6 +198,14 @@ options_result options_parse(int argc, char **argv, const char *summary, const k
         case 'q':
             opt->quiet = true;
             break;
+        case OPT_NONFINITE: {
+            int chosen;
+            const knob mode = {"nonfinite", KNOB_CHOICE, &chosen, nonfinite_modes, NULL};
+            if (!set_knob(&mode, optarg, err))
+                return OPTIONS_ERROR;
+            opt->nonfinite = (nonfinite_mode)chosen;
+            break;
+        }
         case 'h':
             print_help(argv[0], summary, knobs, n_knobs, out);
             return OPTIONS_EXIT;

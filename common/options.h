@@ -14,6 +14,14 @@
 
 #include "real.h"
 
+/* What the render loop does with a sample whose radiance is NaN or infinite
+ * (--nonfinite).  Every mode counts them; the summary line gives the count. */
+typedef enum {
+    NONFINITE_DROP, /* default: leave it out of its pixel's mean (a pixel with no finite sample is black) */
+    NONFINITE_SHOW, /* paint its pixel magenta, to find it in the image */
+    NONFINITE_FAIL, /* drop it, and fail: no image is written, exit status 3 (make figures) */
+} nonfinite_mode;
+
 typedef struct {
     const char *scene_path;  /* the positional argument; NULL: built-in scene */
     const char *output;      /* -o; NULL: the renderer's default */
@@ -22,6 +30,7 @@ typedef struct {
     int threads;             /* -j; 0: OpenMP's default (all cores) */
     unsigned long seed;      /* --seed; jitters the sub-pixel samples */
     bool quiet;              /* -q; no progress line, no summary */
+    nonfinite_mode nonfinite; /* --nonfinite=drop|show|fail */
 } render_options;
 
 typedef enum {

@@ -42,8 +42,28 @@ static uint8_t *encode_rows(const image *img, real exposure)
     return bytes;
 }
 
+int png_check_output(const char *path, char *err, size_t err_size)
+{
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return 0; /* a new path (or one that mkstemp will name the problem of) */
+    if (S_ISREG(st.st_mode))
+        return 0;
+    const char *kind = S_ISDIR(st.st_mode)    ? "a directory"
+                       : S_ISFIFO(st.st_mode) ? "a FIFO"
+                       : S_ISCHR(st.st_mode)  ? "a character device"
+                       : S_ISBLK(st.st_mode)  ? "a block device"
+                       : S_ISSOCK(st.st_mode) ? "a socket"
+                                              : "not a plain file";
+    snprintf(err, err_size, "%s: not written: it is %s, and the image goes only to a regular file or a new path",
+             path, kind);
+    return -1;
+}
+
 int png_write(const image *img, real exposure, const char *path, char *err, size_t err_size)
 {
+    if (png_check_output(path, err, err_size) != 0)
+        return -1;
     uint8_t *bytes = encode_rows(img, exposure);
     if (!bytes) {
         snprintf(err, err_size, "%s: out of memory", path);

@@ -2,7 +2,9 @@
  *
  * The PNG is written to a temporary file in the destination's folder and
  * renamed over the destination only when it is complete, so a failure never
- * leaves a truncated PNG and never clobbers an existing one.
+ * leaves a truncated PNG and never clobbers an existing one.  The destination
+ * is a new path or a regular file: a FIFO, a device or a directory there is
+ * left alone and the write refused, saying what is there.
  */
 #ifndef RT_PNG_WRITE_H
 #define RT_PNG_WRITE_H
@@ -11,8 +13,14 @@
 
 #include "image.h"
 
+/* Whether `path` may be written: it does not exist, or is a regular file (a
+ * symbolic link counts as what it points to).  Returns 0, or -1 with "path:
+ * problem" in err.  Renderers ask before rendering, so as to fail at once. */
+int png_check_output(const char *path, char *err, size_t err_size);
+
 /* Encodes every pixel with display_encode(L, exposure) and writes `path`.
- * Returns 0, or -1 with a message naming the path and the problem in err. */
+ * Returns 0, or -1 with a message naming the path and the problem in err
+ * (png_check_output's refusal included). */
 int png_write(const image *img, real exposure, const char *path, char *err, size_t err_size);
 
 #endif

@@ -15,6 +15,7 @@
 typedef float real;
 #define REAL_EPSILON FLT_EPSILON /* spacing of reals just above 1 */
 #define REAL_MAX FLT_MAX
+#define REAL_MIN FLT_MIN /* the smallest normal float */
 #define REAL_NAME "float"
 #define real_sqrt sqrtf
 #define real_abs fabsf
@@ -26,6 +27,7 @@ typedef float real;
 typedef double real;
 #define REAL_EPSILON DBL_EPSILON
 #define REAL_MAX DBL_MAX
+#define REAL_MIN DBL_MIN
 #define REAL_NAME "double"
 #define real_sqrt sqrt
 #define real_abs fabs
@@ -36,5 +38,15 @@ typedef double real;
 #endif
 
 #define REAL_INFINITY ((real)INFINITY)
+
+/* Whether the whole number x is odd, with no conversion to an integer type
+ * (undefined behaviour once x is beyond that type's range, 2^63 for long).
+ * Every real of magnitude 2^53 and above (2^24 in float) is even; so are the
+ * infinities; NaN is not odd.  x / 2 is exact: x is whole, so not subnormal. */
+static inline int real_is_odd(real x)
+{
+    real half = x / 2;
+    return half == half && half != real_floor(half);
+}
 
 #endif

@@ -35,6 +35,24 @@ void render_sample_offset(unsigned long seed, int i, int j, int a, int b, int n,
     *dv = ((real)b + unit_from(mix64(h))) / (real)n;
 }
 
+static bool is_finite(color c) { return isfinite(c.r) && isfinite(c.g) && isfinite(c.b); }
+
+/* A pixel from its `finite` finite samples out of n2: their sum, and the sum
+ * of each scaled by weight = 1/n2 (which cannot overflow). */
+static color pixel_value(color sum, color scaled, int finite, int n2, real weight, nonfinite_mode mode)
+{
+    if (finite < n2 && mode == NONFINITE_SHOW)
+        return RENDER_NONFINITE_COLOR;
+    if (finite == 0)
+        return color_make(0, 0, 0);
+    color mean = finite == n2 ? color_scale(sum, weight) : color_scale(sum, (real)1 / (real)finite);
+    if (is_finite(mean))
+        return mean;
+    /* The sum overflowed (samples near REAL_MAX): the scaled sum, rescaled. */
+    mean = color_scale(scaled, (real)n2 / (real)finite);
+    return color_make(real_fmin(mean.r, REAL_MAX), real_fmin(mean.g, REAL_MAX), real_fmin(mean.b, REAL_MAX));
+}
+
 static int side_of(int samples)
 {
     int n = 1;
@@ -58,8 +76,10 @@ render_stats render_image(image *img, sample_fn sample, const void *scene, const
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int j = 0; j < ny; j++) {
         uint64_t row_rays[RAY_KINDS] = {0};
+        uint64_t row_nonfinite = 0;
         for (int i = 0; i < nx; i++) {
-            color sum = {0, 0, 0};
+            color sum = {0, 0, 0}, scaled = {0, 0, 0};
+            int finite = 0;
             for (int a = 0; a < n; a++) {
                 for (int b = 0; b < n; b++) {
                     real du, dv;
@@ -68,15 +88,23 @@ render_stats render_image(image *img, sample_fn sample, const void *scene, const
                     real u = ((real)i + du) / (real)nx; /* u = (i + 0.5)/n_x for one sample */
                     real v = ((real)j + dv) / (real)ny; /* v = (j + 0.5)/n_y */
                     /* end snippet */
-                    sum = color_add(sum, sample(scene, u, v, row_rays));
+                    color L = sample(scene, u, v, row_rays);
+                    if (is_finite(L)) {
+                        sum = color_add(sum, L);
+                        scaled = color_add(scaled, color_scale(L, weight));
+                        finite++;
+                    }
                 }
             }
-            *image_at(img, i, j) = color_scale(sum, weight);
+            row_nonfinite += (uint64_t)(n * n - finite);
+            *image_at(img, i, j) = pixel_value(sum, scaled, finite, n * n, weight, opt->nonfinite);
         }
         for (int k = 0; k < RAY_KINDS; k++) {
 #pragma omp atomic
             stats.by_kind[k] += row_rays[k];
         }
+#pragma omp atomic
+        stats.nonfinite += row_nonfinite;
         if (show_progress) {
             int done;
 #pragma omp atomic capture
@@ -119,6 +147,7 @@ void render_summary(FILE *out, const char *name, const image *img, const render_
         if (used < sizeof rays)
             snprintf(rays + used, sizeof rays - used, " rays");
     }
-    fprintf(out, "%s: %dx%d, %d spp, %s, %.3f s, %d thread%s -> %s\n", name, img->width, img->height,
-            opt->samples > 0 ? opt->samples : 1, rays, stats.seconds, threads, threads == 1 ? "" : "s", output);
+    fprintf(out, "%s: %dx%d, %d spp, %s, %llu non-finite sample%s, %.3f s, %d thread%s -> %s\n", name, img->width,
+            img->height, opt->samples > 0 ? opt->samples : 1, rays, (unsigned long long)stats.nonfinite,
+            stats.nonfinite == 1 ? "" : "s", stats.seconds, threads, threads == 1 ? "" : "s", output);
 }

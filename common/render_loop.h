@@ -30,16 +30,29 @@ typedef color (*sample_fn)(const void *scene, real u, real v, uint64_t *rays);
 typedef struct {
     uint64_t rays;                /* all kinds together */
     uint64_t by_kind[RAY_KINDS];  /* indexed by ray_kind */
+    uint64_t nonfinite;           /* samples whose radiance had a NaN or infinite channel */
     double seconds;
 } render_stats;
 
+/* Magenta, bright enough to show at any exposure above 1e-30: the pixels of
+ * non-finite samples under --nonfinite=show. */
+#define RENDER_NONFINITE_COLOR color_make((real)1e30, 0, (real)1e30)
+
 /* Fills img (already sized) using opt->samples (0 counts as 1), opt->threads
  * and opt->seed.  Shows a progress line on stderr when stderr is a terminal,
- * the render takes more than about a second, and opt->quiet is false. */
+ * the render takes more than about a second, and opt->quiet is false.
+ *
+ * No NaN or infinity reaches a pixel.  A sample with a non-finite channel is
+ * counted in stats.nonfinite and, by opt->nonfinite, left out of its pixel's
+ * mean (the mean of the pixel's finite samples; black when it has none) or,
+ * under NONFINITE_SHOW, its pixel is painted RENDER_NONFINITE_COLOR.  Finite
+ * samples whose sum overflows are averaged with each scaled first. */
 render_stats render_image(image *img, sample_fn sample, const void *scene, const render_options *opt);
 
-/* The one-line summary: "<name>: 512x512, 1 spp, 262144 rays, 0.05 s, 2 threads -> out.png".  When
- * secondary rays were cast, the count is split: "262144 eye + 101003 shadow rays". */
+/* The one-line summary:
+ *     "<name>: 512x512, 1 spp, 262144 rays, 0 non-finite samples, 0.050 s, 2 threads -> out.png".
+ * When secondary rays were cast, the count is split: "262144 eye + 101003 shadow rays".  The count of
+ * non-finite samples is always there, 0 included, so that a reader knows it was counted. */
 void render_summary(FILE *out, const char *name, const image *img, const render_options *opt,
                     render_stats stats, const char *output);
 

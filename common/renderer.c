@@ -52,15 +52,24 @@ int renderer_main(const renderer *r, int argc, char **argv)
     snprintf(fallback, sizeof fallback, "%s.png", r->name);
     const char *output = options_output(&opt, fallback);
     int status = 1;
-    image img;
-    if (image_init(&img, width, height) != 0) {
+    image img = {0};
+    if (png_check_output(output, err, sizeof err) != 0) { /* before rendering, not after */
+        fprintf(stderr, "%s: %s\n", r->name, err);
+    } else if (image_init(&img, width, height) != 0) {
         fprintf(stderr, "%s: out of memory for a %dx%d image\n", r->name, width, height);
     } else {
         render_stats stats = render_image(&img, r->sample, prepared, &opt);
-        if (png_write(&img, desc.exposure, output, err, sizeof err) != 0) {
+        if (stats.nonfinite > 0 && opt.nonfinite == NONFINITE_FAIL) {
+            fprintf(stderr, "%s: %llu samples were NaN or infinite (--nonfinite=fail): no image written\n", r->name,
+                    (unsigned long long)stats.nonfinite);
+            status = 3;
+        } else if (png_write(&img, desc.exposure, output, err, sizeof err) != 0) {
             fprintf(stderr, "%s: %s\n", r->name, err);
         } else {
             render_summary(stderr, r->name, &img, &opt, stats, output);
+            if (stats.nonfinite > 0 && opt.quiet) /* without -q, the summary line says it */
+                fprintf(stderr, "%s: %llu samples were NaN or infinite (see --nonfinite)\n", r->name,
+                        (unsigned long long)stats.nonfinite);
             status = 0;
         }
         image_free(&img);

@@ -6,7 +6,8 @@
  * renders, writes the PNG, and prints the one-line summary.
  *
  * Exit status: 0 on success, 1 for a bad scene or an unwritable output (with
- * one line naming the file, the line and the problem), 2 for a bad option.
+ * one line naming the file, the line and the problem), 2 for a bad option,
+ * 3 when samples were NaN or infinite under --nonfinite=fail (no image).
  */
 #ifndef RT_RENDERER_H
 #define RT_RENDERER_H

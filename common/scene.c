@@ -28,6 +28,7 @@ void scene_free(scene *s)
     for (int k = 0; k < s->n_textures; k++) {
         free(s->textures[k].name);
         free(s->textures[k].image_path);
+        texture_image_free(&s->textures[k].image);
     }
     for (int k = 0; k < s->n_meshes; k++)
         mesh_free(&s->meshes[k]);

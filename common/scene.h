@@ -13,6 +13,7 @@
 
 #include "color.h"
 #include "mesh.h"
+#include "texture_image.h"
 #include "vec3.h"
 
 typedef enum { CAMERA_PERSPECTIVE, CAMERA_ORTHOGRAPHIC } camera_kind;
@@ -30,7 +31,8 @@ typedef enum { TEXTURE_REPEAT, TEXTURE_CLAMP } texture_kind;
 typedef struct {
     char *name;
     texture_kind kind;
-    char *image_path; /* resolved against the scene file's folder; readable as an image */
+    char *image_path;    /* resolved against the scene file's folder */
+    texture_image image; /* its texels, decoded when the scene was read: look them up here */
     int line;
 } scene_texture;
 
@@ -89,13 +91,16 @@ typedef struct {
 } scene;
 
 #define SCENE_MAX_IMAGE_SIDE 16384
+#define SCENE_MAX_FILE_BYTES (64LL << 20) /* one scene file; also keeps line numbers far from INT_MAX */
 
 /* The defaults of SCENES.md: no surfaces, the default camera, exposure 1. */
 void scene_init(scene *s);
 
 /* Reads `path`.  Returns 0, or -1 with "path:line: problem" in err (and s
  * left empty: nothing to free).  Mesh and texture paths are resolved against
- * the folder of `path`; meshes are loaded, textures checked to be readable. */
+ * the folder of `path`; meshes are loaded and texture images decoded, each
+ * once.  The scene, a mesh or a texture that is not a regular file (a
+ * directory, a FIFO, /dev/zero) or is larger than its limit is refused. */
 int scene_load(const char *path, scene *s, char *err, size_t err_size);
 
 void scene_free(scene *s);

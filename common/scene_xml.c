@@ -13,9 +13,9 @@
 #include <strings.h>
 
 #include <expat.h>
-#include <stb_image.h>
 
 #include "grow.h"
+#include "input_file.h"
 #include "scene.h"
 
 typedef enum {
@@ -326,19 +326,12 @@ static bool parse_image_size(reader *r)
     return true;
 }
 
-static bool check_texture_file(reader *r, const char *path)
+/* Decodes the whole image, once: its texels stay in the scene. */
+static bool load_texture_image(reader *r, const char *path)
 {
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        fail_at(r, line_of_top(r), "cannot read texture image '%s': %s", path, strerror(errno));
-        return false;
-    }
-    int x, y, channels;
-    int ok = stbi_info_from_file(f, &x, &y, &channels);
-    fclose(f);
-    if (!ok) {
-        fail_at(r, line_of_top(r), "texture image '%s' is not an image that can be read (%s)", path,
-                stbi_failure_reason());
+    char problem[512];
+    if (texture_image_load(path, &r->texture.image, problem, sizeof problem) != 0) {
+        fail_at(r, line_of_top(r), "%s", problem);
         return false;
     }
     return true;
@@ -403,7 +396,7 @@ static void end_leaf(reader *r, element_id id)
             if (!r->texture.image_path)
                 fail_at(r, line_of_top(r), "out of memory");
             else
-                check_texture_file(r, r->texture.image_path);
+                load_texture_image(r, r->texture.image_path);
         }
         break;
     case E_CENTER: parse_vec3(r, &r->surface.center); break;
@@ -757,11 +750,9 @@ static char *folder_of(const char *path)
 int scene_load(const char *path, scene *s, char *err, size_t err_size)
 {
     scene_init(s);
-    FILE *f = fopen(path, "rb");
-    if (!f) {
-        snprintf(err, err_size, "%s: cannot read the scene: %s", path, strerror(errno));
+    FILE *f = input_file_open(path, "the scene", SCENE_MAX_FILE_BYTES, err, err_size);
+    if (!f)
         return -1;
-    }
     reader r = {.path = path, .s = s, .err = err, .err_size = err_size, .kind = -1};
     r.folder = folder_of(path);
     r.parser = XML_ParserCreate(NULL);
@@ -779,9 +770,17 @@ int scene_load(const char *path, scene *s, char *err, size_t err_size)
     }
     char buffer[1 << 16];
     bool done = r.failed;
+    long long total = 0;
     while (!done) {
         size_t n = fread(buffer, 1, sizeof buffer, f);
         done = n < sizeof buffer;
+        total += (long long)n;
+        if (total > SCENE_MAX_FILE_BYTES) { /* a file that said it was smaller (in /proc, say) */
+            snprintf(err, err_size, "%s: the scene holds more than the %lld bytes one scene file may hold", path,
+                     SCENE_MAX_FILE_BYTES);
+            r.failed = true;
+            break;
+        }
         if (ferror(f)) {
             snprintf(err, err_size, "%s: read error: %s", path, strerror(errno));
             r.failed = true;
@@ -806,6 +805,7 @@ int scene_load(const char *path, scene *s, char *err, size_t err_size)
     free(r.shader.name);
     free(r.texture.name);
     free(r.texture.image_path);
+    texture_image_free(&r.texture.image);
     if (r.failed) {
         scene_free(s);
         return -1;

@@ -31,16 +31,46 @@ static inline vec3 vec3_cross(vec3 a, vec3 b)
 }
 
 static inline real vec3_length_squared(vec3 a) { return vec3_dot(a, a); }
-static inline real vec3_length(vec3 a) { return real_sqrt(vec3_dot(a, a)); }
-
-/* a / |a|.  The zero vector has no direction: callers check the length first
- * where a zero vector can occur (vec3_normalize of zero gives NaNs). */
-static inline vec3 vec3_normalize(vec3 a) { return vec3_scale(a, (real)1 / vec3_length(a)); }
 
 /* The largest absolute component: a cheap scale for relative tolerances. */
 static inline real vec3_max_abs(vec3 a)
 {
     return real_fmax(real_abs(a.x), real_fmax(real_abs(a.y), real_abs(a.z)));
+}
+
+/* a divided by its largest absolute component: that component becomes +-1,
+ * so a . a is between 1 and 3 (a must not be zero). */
+static inline vec3 vec3_divide_by_max_abs(vec3 a)
+{
+    real m = vec3_max_abs(a);
+    return (vec3){a.x / m, a.y / m, a.z / m};
+}
+
+/* |a|.  When a . a overflows or falls below the normal reals (components
+ * beyond about 1e154 or under 1e-154 in double), |a| is computed from a
+ * scaled by its largest component instead; otherwise sqrt(a . a), so that
+ * ordinary vectors give the same bits as always. */
+static inline real vec3_length(vec3 a)
+{
+    real squared = vec3_dot(a, a);
+    if (squared >= REAL_MIN && squared <= REAL_MAX)
+        return real_sqrt(squared);
+    real m = vec3_max_abs(a);
+    if (m == 0 || !isfinite(m))
+        return m; /* 0 for the zero vector; infinity or NaN as given */
+    return m * real_sqrt(vec3_dot(vec3_divide_by_max_abs(a), vec3_divide_by_max_abs(a)));
+}
+
+/* a / |a|, with the same care as vec3_length for huge and tiny vectors.  The
+ * zero vector has no direction: callers check the length first where a zero
+ * vector can occur (vec3_normalize of zero gives NaNs). */
+static inline vec3 vec3_normalize(vec3 a)
+{
+    real squared = vec3_dot(a, a);
+    if (squared >= REAL_MIN && squared <= REAL_MAX)
+        return vec3_scale(a, (real)1 / real_sqrt(squared));
+    vec3 b = vec3_divide_by_max_abs(a);
+    return vec3_scale(b, (real)1 / real_sqrt(vec3_dot(b, b)));
 }
 
 static inline bool vec3_is_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }

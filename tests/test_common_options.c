@@ -70,6 +70,12 @@ static void test_all_shared_options(void **state)
     assert_int_equal(2, p.opt.threads);
     assert_int_equal(42, p.opt.seed);
     assert_true(p.opt.quiet);
+    assert_int_equal(NONFINITE_DROP, p.opt.nonfinite); /* the default */
+    p = parse("render", "--nonfinite=show", NULL);
+    assert_int_equal(OPTIONS_OK, p.result);
+    assert_int_equal(NONFINITE_SHOW, p.opt.nonfinite);
+    p = parse("render", "--nonfinite", "fail", NULL);
+    assert_int_equal(NONFINITE_FAIL, p.opt.nonfinite);
     p = parse("render", "--output=y.png", "--size=3x5", "--samples=1", "--threads=1", "--quiet", NULL);
     assert_int_equal(OPTIONS_OK, p.result);
     assert_string_equal("y.png", p.opt.output);
@@ -85,7 +91,7 @@ static void test_bad_values_name_the_option(void **state)
         {"-s", "axb", "--size"},     {"-n", "3", "--samples"},    {"-n", "0", "--samples"},
         {"-n", "-4", "--samples"},   {"-j", "0", "--threads"},    {"-j", "two", "--threads"},
         {"--seed", "-1", "--seed"},  {"--sphere", "exact", "--sphere"}, {"--depth", "1.5", "--depth"},
-        {"--epsilon", "nan", "--epsilon"},
+        {"--epsilon", "nan", "--epsilon"}, {"--nonfinite", "zero", "--nonfinite"},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         parsed p = parse("render", bad[k][0], bad[k][1], NULL);
@@ -127,11 +133,31 @@ static void test_help_lists_options_knobs_and_defaults(void **state)
     parsed p = parse("render", "--help", NULL);
     assert_int_equal(OPTIONS_EXIT, p.result);
     const char *expected[] = {"test renderer", "--output", "--size", "--samples", "--threads", "--seed",
-                              "--quiet",       "--sphere", "robust|textbook", "default robust", "--depth",
+                              "--quiet",       "--nonfinite=M", "drop", "show", "fail", "--sphere", "robust|textbook", "default robust", "--depth",
                               "default 5",     "--epsilon", "default 0.001", REAL_NAME};
     for (size_t k = 0; k < sizeof expected / sizeof expected[0]; k++)
         if (!strstr(p.out, expected[k]))
             fail_msg("--help does not mention '%s':\n%s", expected[k], p.out);
+}
+
+/* Two parses in one process: the second must not inherit getopt's state
+ * (glibc remembers where it was inside "-hq" unless optind is set to 0). */
+static void test_two_parses_in_a_row(void **state)
+{
+    (void)state;
+    parsed p = parse("render", "-hq", "first.xml", NULL);
+    assert_int_equal(OPTIONS_EXIT, p.result); /* -h stops at once, inside the group */
+    p = parse("render", "-qj", "2", "second.xml", NULL);
+    assert_int_equal(OPTIONS_OK, p.result);
+    assert_true(p.opt.quiet);
+    assert_int_equal(2, p.opt.threads);
+    assert_non_null(p.opt.scene_path);
+    assert_string_equal("second.xml", p.opt.scene_path);
+    p = parse("render", "-n", "4", "third.xml", NULL);
+    assert_int_equal(OPTIONS_OK, p.result);
+    assert_int_equal(4, p.opt.samples);
+    assert_false(p.opt.quiet);
+    assert_string_equal("third.xml", p.opt.scene_path);
 }
 
 static const graded_test tests[] = {
@@ -141,5 +167,6 @@ static const graded_test tests[] = {
     GRADED(test_unknown_option_missing_value_and_extra_scene, 0),
     GRADED(test_knobs_set_their_targets, 0),
     GRADED(test_help_lists_options_knobs_and_defaults, 0),
+    GRADED(test_two_parses_in_a_row, 0),
 };
 SUITE_MAIN("common_options", tests)

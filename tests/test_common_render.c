@@ -112,13 +112,98 @@ static void test_summary_counts_ray_kinds_apart(void **state)
     render_stats eye_only = {.rays = 8, .by_kind = {8, 0, 0, 0}, .seconds = 0.5};
     render_summary(out, "x", &img, &opt, eye_only, "x.png");
     fflush(out);
-    assert_string_equal("x: 4x2, 1 spp, 8 rays, 0.500 s, 2 threads -> x.png\n", line);
+    assert_string_equal("x: 4x2, 1 spp, 8 rays, 0 non-finite samples, 0.500 s, 2 threads -> x.png\n", line);
     rewind(out);
-    render_stats mixed = {.rays = 19, .by_kind = {8, 6, 0, 5}, .seconds = 0.25};
+    render_stats mixed = {.rays = 19, .by_kind = {8, 6, 0, 5}, .nonfinite = 1, .seconds = 0.25};
     render_summary(out, "x", &img, &opt, mixed, "x.png");
     fputc('\0', out);
     fclose(out);
-    assert_string_equal("x: 4x2, 1 spp, 8 eye + 6 shadow + 5 refracted rays, 0.250 s, 2 threads -> x.png\n", line);
+    assert_string_equal(
+        "x: 4x2, 1 spp, 8 eye + 6 shadow + 5 refracted rays, 1 non-finite sample, 0.250 s, 2 threads -> x.png\n",
+        line);
+}
+
+/* Column 0 of each pixel's strata is NaN on the left half of the image and
+ * infinite on the right; column 1 is finite, 0.25 + u.  Pixel (0, 0) of a
+ * 2x1 image is all NaN. */
+static color poisoned(const void *scene, real u, real v, uint64_t *rays)
+{
+    (void)scene;
+    (void)v;
+    ++*rays;
+    real frac = u * 4 - real_floor(u * 4); /* where in its pixel of a 4-wide image the sample is */
+    if (frac < (real)0.5)
+        return u < (real)0.5 ? color_make(NAN, 1, 1) : color_make(1, INFINITY, 1);
+    return color_make((real)0.25 + u, (real)0.25 + u, (real)0.25 + u);
+}
+
+static color all_nan(const void *scene, real u, real v, uint64_t *rays)
+{
+    (void)scene;
+    (void)u;
+    (void)v;
+    ++*rays;
+    return color_make(NAN, NAN, NAN);
+}
+
+/* Near REAL_MAX: four finite samples whose sum overflows. */
+static color huge(const void *scene, real u, real v, uint64_t *rays)
+{
+    (void)scene;
+    (void)u;
+    (void)v;
+    ++*rays;
+    return color_make(REAL_MAX / 2, REAL_MAX, 1);
+}
+
+static bool finite_pixel(color c) { return isfinite(c.r) && isfinite(c.g) && isfinite(c.b); }
+
+/* Non-finite samples are counted, never reach a pixel, and are dropped or
+ * shown as the knob says. */
+static void test_nonfinite_samples_are_counted_and_kept_out(void **state)
+{
+    (void)state;
+    image img, shown;
+    assert_int_equal(0, image_init(&img, 4, 3));
+    assert_int_equal(0, image_init(&shown, 4, 3));
+    /* 4 spp: strata a = 0 (u offset below 0.5) are poisoned, a = 1 finite */
+    render_options opt = {.samples = 4, .threads = 2, .seed = 9, .quiet = true};
+    render_stats stats = render_image(&img, poisoned, NULL, &opt);
+    assert_int_equal(4 * 3 * 2, stats.nonfinite); /* two of each pixel's four samples */
+    assert_int_equal(4 * 3 * 4, stats.rays);
+    for (int j = 0; j < 3; j++) {
+        for (int i = 0; i < 4; i++) {
+            color c = *image_at(&img, i, j);
+            assert_true(finite_pixel(c));
+            /* the mean of the two finite samples, each 0.25 + u with u in the
+             * right half of pixel i: between 0.25 + (i + 0.5)/4 and 0.25 + (i + 1)/4 */
+            assert_true(c.r >= (real)0.25 + ((real)i + (real)0.5) / 4 && c.r <= (real)0.25 + ((real)i + 1) / 4);
+        }
+    }
+    opt.nonfinite = NONFINITE_SHOW;
+    stats = render_image(&shown, poisoned, NULL, &opt);
+    assert_int_equal(4 * 3 * 2, stats.nonfinite);
+    color magenta = RENDER_NONFINITE_COLOR;
+    assert_memory_equal(&magenta, image_at(&shown, 2, 1), sizeof magenta);
+    image_free(&img);
+    image_free(&shown);
+
+    /* no finite sample at all: black, not NaN */
+    assert_int_equal(0, image_init(&img, 2, 1));
+    opt.nonfinite = NONFINITE_DROP;
+    stats = render_image(&img, all_nan, NULL, &opt);
+    assert_int_equal(2 * 4, stats.nonfinite);
+    assert_close(0, image_at(&img, 0, 0)->r, 0);
+    assert_close(0, image_at(&img, 1, 0)->b, 0);
+    /* finite samples whose sum overflows: their mean, exactly (halving and
+     * the scale by 4 then 1/4 are exact in binary) */
+    stats = render_image(&img, huge, NULL, &opt);
+    assert_int_equal(0, stats.nonfinite);
+    assert_true(finite_pixel(*image_at(&img, 1, 0)));
+    assert_close(REAL_MAX / 2, image_at(&img, 1, 0)->r, 0);
+    assert_close(REAL_MAX, image_at(&img, 1, 0)->g, 0);
+    assert_close(1, image_at(&img, 1, 0)->b, REAL_EPSILON);
+    image_free(&img);
 }
 
 static const graded_test tests[] = {
@@ -127,5 +212,6 @@ static const graded_test tests[] = {
     GRADED(test_samples_average_to_the_pixel_mean, 0),
     GRADED(test_any_thread_count_gives_the_same_image, 0),
     GRADED(test_summary_counts_ray_kinds_apart, 0),
+    GRADED(test_nonfinite_samples_are_counted_and_kept_out, 0),
 };
 SUITE_MAIN("common_render", tests)

@@ -3,7 +3,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+#include <stb_image_write.h>
 
 #include "scene.h"
 #include "suite.h"
@@ -270,10 +273,10 @@ static void test_file_errors(void **state)
     expect_error("<scene>\n<surface type=\"Mesh\">\n<data>missing.obj</data></surface></scene>", 3,
                  "cannot load mesh 'missing.obj'");
     expect_error("<scene>\n<texture type=\"RepeatTexture\">\n<image>missing.png</image></texture></scene>", 3,
-                 "cannot read texture image");
+                 "missing.png: cannot read the texture image");
     write_file("not-an-image.png", "plain text");
     expect_error("<scene>\n<texture type=\"RepeatTexture\">\n<image>not-an-image.png</image></texture></scene>", 3,
-                 "not an image");
+                 "not-an-image.png: not a PNG file");
     /* a broken mesh: the message names the scene line and the mesh's own line */
     write_file("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
     expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad.obj</data></surface></scene>", 3,
@@ -302,6 +305,155 @@ static void test_file_errors(void **state)
     char err[512];
     assert_int_equal(-1, scene_load("/nonexistent/scene.xml", &s, err, sizeof err));
     assert_non_null(strstr(err, "/nonexistent/scene.xml: cannot read the scene"));
+}
+
+/* A mesh, texture or scene path that names a directory, a FIFO or a device
+ * is refused with that reason, before a byte is read (a FIFO would block,
+ * /dev/zero would be read until memory runs out). */
+static void test_paths_that_are_not_regular_files(void **state)
+{
+    (void)state;
+    char fifo[256], sub[256];
+    snprintf(fifo, sizeof fifo, "%s/fifo", folder);
+    snprintf(sub, sizeof sub, "%s/sub", folder);
+    assert_int_equal(0, mkfifo(fifo, 0600));
+    assert_int_equal(0, mkdir(sub, 0700));
+    static const struct {
+        const char *path, *kind;
+    } bad[] = {{"/dev/zero", "a character device"}, {"fifo", "a FIFO"}, {"sub", "a directory"}};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        char text[256], words[128];
+        snprintf(text, sizeof text, "<scene>\n<surface type=\"Mesh\">\n<data>%s</data></surface></scene>", bad[k].path);
+        snprintf(words, sizeof words, "the mesh is %s, not a regular file", bad[k].kind);
+        expect_error(text, 3, words);
+        snprintf(text, sizeof text, "<scene>\n<texture type=\"ClampTexture\">\n<image>%s</image></texture></scene>",
+                 bad[k].path);
+        snprintf(words, sizeof words, "the texture image is %s, not a regular file", bad[k].kind);
+        expect_error(text, 3, words);
+    }
+    scene s;
+    char err[512];
+    assert_int_equal(-1, scene_load(fifo, &s, err, sizeof err));
+    assert_non_null(strstr(err, "the scene is a FIFO, not a regular file"));
+    assert_int_equal(-1, scene_load(sub, &s, err, sizeof err));
+    assert_non_null(strstr(err, "the scene is a directory, not a regular file"));
+    unlink(fifo);
+    rmdir(sub);
+}
+
+/* A texture is decoded in full when the scene is read, and its texels kept:
+ * a PNG whose header is valid but whose pixels are cut short is refused. */
+static void test_texture_images_are_decoded_in_full(void **state)
+{
+    (void)state;
+    enum { W = 32, H = 24 };
+    unsigned char rgb[W * H * 3];
+    unsigned state_bits = 12345; /* noise, so that the PNG does not compress below 100 bytes */
+    for (size_t k = 0; k < sizeof rgb; k++) {
+        state_bits = state_bits * 1103515245u + 12345u;
+        rgb[k] = (unsigned char)(state_bits >> 16);
+    }
+    char path[256];
+    snprintf(path, sizeof path, "%s/noise.png", folder);
+    assert_int_not_equal(0, stbi_write_png(path, W, H, 3, rgb, W * 3));
+    const char *text = "<scene>\n<texture name=\"n\" type=\"RepeatTexture\">\n<image>noise.png</image></texture></scene>";
+    scene s;
+    char err[1024] = "";
+    if (load_text(text, &s, err, sizeof err) != 0)
+        fail_msg("%s", err);
+    assert_int_equal(1, s.n_textures);
+    const texture_image *t = &s.textures[0].image;
+    assert_int_equal(W, t->width);
+    assert_int_equal(H, t->height);
+    assert_memory_equal(rgb, t->rgb, sizeof rgb); /* row 0 is the file's top row */
+    color c = texture_image_texel(t, 5, 7);
+    /* byte / 255, one rounding of a quotient: within REAL_EPSILON / 2 relative */
+    assert_close(rgb[(7 * W + 5) * 3 + 1] / 255.0, c.g, REAL_EPSILON);
+    scene_free(&s);
+    /* the same file cut to 100 bytes: its header still reads as 32 x 24 */
+    FILE *f = fopen(path, "r+b");
+    assert_non_null(f);
+    assert_int_equal(0, ftruncate(fileno(f), 100));
+    fclose(f);
+    expect_error(text, 3, "noise.png: the image is broken");
+    /* not a PNG: refused before decoding (stb_image's other decoders accept files cut short) */
+    unsigned char bmp[54 + 4] = {'B', 'M'};
+    f = fopen(path, "wb");
+    assert_non_null(f);
+    fwrite(bmp, 1, sizeof bmp, f);
+    fclose(f);
+    expect_error(text, 3, "noise.png: not a PNG file");
+}
+
+/* Writes an OBJ file of `lines` copies of `line` after a triangle's vertices. */
+static void write_obj_lines(const char *name, const char *line, int lines)
+{
+    char path[256];
+    snprintf(path, sizeof path, "%s/%s", folder, name);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs("v 0 0 0\nv 1 0 0\nv 0 1 0\n", f);
+    for (int k = 0; k < lines; k++)
+        fputs(line, f);
+    fclose(f);
+}
+
+/* One line, one face, one file: each has a limit, named when it is passed. */
+static void test_limits_of_one_line_face_and_file(void **state)
+{
+    (void)state;
+    /* a line of MESH_MAX_LINE_BYTES + 1 characters: a comment, harmless but for its length */
+    char *long_line = malloc(MESH_MAX_LINE_BYTES + 3);
+    assert_non_null(long_line);
+    memset(long_line, ' ', MESH_MAX_LINE_BYTES + 1);
+    long_line[0] = '#';
+    strcpy(long_line + MESH_MAX_LINE_BYTES + 1, "\n");
+    write_obj_lines("long.obj", long_line, 1);
+    long_line[MESH_MAX_LINE_BYTES] = '\n'; /* one shorter: accepted (then "no faces") */
+    long_line[MESH_MAX_LINE_BYTES + 1] = '\0';
+    write_obj_lines("long-ok.obj", long_line, 1);
+    free(long_line);
+    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>long.obj</data></surface></scene>", 3,
+                 "long.obj:4: the line is longer than 65536 bytes (the limit of one line)");
+    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>long-ok.obj</data></surface></scene>", 3,
+                 "long-ok.obj: the mesh has no faces");
+    /* a face of MESH_MAX_CORNERS + 1 corners */
+    char face[MESH_MAX_CORNERS * 3 + 8] = "f";
+    for (int k = 0; k <= MESH_MAX_CORNERS; k++)
+        strcat(face, k % 3 == 0 ? " 1" : k % 3 == 1 ? " 2" : " 3");
+    strcat(face, "\n");
+    write_obj_lines("corners.obj", face, 1);
+    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>corners.obj</data></surface></scene>", 3,
+                 "corners.obj:4: a face has more than 1024 corners (the limit of one face)");
+    /* a NUL byte: not a text file */
+    char path[256];
+    snprintf(path, sizeof path, "%s/nul.obj", folder);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    fwrite("v 0 0 0\nv 1\0 0 0\n", 1, 18, f);
+    fclose(f);
+    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>nul.obj</data></surface></scene>", 3,
+                 "nul.obj:2: the line holds a NUL byte");
+    /* files larger than their limits: sparse, so nothing is written */
+    snprintf(path, sizeof path, "%s/huge.obj", folder);
+    f = fopen(path, "w");
+    assert_non_null(f);
+    assert_int_equal(0, ftruncate(fileno(f), (off_t)MESH_MAX_FILE_BYTES + 1));
+    fclose(f);
+    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>huge.obj</data></surface></scene>", 3,
+                 "the mesh is 268435457 bytes, more than the 268435456 one such file may hold");
+    snprintf(path, sizeof path, "%s/huge.xml", folder);
+    f = fopen(path, "w");
+    assert_non_null(f);
+    assert_int_equal(0, ftruncate(fileno(f), (off_t)SCENE_MAX_FILE_BYTES + 1));
+    fclose(f);
+    scene s;
+    char err[512];
+    assert_int_equal(-1, scene_load(path, &s, err, sizeof err));
+    assert_non_null(strstr(err, "the scene is 67108865 bytes, more than the 67108864"));
+    unlink(path);
+    snprintf(path, sizeof path, "%s/huge.obj", folder);
+    unlink(path);
 }
 
 static void test_obj_relative_indices_and_slashes(void **state)
@@ -371,6 +523,9 @@ static const graded_test tests[] = {
     GRADED(test_reference_errors, 0),
     GRADED(test_file_errors, 0),
     GRADED(test_obj_relative_indices_and_slashes, 0),
+    GRADED(test_paths_that_are_not_regular_files, 0),
+    GRADED(test_texture_images_are_decoded_in_full, 0),
+    GRADED(test_limits_of_one_line_face_and_file, 0),
     GRADED(test_cornell_corpus_parses, 0),
 };
 

@@ -100,6 +100,39 @@ static void test_ray_at(void **state)
     assert_vec3_close(ray_at(r, 3), ray_at(r2, (real)1.5), 0);
 }
 
+/* Huge and tiny vectors: a . a overflows or underflows, |a| and a/|a| do
+ * not.  (3, 4, 12) has length 13; scaled by a power of two the length
+ * scales exactly, so the only errors are those of the ordinary case: one
+ * sqrt and a few roundings, within 4 REAL_EPSILON relative. */
+static void test_length_and_normalize_of_huge_and_tiny_vectors(void **state)
+{
+    (void)state;
+    const real scales[] = {real_pow(2, 100), real_pow(2, -100), REAL_MAX / 16, REAL_MIN * 4, REAL_MIN / 1024};
+    for (size_t k = 0; k < sizeof scales / sizeof scales[0]; k++) {
+        real s = scales[k];
+        vec3 a = vec3_make(3 * s, -4 * s, 12 * s);
+        assert_close(1, vec3_length(a) / (13 * s), 4 * REAL_EPSILON);
+        vec3 n = vec3_normalize(a);
+        assert_vec3_close(vec3_make((real)3 / 13, (real)-4 / 13, (real)12 / 13), n, 4 * REAL_EPSILON);
+    }
+    assert_close(0, vec3_length(vec3_make(0, 0, 0)), 0);
+}
+
+/* The parity of whole numbers without converting them to an integer type. */
+static void test_parity_is_range_safe(void **state)
+{
+    (void)state;
+    assert_true(real_is_odd(7));
+    assert_true(real_is_odd(-3));
+    assert_false(real_is_odd(0));
+    assert_false(real_is_odd(-8));
+    assert_true(real_is_odd(real_pow(2, 20) + 1)); /* exact in float too */
+    assert_false(real_is_odd((real)1e19));  /* beyond 2^63: even, with no undefined conversion */
+    assert_false(real_is_odd(-REAL_MAX));
+    assert_false(real_is_odd(REAL_INFINITY));
+    assert_false(real_is_odd((real)NAN));
+}
+
 static const graded_test tests[] = {
     GRADED(test_right_handed_axes, 0),
     GRADED(test_cross_is_perpendicular_and_anticommutative, 0),
@@ -108,5 +141,7 @@ static const graded_test tests[] = {
     GRADED(test_normalize_gives_unit_length, 0),
     GRADED(test_add_sub_scale_mul, 0),
     GRADED(test_ray_at, 0),
+    GRADED(test_length_and_normalize_of_huge_and_tiny_vectors, 0),
+    GRADED(test_parity_is_range_safe, 0),
 };
 SUITE_MAIN("common_vec", tests)

@@ -1,5 +1,9 @@
 #!/bin/sh
-# deps.sh CC - make sure the Debian packages the build needs are installed.
+# deps.sh CC [fuzz] - make sure the Debian packages the build needs are installed.
+#
+# With `fuzz` (make fuzz), the packages of the fuzz targets instead: clang
+# with libFuzzer and the sanitizers, and expat; the default build's own
+# packages are left as they are.
 #
 # Each need is probed by compiling a one-line program with CC.  What is
 # missing is installed with apt-get (as root) or sudo apt-get (when sudo works
@@ -11,7 +15,21 @@ probe() { # package, program, extra flags
     printf '%s\n' "$2" | $cc $3 -x c -fsyntax-only - >/dev/null 2>&1 || missing="$missing $1"
 }
 
-if ! command -v "$cc" >/dev/null 2>&1; then
+if [ "$2" = fuzz ]; then
+    if ! command -v "$cc" >/dev/null 2>&1; then
+        missing="clang libclang-rt-dev libexpat1-dev libstb-dev"
+    else
+        probe libexpat1-dev '#include <expat.h>'
+        probe libstb-dev '#include <stb/stb_image.h>'
+        # libFuzzer and the sanitizer runtimes: a link, not only a compile.
+        exe=$(mktemp)
+        printf '%s\n' '#include <stddef.h>' '#include <stdint.h>' \
+            'int LLVMFuzzerTestOneInput(const uint8_t *d, size_t n) { (void)d; (void)n; return 0; }' |
+            $cc -fsanitize=fuzzer,address,undefined -x c - -o "$exe" >/dev/null 2>&1 ||
+            missing="$missing libclang-rt-dev"
+        rm -f "$exe"
+    fi
+elif ! command -v "$cc" >/dev/null 2>&1; then
     case "$cc" in
         clang*) missing="$missing clang libomp-dev" ;;
         *) missing="$missing gcc" ;;

@@ -9,7 +9,7 @@
 # and is rendered by the chapter's renderer of the REAL (double or float)
 # build, BUILD/NN_name/render or BUILD-float/NN_name/render, as
 #
-#     render -q -o docs/figures/OUTPUT.png ARGS...
+#     render -q --nonfinite=fail -o docs/figures/OUTPUT.png ARGS...
 #
 # A plot is the line `OUTPUT.png gnuplot SCRIPT.gp`, drawn as
 #
@@ -81,7 +81,7 @@ for list in "$@"; do
                 status=1
                 continue
             fi
-        elif ! "$renderer" -q -o "$out/$name" "$@" </dev/null; then
+        elif ! "$renderer" -q --nonfinite=fail -o "$out/$name" "$@" </dev/null; then
             echo "$list:$lineno: $renderer failed to render $name" >&2
             status=1
             continue

@@ -32,7 +32,7 @@ static color floor_color(ray r)
     if (r.d.y < 0 && r.p.y > 0) {
         real t = -r.p.y / r.d.y; /* p_y + t d_y = 0 */
         vec3 x = ray_at(r, t);
-        int odd = ((long)real_floor(x.x) + (long)real_floor(x.z)) & 1;
+        int odd = real_is_odd(real_floor(x.x)) != real_is_odd(real_floor(x.z)); /* range-safe: no (long) */
         return odd ? color_make((real)0.9, (real)0.9, (real)0.85) : color_make((real)0.1, (real)0.1, (real)0.15);
     }
     real up = r.d.y / vec3_length(r.d); /* sky: brighter towards the zenith */

@@ -1,0 +1,80 @@
+#include "texture_image.h"
+
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <stb_image.h>
+
+#include "input_file.h"
+
+int texture_image_decode(const unsigned char *bytes, size_t size, texture_image *t, char *problem,
+                         size_t problem_size)
+{
+    *t = (texture_image){0};
+    if (size == 0 || size > (size_t)INT_MAX) {
+        snprintf(problem, problem_size, "%s", size ? "the file is too large" : "the file is empty");
+        return -1;
+    }
+    /* PNG only, as SCENES.md says: it is the one format whose decoder in
+     * stb_image notices a file cut short (the zlib stream ends early).  Its
+     * JPEG, BMP and TGA decoders read missing bytes as zeros, its PNM decoder
+     * leaves them undefined, and (found by fuzz/texture.c, stb_image 2.27)
+     * a 16-bit PNM overflows a buffer. */
+    static const unsigned char png_signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    if (size < sizeof png_signature || memcmp(bytes, png_signature, sizeof png_signature) != 0) {
+        snprintf(problem, problem_size, "not a PNG file (a texture image is a PNG)");
+        return -1;
+    }
+    /* The header next: refuse a huge image before allocating for it. */
+    int width, height, channels;
+    if (!stbi_info_from_memory(bytes, (int)size, &width, &height, &channels)) {
+        snprintf(problem, problem_size, "not an image that can be read (%s)", stbi_failure_reason());
+        return -1;
+    }
+    if (width < 1 || height < 1 || width > TEXTURE_MAX_SIDE || height > TEXTURE_MAX_SIDE ||
+        (long long)width * height > TEXTURE_MAX_TEXELS) {
+        snprintf(problem, problem_size,
+                 "the image is %d x %d texels; a texture may have sides up to %d and %lld texels in all", width,
+                 height, TEXTURE_MAX_SIDE, TEXTURE_MAX_TEXELS);
+        return -1;
+    }
+    /* Then every texel: a file cut short or corrupt inside fails here. */
+    int w, h;
+    unsigned char *rgb = stbi_load_from_memory(bytes, (int)size, &w, &h, &channels, 3);
+    if (!rgb) {
+        snprintf(problem, problem_size, "the image is broken: %s", stbi_failure_reason());
+        return -1;
+    }
+    if (w != width || h != height) { /* the header said otherwise */
+        stbi_image_free(rgb);
+        snprintf(problem, problem_size, "the image is broken: its size changes while it is decoded");
+        return -1;
+    }
+    t->width = w;
+    t->height = h;
+    t->rgb = rgb;
+    return 0;
+}
+
+int texture_image_load(const char *path, texture_image *t, char *err, size_t err_size)
+{
+    *t = (texture_image){0};
+    unsigned char *bytes;
+    size_t size;
+    if (input_file_read_all(path, "the texture image", TEXTURE_MAX_FILE_BYTES, &bytes, &size, err, err_size) != 0)
+        return -1;
+    char problem[256];
+    int status = texture_image_decode(bytes, size, t, problem, sizeof problem);
+    free(bytes);
+    if (status != 0)
+        snprintf(err, err_size, "%s: %s", path, problem);
+    return status;
+}
+
+void texture_image_free(texture_image *t)
+{
+    stbi_image_free(t->rgb);
+    *t = (texture_image){0};
+}
