@@ -58,7 +58,7 @@ int renderer_main(const renderer *r, int argc, char **argv)
     } else if (image_init(&img, width, height) != 0) {
         fprintf(stderr, "%s: out of memory for a %dx%d image\n", r->name, width, height);
     } else {
-        render_stats stats = render_image(&img, r->sample, prepared, &opt);
+        render_stats stats = render_image_mapped(&img, r->sample, prepared, &opt, r->pixel_to_image);
         if (stats.nonfinite > 0 && opt.nonfinite == NONFINITE_FAIL) {
             fprintf(stderr, "%s: %llu samples were NaN or infinite (--nonfinite=fail): no image written\n", r->name,
                     (unsigned long long)stats.nonfinite);

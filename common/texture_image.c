@@ -1,6 +1,8 @@
 #include "texture_image.h"
 
 #include <limits.h>
+#include <stdbool.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -8,6 +10,42 @@
 #include <stb_image.h>
 
 #include "input_file.h"
+
+static uint32_t big_endian32(const unsigned char *p)
+{
+    return (uint32_t)p[0] << 24 | (uint32_t)p[1] << 16 | (uint32_t)p[2] << 8 | (uint32_t)p[3];
+}
+
+/* Walks the PNG's chunks (length, type, data, CRC) up to IEND.  Returns NULL
+ * when each fits in the file, else what is wrong.  stb_image 2.27 trusts a
+ * chunk's length: a 100-byte file whose IDAT claims 1.6 GB makes it allocate
+ * that much, and an empty first IDAT makes it add 0 to a null pointer,
+ * undefined behaviour (both found by fuzz/texture.c). */
+static const char *png_chunks_problem(const unsigned char *bytes, size_t size, char *problem, size_t problem_size)
+{
+    size_t offset = 8;
+    bool seen_data = false;
+    while (size - offset >= 12) {
+        uint32_t length = big_endian32(bytes + offset);
+        if (length > size - offset - 12) {
+            snprintf(problem, problem_size, "the image is broken: its chunk '%.4s' claims %lu bytes, more than the "
+                     "file holds", (const char *)bytes + offset + 4, (unsigned long)length);
+            return problem;
+        }
+        if (memcmp(bytes + offset + 4, "IEND", 4) == 0)
+            return NULL;
+        if (memcmp(bytes + offset + 4, "IDAT", 4) == 0) {
+            if (length == 0 && !seen_data) {
+                snprintf(problem, problem_size, "the image is broken: its first IDAT chunk is empty");
+                return problem;
+            }
+            seen_data = true;
+        }
+        offset += 12 + (size_t)length;
+    }
+    snprintf(problem, problem_size, "the image is broken: it ends before its IEND chunk (cut short?)");
+    return problem;
+}
 
 int texture_image_decode(const unsigned char *bytes, size_t size, texture_image *t, char *problem,
                          size_t problem_size)
@@ -27,6 +65,8 @@ int texture_image_decode(const unsigned char *bytes, size_t size, texture_image 
         snprintf(problem, problem_size, "not a PNG file (a texture image is a PNG)");
         return -1;
     }
+    if (png_chunks_problem(bytes, size, problem, problem_size))
+        return -1;
     /* The header next: refuse a huge image before allocating for it. */
     int width, height, channels;
     if (!stbi_info_from_memory(bytes, (int)size, &width, &height, &channels)) {

@@ -383,6 +383,26 @@ static void test_texture_images_are_decoded_in_full(void **state)
     fwrite(bmp, 1, sizeof bmp, f);
     fclose(f);
     expect_error(text, 3, "noise.png: not a PNG file");
+    /* a chunk that claims more than the file holds (an IDAT of 0x6300000c
+     * bytes in a 57-byte file): refused before stb_image allocates for it */
+    static const unsigned char claims[] = {
+        0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R', 0, 0, 0, 2, 0, 0, 0, 2,
+        8, 2, 0, 0, 0, 0xfd, 0xd4, 0x9a, 0x73, 0x63, 0, 0, 0x0c, 'I', 'D', 'A', 'T', 0, 0, 0, 0, 0, 0, 0, 0,
+        'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+    texture_image broken;
+    char problem[256];
+    assert_int_equal(-1, texture_image_decode(claims, sizeof claims, &broken, problem, sizeof problem));
+    if (!strstr(problem, "chunk 'IDAT' claims 1660944396 bytes, more than the file holds"))
+        fail_msg("%s", problem);
+    assert_null(broken.rgb);
+    /* an empty first IDAT chunk: stb_image would add 0 to a null pointer */
+    static const unsigned char empty_idat[] = {
+        0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n', 0, 0, 0, 13, 'I', 'H', 'D', 'R', 0, 0, 0, 2, 0, 0, 0, 2,
+        8, 2, 0, 0, 0, 0xfd, 0xd4, 0x9a, 0x73, 0, 0, 0, 0, 'I', 'D', 'A', 'T', 0x35, 0xaf, 0x06, 0x1e,
+        0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xae, 0x42, 0x60, 0x82};
+    assert_int_equal(-1, texture_image_decode(empty_idat, sizeof empty_idat, &broken, problem, sizeof problem));
+    if (!strstr(problem, "its first IDAT chunk is empty"))
+        fail_msg("%s", problem);
 }
 
 /* Writes an OBJ file of `lines` copies of `line` after a triangle's vertices. */
