@@ -17,7 +17,7 @@
  *
  * where cos is the cosine of the angle on the side of the smaller index: the
  * incoming angle on the way into glass, the transmitted one (cos_t) on the
- * way out.  With cos_i on the way out, R would jump from about 0.2 to 1 at
+ * way out.  With cos_i on the way out, R would jump from about 0.04 to 1 at
  * the critical angle (plotted in the README).
  *
  * Past the critical angle there is no cos_t: R = 1 (the caller's job, when
