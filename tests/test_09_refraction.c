@@ -242,7 +242,7 @@ static void test_r_plus_t(void **state)
 
 /* Schlick's approximation: into glass it is the polynomial in cos_i, out of
  * glass in cos_t, so that it reaches 1 at the critical angle as Fresnel's
- * does (in cos_i it would be about 0.2 there, then jump to 1). */
+ * does (in cos_i it would be about 0.04 there, then jump to 1). */
 static void test_schlick_cosines(void **state)
 {
     (void)state;
@@ -322,7 +322,8 @@ static void add_probe(scene *desc, vec3 centre, vec3 along)
     vec3 v0 = vec3_add(centre, vec3_scale(a, 100));
     vec3 v1 = vec3_add(centre, vec3_add(vec3_scale(a, -50), vec3_scale(b, 87)));
     vec3 v2 = vec3_add(centre, vec3_add(vec3_scale(a, -50), vec3_scale(b, -87)));
-    scene_add_surface(desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = probe_shader, .v0 = v0, .v1 = v1, .v2 = v2});
+    scene_add_surface(desc,
+                      (scene_surface){.kind = SURFACE_TRIANGLE, .shader = probe_shader, .v0 = v0, .v1 = v1, .v2 = v2});
 }
 
 /* The ray that reached the probe at depth 2 (in, out, probe): the only one
@@ -532,7 +533,8 @@ static void test_index_one_sphere_invisible(void **state)
     int s_red = scene_add_shader(&desc, red), s_floor = scene_add_shader(&desc, floor);
     scene_add_surface(&desc, (scene_surface){.kind = SURFACE_BOX, .shader = s_floor, .min_pt = {2.5, 0, -10},
                                              .max_pt = {22.5, 0.2, 10}});
-    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = s_red, .center = {12, 1.2, 1}, .radius = 1});
+    scene_add_surface(&desc,
+                      (scene_surface){.kind = SURFACE_SPHERE, .shader = s_red, .center = {12, 1.2, 1}, .radius = 1});
     scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = s_red, .center = {14.5, 0.9, -1.5},
                                              .radius = 0.7});
     scene_add_light(&desc, (scene_light){.position = {16, 9, -6}, .intensity = {60, 60, 60}});
@@ -541,8 +543,8 @@ static void test_index_one_sphere_invisible(void **state)
     image without, with;
     render_glass(&desc, &knobs, &without, side, side);
     /* the glass sphere between the eye and the scene, filling the middle of the view */
-    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = add_glass(&desc, 1), .center = {12.4, 2.4, 12},
-                                             .radius = (real)1.5});
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = add_glass(&desc, 1),
+                                             .center = {12.4, 2.4, 12}, .radius = (real)1.5});
     render_stats stats = render_glass(&desc, &knobs, &with, side, side);
     assert_true(stats.by_kind[RAY_REFRACTED] > (uint64_t)side * side / 8); /* it is in view */
     assert_int_equal(0, stats.by_kind[RAY_REFLECTED]);                    /* R = 0 exactly: no mirror ray */

@@ -17,10 +17,12 @@ static int add_tile(scene *desc, int shader, real x, real z)
 {
     const real s = GLASS_SCENE_TILE;
     vec3 a = {x, 0, z}, b = {x, 0, z + s}, c = {x + s, 0, z + s}, d = {x + s, 0, z};
-    if (scene_add_surface(desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = shader, .v0 = a, .v1 = b, .v2 = c}) <
-        0)
+    scene_surface tri = {.kind = SURFACE_TRIANGLE, .shader = shader, .v0 = a, .v1 = b, .v2 = c};
+    if (scene_add_surface(desc, tri) < 0)
         return -1;
-    return scene_add_surface(desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = shader, .v0 = a, .v1 = c, .v2 = d});
+    tri.v1 = c;
+    tri.v2 = d;
+    return scene_add_surface(desc, tri);
 }
 
 /* snippet: glass_scene */
@@ -53,7 +55,8 @@ int glass_scene(scene *desc)
     const int half = GLASS_SCENE_TILES / 2;
     for (int i = -half; i < half; i++)
         for (int k = -half; k < half; k++)
-            if (add_tile(desc, (i + k) % 2 == 0 ? light_tile : dark_tile, i * GLASS_SCENE_TILE, k * GLASS_SCENE_TILE) < 0)
+            if (add_tile(desc, (i + k) % 2 == 0 ? light_tile : dark_tile, i * GLASS_SCENE_TILE,
+                         k * GLASS_SCENE_TILE) < 0)
                 return -1;
     const scene_surface surfaces[] = {
         {.kind = SURFACE_SPHERE, .shader = glass, .center = {0, 1, 0.6}, .radius = 1},
