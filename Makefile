@@ -5,6 +5,10 @@
 # A stage file that has exercises exists twice: the complete version in
 # solutions/NN_name/ and the student's skeleton in chapters/NN_name/.  By
 # default every build takes the solutions; STUDENT=1 takes the skeletons.
+#
+# A student's copy (`make handout`) has no solutions/: there the reference
+# versions of the exercise files are compiled libraries,
+# reference/REAL/libNN_name.a, and the default build is STUDENT=1.
 
 .DEFAULT_GOAL := all
 SHELL := /bin/bash
@@ -14,7 +18,12 @@ SHELL := /bin/bash
 
 CC ?= cc
 REAL ?= double
-STUDENT ?= 0
+# A student's copy: no solution source, the compiled reference libraries instead.
+HANDOUT := $(if $(wildcard solutions/[0-9][0-9]_*/*.c),,$(if $(wildcard reference/*/lib[0-9][0-9]_*.a),1))
+STUDENT ?= $(if $(HANDOUT),1,0)
+WERROR ?= -Werror
+# REFERENCE="01 02": a student's build takes these chapters from the reference.
+REFERENCE ?=
 SANITIZE ?= 0
 OPT ?= -O2 -g
 
@@ -23,13 +32,13 @@ $(error REAL must be double or float, not '$(REAL)')
 endif
 
 compiler := $(if $(findstring clang,$(CC)),-clang)
-variant := $(compiler)$(if $(filter float,$(REAL)),-float)$(if $(filter 1,$(SANITIZE)),-asan)$(if $(filter 1,$(STUDENT)),-student)
+variant := $(compiler)$(if $(filter float,$(REAL)),-float)$(if $(filter 1,$(SANITIZE)),-asan)$(if $(filter 1,$(STUDENT)),-student)$(if $(filter 1,$(STUDENT)),$(if $(strip $(REFERENCE)),-ref$(subst $(eval) ,,$(strip $(REFERENCE)))))
 BUILD ?= build$(variant)
 
 CPPFLAGS := -D_POSIX_C_SOURCE=200809L -I common -I chapters -I tests -I /usr/include/stb \
             $(if $(filter float,$(REAL)),-DRT_REAL_FLOAT)
 SANITIZERS := -fsanitize=address -fsanitize=undefined
-CFLAGS := -std=c11 -Wall -Wextra -Wpedantic -Werror -ffp-contract=off -fopenmp $(OPT) -MMD -MP \
+CFLAGS := -std=c11 -Wall -Wextra -Wpedantic $(WERROR) -ffp-contract=off -fopenmp $(OPT) -MMD -MP \
           $(if $(filter 1,$(SANITIZE)),$(SANITIZERS) -fno-sanitize-recover=all -fno-omit-frame-pointer)
 LDFLAGS := -fopenmp $(if $(filter 1,$(SANITIZE)),$(SANITIZERS))
 LDLIBS := -lstb -lexpat -lm
@@ -41,12 +50,22 @@ COMMON_SRC := $(sort $(wildcard common/*.c))
 num = $(firstword $(subst _, ,$1))
 # The chapters up to and including $1.
 upto = $(foreach c,$(CHAPTERS),$(if $(filter $(call num,$c),$(firstword $(sort $(call num,$c) $(call num,$1)))),$c))
-# Source of stage file $3 of chapter $1: the solution unless $2 is 1 (student).
-pick = $(if $(and $(filter-out 1,$2),$(wildcard solutions/$1/$(notdir $3))),solutions/$1/$(notdir $3),$3)
-# The stage files of chapter $1, from the student's files when $2 is 1.
-stage_src = $(foreach f,$(sort $(filter-out %/render.c,$(wildcard chapters/$1/*.c))),$(call pick,$1,$2,$f))
-# The stage files of chapters 1..$1.
-stages_upto = $(foreach c,$(call upto,$1),$(call stage_src,$c,$(STUDENT)))
+# The exercise files of chapter $1 (FILE.c): those that have a solution, or
+# in a student's copy the members of the chapter's reference library.
+REFERENCE_DIR := reference/$(REAL)
+$(foreach c,$(CHAPTERS),$(eval EXERCISES_$c := $(if $(HANDOUT),$(patsubst %.o,%.c,$(shell ar t $(REFERENCE_DIR)/lib$c.a 2>/dev/null)),$(notdir $(wildcard solutions/$c/*.c)))))
+# The reference version of chapter $1's exercise files: the solutions' objects,
+# or in a student's copy the compiled library.
+reference = $(if $(EXERCISES_$1),$(if $(HANDOUT),$(REFERENCE_DIR)/lib$1.a,$(call objs,$(addprefix solutions/$1/,$(EXERCISES_$1)))))
+# The objects of chapter $1's stage files: the student's exercise files when $2
+# is 1, else the reference.
+stage_objs = $(call objs,$(filter-out $(if $(filter 1,$2),,$(addprefix chapters/$1/,$(EXERCISES_$1))),$(sort $(filter-out %/render.c,$(wildcard chapters/$1/*.c))))) $(if $(filter 1,$2),,$(call reference,$1))
+# The stage objects of chapters 1..$1.
+stages_upto = $(foreach c,$(call upto,$1),$(call stage_objs,$c,$(if $(filter $c $(call num,$c),$(REFERENCE)),0,$(STUDENT))))
+# Links the prerequisites $1: every member of a reference library is linked,
+# exactly as the solutions' objects would be.
+comma := ,
+link = $(CC) $(LDFLAGS) $(filter %.o,$1) $(if $(filter %.a,$1),-Wl$(comma)--whole-archive $(filter %.a,$1) -Wl$(comma)--no-whole-archive) $(LDLIBS)
 objs = $(patsubst %.c,$(BUILD)/obj/%.o,$1)
 
 TEST_SUPPORT := tests/suite.c tests/image_compare.c
@@ -60,10 +79,11 @@ ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS)
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
 # The built-in scenes' images: out/, or out-student/ for the student build.
-OUT := out$(if $(filter 1,$(STUDENT)),-student)
+OUT := out$(if $(filter 1,$(STUDENT)),-student$(if $(strip $(REFERENCE)),-ref$(subst $(eval) ,,$(strip $(REFERENCE)))))
 IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
+        handout handout-libs reference-libs \
         figure-renderers figures check-figures snippets check-snippets check
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
@@ -74,22 +94,31 @@ tests: $(TEST_BINS)
 deps:
 	@tools/deps.sh "$(CC)"
 
+# COMPILE_AS=user (set by grade-run for the autograder) compiles the files of
+# chapters/ as that user (tools/compile-as.sh).
+COMPILE_AS ?=
 $(BUILD)/obj/%.o: %.c | deps
 	@mkdir -p $(@D)
-	$(CC) $(CPPFLAGS) $(CFLAGS) -c $< -o $@
+	$(if $(and $(COMPILE_AS),$(filter chapters/%,$<)),tools/compile-as.sh $(COMPILE_AS) $@ $<) $(CC) $(CPPFLAGS) $(CFLAGS) \
+	    $(if $(and $(COMPILE_AS),$(filter chapters/%,$<)),,-c $< -o $@)
 
 define chapter_rules
-$(BUILD)/$1/render: $(call objs,chapters/$1/render.c $(call stages_upto,$1) $(COMMON_SRC))
+$(BUILD)/$1/render: $(call objs,chapters/$1/render.c) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(CC) $$(LDFLAGS) $$^ $$(LDLIBS) -o $$@
+	$$(call link,$$^) -o $$@
 
 $(OUT)/$1.png: $(BUILD)/$1/render
 	@mkdir -p $(OUT)
 	$(BUILD)/$1/render -o $$@
 
-$(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call stages_upto,$1) $(COMMON_SRC))
+$(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(CC) $$(LDFLAGS) $$^ $$(LDLIBS) -lcmocka -o $$@
+	$$(call link,$$^) -lcmocka -o $$@
+
+# The library of chapter $1's reference objects, for a student's copy.
+$(BUILD)/reference/lib$1.a: $(call objs,$(addprefix solutions/$1/,$(EXERCISES_$1)))
+	@mkdir -p $$(@D)
+	rm -f $$@ && ar rcs $$@ $$^
 endef
 $(foreach c,$(CHAPTERS),$(eval $(call chapter_rules,$c)))
 
@@ -115,10 +144,15 @@ check-skeletons:
 # ---- grading --------------------------------------------------------------------
 #
 # Chapter N is graded with a suite linked with the student's stage files of
-# chapter N (SOURCE=chapters) and the solutions of every other chapter, so an
-# early mistake costs points in its own chapter only.  tools/grade runs each
-# test alone (`SUITE --only NAME`) with a time limit.  SOURCE=solutions
-# grades the solutions instead, and fails unless they get full marks.
+# chapter N (SOURCE=chapters) and the reference versions of every other
+# chapter's exercise files (solutions/, or in a student's copy the libraries
+# in reference/), so an early mistake costs points in its own chapter only.
+# tools/grade runs each test alone (`SUITE --only NAME`) with a time limit.
+# SOURCE=reference (or SOURCE=solutions where they exist) grades the
+# reference instead, and fails unless it gets full marks.  The student's files
+# are compiled without -Werror (a warning is shown, it does not cost the
+# chapter), and also in the float build (REAL=float), which is reported for
+# each test but scores nothing (docs/instructor-guide.md).
 
 SOURCE ?= chapters
 TIMEOUT ?= 10
@@ -126,20 +160,31 @@ CHAPTER ?=
 GRADE_BUILD ?= build-grade$(compiler)
 GRADE_JSON ?= $(GRADE_BUILD)/results.json
 GRADE_JUNIT ?= $(GRADE_BUILD)/junit.xml
-ifeq ($(filter $(SOURCE),chapters solutions),)
-$(error SOURCE must be chapters or solutions, not '$(SOURCE)')
+GRADE_FLOAT ?= 1
+# GRADE_USER=name runs the tests as that user (the autograder; needs root);
+# GRADE_NOTES=file is shown above the results (the autograder's file list).
+GRADE_USER ?=
+GRADE_NOTES ?=
+ifeq ($(filter $(SOURCE),chapters solutions reference),)
+$(error SOURCE must be chapters, reference or solutions, not '$(SOURCE)')
+endif
+ifeq ($(SOURCE)$(HANDOUT),solutions1)
+$(error this copy has no solutions/: SOURCE=reference grades the compiled reference libraries)
 endif
 
 # The chapters to grade: those with a suite, or only CHAPTER (01 or 01_camera_rays).
-GRADE_CHAPTERS := $(foreach t,$(CHAPTER_TESTS),$(if $(or $(if $(CHAPTER),,all),$(filter $(CHAPTER),$(t:test_%=%) $(call num,$(t:test_%=%)))),$(t:test_%=%)))
+GRADE_CHAPTERS := $(strip $(foreach t,$(CHAPTER_TESTS),$(if $(or $(if $(CHAPTER),,all),$(filter $(CHAPTER),$(t:test_%=%) $(call num,$(t:test_%=%)))),$(t:test_%=%))))
 GRADE_DIR = $(BUILD)/grade-$(SOURCE)
-# The stage files of chapters 1..$1, the student's own for chapter $1 itself.
-grade_stages = $(foreach c,$(call upto,$1),$(call stage_src,$c,$(if $(and $(filter $c,$1),$(filter chapters,$(SOURCE))),1,0)))
+# The stage objects of chapters 1..$1, the student's own for chapter $1 itself.
+grade_stages = $(foreach c,$(call upto,$1),$(call stage_objs,$c,$(if $(and $(filter $c,$1),$(filter chapters,$(SOURCE))),1,0)))
+# What chapter $1's graded suite links, in words.
+REFERENCE_WORDS := $(if $(HANDOUT),the compiled reference libraries reference/double/,solutions/)
+grade_links = $1: links $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addprefix chapters/$1/,$(EXERCISES_$1)),no exercise files),the reference)$(if $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))), and the reference of $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))) from $(REFERENCE_WORDS))
 
 define grade_rules
-$(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call grade_stages,$1) $(COMMON_SRC))
+$(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call grade_stages,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(CC) $$(LDFLAGS) $$^ $$(LDLIBS) -lcmocka -o $$@
+	$$(call link,$$^) -lcmocka -o $$@
 endef
 $(foreach c,$(CHAPTER_TESTS:test_%=%),$(eval $(call grade_rules,$c)))
 
@@ -148,34 +193,70 @@ $(BUILD)/tools/%: $(BUILD)/obj/tools/%.o
 	$(CC) $^ -o $@
 
 grade:
+	@$(if $(GRADE_CHAPTERS),,echo "make grade: $(if $(CHAPTER),no chapter '$(CHAPTER)' has a test suite,no chapter has a test suite) (chapters with one: $(or $(CHAPTER_TESTS:test_%=%),none))" >&2; exit 2)
 	@$(MAKE) --no-print-directory -s BUILD=$(GRADE_BUILD) STUDENT=0 REAL=double SANITIZE=0 grade-run
 
-# Run by `grade` in the grading build.  A chapter whose reference suite (all
-# solutions) does not build is not graded; a student's suite that does not
-# compile fails that chapter's tests only.  The student's objects are always
-# rebuilt: a file copied in with an old time stamp is not taken for up to date.
+# Run by `grade` in the grading build.  A chapter whose reference suite does
+# not build is not graded; a student's suite that does not compile fails that
+# chapter's tests only.  The student's objects are always rebuilt: a file
+# copied in with an old time stamp is not taken for up to date.
+FLOAT_GRADE_DIR = $(BUILD)-float/grade-$(SOURCE)
 grade-run: $(BUILD)/tools/grade
-	@mkdir -p $(GRADE_DIR); set -- ; missing=""; \
+	@mkdir -p $(GRADE_DIR) $(FLOAT_GRADE_DIR); set -- ; missing=""; notes=$(GRADE_DIR)/notes.txt; \
+	{ $(if $(GRADE_NOTES),cat $(GRADE_NOTES);) true; } >$$notes; \
 	for c in $(GRADE_CHAPTERS); do \
 	    if ! $(MAKE) --no-print-directory -s $(BUILD)/tests/test_$$c >$(GRADE_DIR)/reference_$$c.log 2>&1; then \
 	        echo "$$c: not graded, its reference suite does not build (see $(GRADE_DIR)/reference_$$c.log)"; \
 	        missing="$$missing $$c"; continue; \
 	    fi; \
 	    rm -f $(GRADE_DIR)/test_$$c $(BUILD)/obj/chapters/$$c/*.o; \
-	    $(MAKE) --no-print-directory -s $(GRADE_DIR)/test_$$c >$(GRADE_DIR)/test_$$c.log 2>&1 || { \
+	    $(MAKE) --no-print-directory -s WERROR= COMPILE_AS=$(GRADE_USER) $(GRADE_DIR)/test_$$c >$(GRADE_DIR)/test_$$c.log 2>&1 || { \
 	        echo "$$c: the files of $(SOURCE)/$$c/ do not compile:"; tail -n 20 $(GRADE_DIR)/test_$$c.log; }; \
-	    set -- "$$@" $$c $(GRADE_DIR)/test_$$c $(BUILD)/tests/test_$$c $(GRADE_DIR)/test_$$c.log; \
+	    float=- float_log=-; \
+	    if [ "$(GRADE_FLOAT)" = 1 ]; then \
+	        float=$(FLOAT_GRADE_DIR)/test_$$c float_log=$(FLOAT_GRADE_DIR)/test_$$c.log; \
+	        rm -f $$float $(BUILD)-float/obj/chapters/$$c/*.o; \
+	        $(MAKE) --no-print-directory -s BUILD=$(BUILD)-float REAL=float WERROR= COMPILE_AS=$(GRADE_USER) $$float \
+	            >$$float_log 2>&1 || true; \
+	    fi; \
+	    set -- "$$@" $$c $(GRADE_DIR)/test_$$c $(BUILD)/tests/test_$$c $(GRADE_DIR)/test_$$c.log $$float $$float_log; \
 	done; \
-	echo "grading $(SOURCE)/ (each chapter with the solutions of the others; $(TIMEOUT) s per test)"; \
-	$(BUILD)/tools/grade --timeout $(TIMEOUT) --json $(GRADE_JSON) --junit $(GRADE_JUNIT) \
-	    $(if $(filter solutions,$(SOURCE)),--require-full) "$$@" || exit 1; \
+	$(foreach c,$(GRADE_CHAPTERS),echo "$(call grade_links,$c)" >>$$notes;) \
+	echo "grading $(SOURCE)/ ($(TIMEOUT) s per test$(if $(filter 1,$(GRADE_FLOAT)),; the float build is reported, not scored))"; \
+	cat $$notes; \
+	$(BUILD)/tools/grade --timeout $(TIMEOUT) --json $(GRADE_JSON) --junit $(GRADE_JUNIT) --notes $$notes \
+	    $(if $(GRADE_USER),--user $(GRADE_USER)) \
+	    $(if $(filter-out chapters,$(SOURCE)),--require-full) "$$@" || exit 1; \
 	echo "wrote $(GRADE_JSON) (Gradescope) and $(GRADE_JUNIT) (JUnit)"; \
 	if [ -n "$$missing" ]; then echo "not graded:$$missing"; exit 1; fi
 
-# A Gradescope autograder: the project, setup.sh and run_autograder in one zip.
+# ---- the student's copy and the autograder ---------------------------------------
+#
+# `make handout DEST=dir` writes the repository a student receives: no
+# solutions/, and the reference of every chapter's exercise files as compiled
+# libraries, reference/double/ and reference/float/ (tools/handout.sh).
+# `make autograder` zips such a copy with Gradescope's scripts
+# (tools/autograder.sh).  Neither holds a line of solution source; both check it.
+
+DEST ?=
+REFERENCE_CHAPTERS = $(foreach c,$(CHAPTERS),$(if $(EXERCISES_$c),$c))
+reference-libs: $(foreach c,$(REFERENCE_CHAPTERS),$(BUILD)/reference/lib$c.a)
+
+# The libraries are built without debugging information, in builds of their own.
+handout-libs:
+	@$(if $(HANDOUT),echo "make handout: this is already a student's copy (no solutions/)" >&2; exit 2)
+	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double OPT=-O2 BUILD=build-handout reference-libs
+	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=float OPT=-O2 BUILD=build-handout-float reference-libs
+
+handout: handout-libs
+	@$(if $(DEST),,echo "make handout: say where, DEST=dir" >&2; exit 2)
+	@tools/handout.sh "$(DEST)" build-handout/reference build-handout-float/reference
+
+# A Gradescope autograder: a student's copy, setup.sh and run_autograder in one zip.
 AUTOGRADER ?= $(GRADE_BUILD)/autograder$(if $(CHAPTER),-$(CHAPTER)).zip
-autograder:
-	@tools/autograder.sh $(AUTOGRADER) "$(CHAPTER)" "$(TIMEOUT)"
+autograder: handout-libs
+	@$(if $(CHAPTER),$(if $(GRADE_CHAPTERS),,echo "make autograder: no chapter '$(CHAPTER)' has a test suite" >&2; exit 2))
+	@tools/autograder.sh $(AUTOGRADER) "$(CHAPTER)" "$(TIMEOUT)" build-handout/reference build-handout-float/reference
 
 # ---- figures: the lecture figures of each chapter, rendered by its solution --------
 
@@ -189,7 +270,13 @@ FIG_NEEDS := $(if $(FIGURE_LISTS),$(shell awk 'NF >= 2 && $$1 !~ /^\#/ { n = spl
 FIG_DOUBLE := $(patsubst double/%,$(FIG_BUILD)/%/render,$(filter double/%,$(FIG_NEEDS)))
 FIG_FLOAT := $(patsubst float/%,$(FIG_BUILD)-float/%/render,$(filter float/%,$(FIG_NEEDS)))
 
+# Puts labelled panels side by side (the `panels` lines of figures.txt).
+$(BUILD)/tools/panels: $(BUILD)/obj/tools/panels.o
+	@mkdir -p $(@D)
+	$(CC) $^ -lstb -lm -o $@
+
 figure-renderers:
+	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_BUILD)/tools/panels
 	@$(if $(FIG_DOUBLE),$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_DOUBLE))
 	@$(if $(FIG_FLOAT),$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=float BUILD=$(FIG_BUILD)-float $(FIG_FLOAT))
 
@@ -242,16 +329,20 @@ help:
 	@echo "                     (Gradescope) and $(GRADE_JUNIT) (JUnit)"
 	@echo "  CHAPTER=01         grade one chapter;  SOURCE=solutions  grade the solutions (must be full marks)"
 	@echo "  TIMEOUT=10         seconds per test"
-	@echo "make autograder      a Gradescope autograder zip (CHAPTER=01: one chapter) into $(GRADE_BUILD)/"
+	@echo "  GRADE_FLOAT=0      without the float build (reported, not scored)"
+	@echo "make handout DEST=d  the student's copy: no solutions/, compiled reference libraries in reference/"
+	@echo "make autograder      a Gradescope autograder zip (CHAPTER=01: one chapter) into $(GRADE_BUILD)/,"
+	@echo "                     a student's copy plus setup.sh and run_autograder (docs/instructor-guide.md)"
 	@echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
 	@echo "make check           check-skeletons, check-snippets, check-figures: fail naming what is stale"
 	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
+	@echo "           REFERENCE=\"01 02\" (with STUDENT=1: these chapters from the reference)"
 	@echo "chapters: $(CHAPTERS)"
 
 clean:
-	rm -rf build build-* out out-student
+	rm -rf build build-* out out-student*
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -1,6 +1,6 @@
 /* display.h - from linear radiance to 8-bit display values.
  *
- * SCENES.md, measured from the course's reference images:
+ * docs/scenes.md, measured from the course's reference images:
  *     byte = round(255 * clamp((exposure * L)^(1/2.2), 0, 1))   per channel.
  */
 #ifndef RT_DISPLAY_H

@@ -107,7 +107,7 @@ static void print_help(const char *program, const char *summary, const knob *kno
     fprintf(out,
             "%s\n"
             "usage: %s [options] [scene.xml]\n"
-            "  scene.xml           a scene file (see SCENES.md); without one, the built-in scene\n"
+            "  scene.xml           a scene file (see docs/scenes.md); without one, the built-in scene\n"
             "  -o, --output FILE   the PNG to write\n"
             "  -s, --size WxH      image size in pixels (default: the scene's)\n"
             "  -n, --samples N     samples per pixel, a square number (default: the scene's, else 1)\n"

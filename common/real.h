@@ -1,6 +1,6 @@
 /* real.h - the one floating-point type of the renderer.
  *
- * Precision is the first accuracy knob (DESIGN.md, principle 6): `real` is
+ * Precision is the first accuracy knob (docs/design.md, "Knobs"): `real` is
  * double by default; `make REAL=float` builds every renderer and test with
  * float instead, side by side in build-float/.  Code never names float or
  * double directly; it uses `real` and the real_* functions below.

@@ -45,6 +45,12 @@ static int side_of(int samples)
 
 render_stats render_image(image *img, sample_fn sample, const void *scene, const render_options *opt)
 {
+    return render_image_mapped(img, sample, scene, opt, NULL);
+}
+
+render_stats render_image_mapped(image *img, sample_fn sample, const void *scene, const render_options *opt,
+                                 pixel_map_fn map)
+{
     const int nx = img->width, ny = img->height;
     const int n = side_of(opt->samples > 0 ? opt->samples : 1);
     const real weight = (real)1 / (real)(n * n);
@@ -64,10 +70,13 @@ render_stats render_image(image *img, sample_fn sample, const void *scene, const
                 for (int b = 0; b < n; b++) {
                     real du, dv;
                     render_sample_offset(opt->seed, i, j, a, b, n, &du, &dv);
-                    /* snippet: pixel_to_image */
-                    real u = ((real)i + du) / (real)nx; /* u = (i + 0.5)/n_x for one sample */
-                    real v = ((real)j + dv) / (real)ny; /* v = (j + 0.5)/n_y */
-                    /* end snippet */
+                    real u, v;
+                    if (map) {
+                        map(i, j, nx, ny, du, dv, &u, &v);
+                    } else {
+                        u = ((real)i + du) / (real)nx;
+                        v = ((real)j + dv) / (real)ny;
+                    }
                     sum = color_add(sum, sample(scene, u, v, row_rays));
                 }
             }

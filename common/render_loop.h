@@ -33,6 +33,17 @@ typedef struct {
     double seconds;
 } render_stats;
 
+/* The pixel-to-image mapping: the normalized image position (u, v) of the
+ * point (i + du, j + dv) of pixel (i, j) of an n_x x n_y image, where
+ * (du, dv) in [0,1)^2 is the sample's place inside the pixel ((0.5, 0.5), the
+ * centre, for one sample).  Chapter 01 implements it (pixel_to_image). */
+typedef void (*pixel_map_fn)(int i, int j, int nx, int ny, real du, real dv, real *u, real *v);
+
+/* render_image with the mapping `map`; NULL maps as pixel_to_image does,
+ * for the suites of common/, which link no chapter. */
+render_stats render_image_mapped(image *img, sample_fn sample, const void *scene, const render_options *opt,
+                                 pixel_map_fn map);
+
 /* Fills img (already sized) using opt->samples (0 counts as 1), opt->threads
  * and opt->seed.  Shows a progress line on stderr when stderr is a terminal,
  * the render takes more than about a second, and opt->quiet is false. */

@@ -56,7 +56,7 @@ int renderer_main(const renderer *r, int argc, char **argv)
     if (image_init(&img, width, height) != 0) {
         fprintf(stderr, "%s: out of memory for a %dx%d image\n", r->name, width, height);
     } else {
-        render_stats stats = render_image(&img, r->sample, prepared, &opt);
+        render_stats stats = render_image_mapped(&img, r->sample, prepared, &opt, r->pixel_to_image);
         if (png_write(&img, desc.exposure, output, err, sizeof err) != 0) {
             fprintf(stderr, "%s: %s\n", r->name, err);
         } else {

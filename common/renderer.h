@@ -31,6 +31,8 @@ typedef struct {
     void *(*prepare)(const scene *desc, char *err, size_t err_size);
     sample_fn sample;
     void (*release)(void *prepared);
+    /* Chapter 01's pixel_to_image; NULL: render_image_mapped's own. */
+    pixel_map_fn pixel_to_image;
 } renderer;
 
 int renderer_main(const renderer *r, int argc, char **argv);

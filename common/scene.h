@@ -1,6 +1,6 @@
-/* scene.h - the plain description of a scene file (SCENES.md).
+/* scene.h - the plain description of a scene file (docs/scenes.md).
  *
- * scene_load() reads and validates every element SCENES.md defines, even
+ * scene_load() reads and validates every element docs/scenes.md defines, even
  * those no chapter models yet, into these plain structs.  Each chapter reads
  * the parts its stage needs and names the parts it ignores (scene_features).
  * Every item keeps the line it was defined on, for error messages.
@@ -90,7 +90,7 @@ typedef struct {
 
 #define SCENE_MAX_IMAGE_SIDE 16384
 
-/* The defaults of SCENES.md: no surfaces, the default camera, exposure 1. */
+/* The defaults of docs/scenes.md: no surfaces, the default camera, exposure 1. */
 void scene_init(scene *s);
 
 /* Reads `path`.  Returns 0, or -1 with "path:line: problem" in err (and s

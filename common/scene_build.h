@@ -13,7 +13,7 @@ int scene_add_shader(scene *s, scene_shader shader);
 int scene_add_surface(scene *s, scene_surface surface);
 int scene_add_light(scene *s, scene_light light);
 
-/* A shader with SCENES.md's defaults: white, exponent 1, eta 1.5, no texture. */
+/* A shader with the defaults of docs/scenes.md: white, exponent 1, eta 1.5, no texture. */
 scene_shader scene_default_shader(shader_kind kind);
 
 #endif

@@ -1,4 +1,4 @@
-/* scene_xml.c - reads SCENES.md's XML format with expat.
+/* scene_xml.c - reads the XML scene format (docs/scenes.md) with expat.
  *
  * Every element is looked up in one table by its parent and its name
  * (case-insensitively: the course's files write both minPt and minpt).  An

@@ -1,9 +1,11 @@
 #include "suite.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 void check_close(double expected, double actual, double tolerance, const char *what, const char *file, int line)
 {
@@ -26,6 +28,66 @@ void check_vec3_close(vec3 expected, vec3 actual, double tolerance, const char *
             _fail(file, line);
         }
     }
+}
+
+const char *describe(const char *format, ...)
+{
+    static char buffers[8][600];
+    static int next;
+    char *out = buffers[next++ % 8];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(out, sizeof buffers[0], format, args);
+    va_end(args);
+    return out;
+}
+
+/* A suspect matches when it is as close to the got value as the expected
+ * value had to be, or within a few roundings of its own size. */
+static int near(double a, double b, double tolerance)
+{
+    double slack = fmax(4 * tolerance, 64 * (double)REAL_EPSILON * fmax(1, fmax(fabs(a), fabs(b))));
+    return fabs(a - b) <= slack || (a != a && b != b);
+}
+
+void check_close_why(double expected, double actual, double tolerance, const char *input, const char *hint,
+                     const suspect *suspects, size_t n, const char *file, int line)
+{
+    double error = actual - expected;
+    if (error <= tolerance && -error <= tolerance)
+        return;
+    const char *why = hint;
+    for (size_t k = 0; k < n; k++)
+        if (near(suspects[k].value, actual, tolerance)) {
+            why = suspects[k].mistake;
+            break;
+        }
+    print_error("%s\n    expected %.17g (within %.3g)\n    got      %.17g\n    likely mistake: %s\n", input, expected,
+                tolerance, actual, why);
+    _fail(file, line);
+}
+
+void check_vec3_why(vec3 expected, vec3 actual, double tolerance, const char *input, const char *hint,
+                    const suspect_vec3 *suspects, size_t n, const char *file, int line)
+{
+    const double e[3] = {expected.x, expected.y, expected.z}, a[3] = {actual.x, actual.y, actual.z};
+    int ok = 1;
+    for (int k = 0; k < 3; k++)
+        ok &= a[k] - e[k] <= tolerance && e[k] - a[k] <= tolerance;
+    if (ok)
+        return;
+    const char *why = hint;
+    for (size_t k = 0; k < n; k++) {
+        const vec3 s = suspects[k].value;
+        if (near(s.x, actual.x, tolerance) && near(s.y, actual.y, tolerance) && near(s.z, actual.z, tolerance)) {
+            why = suspects[k].mistake;
+            break;
+        }
+    }
+    print_error("%s\n    expected (%.17g, %.17g, %.17g) (within %.3g per component)\n"
+                "    got      (%.17g, %.17g, %.17g)\n    likely mistake: %s\n",
+                input, e[0], e[1], e[2], tolerance, a[0], a[1], a[2], why);
+    _fail(file, line);
 }
 
 const char *cornell_data(void)
@@ -59,10 +121,23 @@ int suite_main(const char *name, const graded_test *tests, size_t n, int argc, c
         free(plain);
         return 0;
     }
+    /* --report FD (tools/grade): read a token from FD now, and after the
+     * test write "TOKEN FAILED" to FD, so that a test passes only when the
+     * suite itself got to the end, never because tested code printed what
+     * cmocka prints or called exit(0). */
+    int report = -1;
+    char token[80] = "";
+    if (argc == 5 && strcmp(argv[3], "--report") == 0) {
+        report = atoi(argv[4]);
+        ssize_t got = read(report, token, sizeof token - 1);
+        token[got > 0 ? got : 0] = '\0';
+        token[strcspn(token, "\n")] = '\0';
+        argc = 3;
+    }
     if (argc == 3 && strcmp(argv[1], "--only") == 0)
         only = argv[2];
     else if (argc != 1) {
-        fprintf(stderr, "usage: %s [--list | --only TEST]\n", argv[0]);
+        fprintf(stderr, "usage: %s [--list | --only TEST [--report FD]]\n", argv[0]);
         free(plain);
         return 2;
     }
@@ -76,5 +151,12 @@ int suite_main(const char *name, const graded_test *tests, size_t n, int argc, c
     }
     int failed = _cmocka_run_group_tests(name, plain, count, NULL, NULL);
     free(plain);
+    if (report >= 0) {
+        fflush(NULL);
+        char line[128];
+        int n = snprintf(line, sizeof line, "%s %d\n", token, failed);
+        if (write(report, line, (size_t)n) != n)
+            return 1;
+    }
     return failed;
 }

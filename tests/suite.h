@@ -11,6 +11,9 @@
  *
  * The binary runs all its tests; `--list` prints "name points" a line and
  * `--only NAME` runs one test, which is how grading isolates each test.
+ * `--only NAME --report FD` (tools/grade) also reads a token from FD before
+ * the test and writes "TOKEN FAILED" there after it, which code under test
+ * cannot fake by printing cmocka's lines or calling exit(0).
  *
  * Debian's cmocka 1.1.5 has no assert for doubles with a tolerance:
  * assert_close() prints the expected and actual values and the tolerance.
@@ -48,6 +51,34 @@ void check_close(double expected, double actual, double tolerance, const char *w
 #define assert_vec3_close(expected, actual, tolerance)                                                             \
     check_vec3_close((expected), (actual), (double)(tolerance), #actual, __FILE__, __LINE__)
 void check_vec3_close(vec3 expected, vec3 actual, double tolerance, const char *what, const char *file, int line);
+
+/* A likely mistake and the value it would give. */
+typedef struct {
+    double value;
+    const char *mistake;
+} suspect;
+typedef struct {
+    vec3 value;
+    const char *mistake;
+} suspect_vec3;
+
+/* Like assert_close and assert_vec3_close, for a student's function: on
+ * failure the message names the input (a string), the expected value, the
+ * value got, and the likely mistake: the first suspect whose value the got
+ * value matches, else `hint`.  n suspects (0 and NULL for none). */
+#define assert_close_why(expected, actual, tolerance, input, hint, suspects, n)                                     \
+    check_close_why((double)(expected), (double)(actual), (double)(tolerance), input, hint, suspects, n, __FILE__, \
+                    __LINE__)
+void check_close_why(double expected, double actual, double tolerance, const char *input, const char *hint,
+                     const suspect *suspects, size_t n, const char *file, int line);
+#define assert_vec3_why(expected, actual, tolerance, input, hint, suspects, n)                                      \
+    check_vec3_why((expected), (actual), (double)(tolerance), input, hint, suspects, n, __FILE__, __LINE__)
+void check_vec3_why(vec3 expected, vec3 actual, double tolerance, const char *input, const char *hint,
+                    const suspect_vec3 *suspects, size_t n, const char *file, int line);
+
+/* printf into one of eight static buffers in turn: the input of a check,
+ * for its message, which may be built from the one before. */
+const char *describe(const char *format, ...) __attribute__((format(printf, 1, 2)));
 
 /* The folder of the Cornell corpus (../shared/cornell/sp17-ray1/data, or
  * $RT_CORNELL), or NULL when it is absent: tests that use it skip then.

@@ -5,6 +5,7 @@
  * far, small spheres where the robust formula must stay right.  Tolerances
  * are in units of REAL_EPSILON, so the float build runs the same tests.
  */
+#include <math.h>
 #include <stdio.h>
 
 #include "02_sphere/sphere.h"
@@ -20,22 +21,36 @@ static ray make_ray(real px, real py, real pz, real dx, real dy, real dz)
     return (ray){vec3_make(px, py, pz), vec3_make(dx, dy, dz)};
 }
 
+static const char *describe_ray(const sphere *s, ray r);
+static const char *formula_name(sphere_formula f);
+
 /* Asserts a hit at t_expected with normal n_expected. */
 static void expect_hit(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula, real t_expected,
                        vec3 n_expected)
 {
     real t = -1;
     vec3 n = {0, 0, 0};
-    assert_true(sphere_intersect(s, r, t_min, t_max, formula, &t, &n));
-    assert_close(t_expected, t, TOL(t_expected));
-    assert_vec3_close(n_expected, n, TOL(1));
+    const char *in = describe("sphere_intersect(%s, (%g, %g), %s)", describe_ray(s, r), (double)t_min, (double)t_max,
+                              formula_name(formula));
+    if (!sphere_intersect(s, r, t_min, t_max, formula, &t, &n))
+        fail_msg("%s\n    expected a hit at t = %.17g\n    got      no hit\n    likely mistake: %s", in,
+                 (double)t_expected,
+                 "the roots (run test_roots_*), or the window: the nearest root with t_min < t < t_max (test_nearest_root)");
+    assert_close_why(t_expected, t, TOL(t_expected), describe("%s: t", in),
+                     "the roots (test_roots_*) or the choice of root (test_nearest_root)", NULL, 0);
+    const suspect_vec3 inward[] = {{vec3_neg(n_expected), "the normal points inwards: n = (x - c) / |x - c|"}};
+    assert_vec3_why(n_expected, n, TOL(1), describe("%s: n", in), "n = (x - c) / |x - c|", inward, 1);
 }
 
 static void expect_miss(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula)
 {
     real t = 12345;
     vec3 n = {0, 0, 0};
-    assert_false(sphere_intersect(s, r, t_min, t_max, formula, &t, &n));
+    if (sphere_intersect(s, r, t_min, t_max, formula, &t, &n))
+        fail_msg("sphere_intersect(%s, (%g, %g), %s)\n    expected no hit\n    got      t = %.17g\n"
+                 "    likely mistake: a negative discriminant is a miss, and a root at or outside (t_min, t_max) is "
+                 "no hit",
+                 describe_ray(s, r), (double)t_min, (double)t_max, formula_name(formula), (double)t);
 }
 
 /* ---- the cases, for either formula ---------------------------------------- */
@@ -110,6 +125,351 @@ static void scaled_case(sphere_formula f)
         assert_true(sphere_intersect(&s, (ray){p, vec3_scale(d, alphas[k])}, 0, REAL_INFINITY, f, &t, &n));
         assert_close(t1, t * alphas[k], 16 * REAL_EPSILON * t1); /* a few roundings in each of t and t1 */
         assert_vec3_close(n1, n, 16 * REAL_EPSILON);
+    }
+}
+
+/* ---- the parts, each alone ---------------------------------------------------
+ *
+ * sphere_roots, sphere_nearest_root and sphere_normal are tested on their
+ * own, so that a mistake in one costs its own tests.  A failure names the
+ * input, the expected value, the value got and the likely mistake. */
+
+#define N(a) (sizeof(a) / sizeof((a)[0]))
+
+static const char *formula_name(sphere_formula f) { return f == SPHERE_TEXTBOOK ? "textbook" : "robust"; }
+
+static const char *describe_ray(const sphere *s, ray r)
+{
+    return describe("sphere c = (%g, %g, %g), R = %g; ray p = (%g, %g, %g), d = (%g, %g, %g)", (double)s->center.x,
+                    (double)s->center.y, (double)s->center.z, (double)s->radius, (double)r.p.x, (double)r.p.y,
+                    (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z);
+}
+
+/* The roots of a*t^2 + 2*b*t + c = 0 as (near, far, 0), by the quadratic
+ * formula in long double, or (NaN, NaN, 0) when there are none: how the
+ * likely mistakes below would come out. */
+static vec3 pair(long double a, long double b, long double c)
+{
+    long double disc = b * b - a * c;
+    if (!(disc >= 0))
+        return vec3_make(((real)NAN), ((real)NAN), 0);
+    long double root = sqrtl(disc);
+    long double t0 = (-b - root) / a, t1 = (-b + root) / a;
+    return vec3_make((real)fminl(t0, t1), (real)fmaxl(t0, t1), 0);
+}
+
+/* The stable pair (5) from A, B, C and a discriminant, sorted as
+ * (near, far, 0): with a wrong discriminant, how a mistake comes out. */
+static vec3 stable(long double A, long double B, long double C, long double disc)
+{
+    if (!(disc >= 0))
+        return vec3_make(((real)NAN), ((real)NAN), 0);
+    long double q = -(B + (B < 0 ? -1 : 1) * sqrtl(disc));
+    long double t0 = q / A, t1 = C / q;
+    return vec3_make((real)fminl(t0, t1), (real)fmaxl(t0, t1), 0);
+}
+
+/* sphere_roots(s, r) sorted as (near, far, 0); *found: what it returned. */
+static vec3 roots_got(const sphere *s, ray r, sphere_formula f, bool *found)
+{
+    real t0 = ((real)NAN), t1 = ((real)NAN);
+    *found = sphere_roots(s, r, f, &t0, &t1);
+    return vec3_make(real_fmin(t0, t1), real_fmax(t0, t1), 0);
+}
+
+/* The roots of (1) from the test's own long double arithmetic on the same
+ * inputs, and the values the usual mistakes give. */
+static void expect_roots(const sphere *s, ray r, sphere_formula f, double tolerance)
+{
+    long double fx = (long double)r.p.x - s->center.x, fy = (long double)r.p.y - s->center.y,
+                fz = (long double)r.p.z - s->center.z;
+    long double A = (long double)r.d.x * r.d.x + (long double)r.d.y * r.d.y + (long double)r.d.z * r.d.z;
+    long double B = r.d.x * fx + r.d.y * fy + r.d.z * fz;
+    long double R2 = (long double)s->radius * s->radius;
+    long double C = fx * fx + fy * fy + fz * fz - R2;
+    vec3 expected = pair(A, B, C);
+    long double q = -(B + (B < 0 ? -1 : 1) * sqrtl(B * B - A * C));
+    const suspect_vec3 mistakes[] = {
+        {stable(A, B, C, (B * B - A * C) / A), "disc = A (R^2 - l.l): the factor A is missing"},
+        {stable(A, B, C, -A * C - 3 * B * B), "l = f + t_m d with t_m = -B / A: the sign of t_m is wrong"},
+        {vec3_make((real)fminl(q / A, q / C), (real)fmaxl(q / A, q / C), 0),
+         "t1 = C / q (the product of the roots is C / A), not q / C"},
+        {vec3_make((real)(q / A), (real)(q / A), 0), "t1 not computed: t1 = C / q"},
+        {pair(A, -B, C), "the roots are negated: f = p - c (not c - p), and t = (-B -+ sqrt(B^2 - A C)) / A"},
+        {pair(1, B, C), "A left out: d is not a unit vector here, A = d.d (the lecture: \"we won't assume this\")"},
+        {pair(A, B, C + R2 - s->radius), "C = f.f - R^2, not f.f - R"},
+        {pair(A, B / 2, C / 4), "the factor 2 of B mixed up: with B = d.f the equation is A t^2 + 2 B t + C = 0"},
+        {vec3_scale(expected, (real)0.5), "divided by 2A: with B = d.f (half the usual b) the roots are (-B -+ sqrt(disc)) / A"},
+        {pair(A, B, C * A), "disc = A (R^2 - l.l): R^2 - l.l times A, not C times A"},
+        {vec3_make(0, 0, 0), "no real roots reported as a double root at 0, or roots not written"},
+    };
+    const char *in = describe("sphere_roots(%s, %s) as (near, far, 0)", describe_ray(s, r), formula_name(f));
+    bool found;
+    vec3 got = roots_got(s, r, f, &found);
+    if (expected.x != expected.x) {
+        if (found)
+            fail_msg("%s\n    expected false: no real root (the line misses)\n    got      true, roots %.17g and %.17g\n"
+                     "    likely mistake: a negative discriminant means a miss: return false when !(disc >= 0)",
+                     in, (double)got.x, (double)got.y);
+        return;
+    }
+    if (!found)
+        fail_msg("%s\n    expected roots %.17g and %.17g\n    got      false (no roots)\n"
+                 "    likely mistake: the discriminant's sign: disc = B^2 - A C (textbook) or A (R^2 - l.l) (robust)",
+                 in, (double)expected.x, (double)expected.y);
+    assert_vec3_why(expected, got, tolerance, in, "A = d.d, B = d.f, C = f.f - R^2 with f = p - c", mistakes,
+                    N(mistakes));
+}
+
+/* Rays in general position, off the origin, with a non-unit d: roots within
+ * 16 eps of the largest quantity involved (|f|/|d| about 6 here). */
+static void roots_case(sphere_formula f)
+{
+    const sphere s = {{(real)1.25, (real)-2.5, (real)0.75}, (real)1.5};
+    const ray rays[] = {
+        {{4, 1, 3}, {(real)-0.6, (real)-0.7, (real)-0.4}},      /* from outside, through */
+        {{(real)1.5, (real)-2, 1}, {(real)0.3, (real)0.8, (real)-0.5}}, /* from inside */
+        {{4, 1, 3}, {(real)0.6, (real)0.7, (real)0.4}},          /* away: both roots negative */
+        {{4, 1, 3}, {(real)-0.6, (real)0.7, (real)-0.4}},        /* a miss */
+        {{(real)-7, (real)5, (real)-3}, {(real)2.5, (real)-2.25, 1}},
+    };
+    for (size_t k = 0; k < N(rays); k++)
+        expect_roots(&s, rays[k], f, 16 * REAL_EPSILON * 8);
+}
+
+static void test_roots_robust(void **state) { (void)state; roots_case(SPHERE_ROBUST); }
+static void test_roots_textbook(void **state) { (void)state; roots_case(SPHERE_TEXTBOOK); }
+
+/* B = d.f = 0: the ray's origin is the point of its line closest to c.
+ * Every number here is exact: f = (0.5, 0.25, 0), d = (-0.25, 0.5, 3),
+ * d.f = 0, A = 9.3125, C = -1.9375, roots +-sqrt(1.9375 / 9.3125). */
+static void test_b_zero_sign(void **state)
+{
+    (void)state;
+    const sphere s = {{(real)0.25, (real)-0.5, 1}, (real)1.5};
+    const ray r = {{(real)0.75, (real)-0.25, 1}, {(real)-0.25, (real)0.5, 3}};
+    const double tau = sqrt(1.9375 / 9.3125);
+    const suspect_vec3 sign_zero[] = {
+        {vec3_make(-REAL_INFINITY, 0, 0), "sign(0) = 0: with B = 0, q = -(B + sign(B) sqrt(disc)) is 0 and t1 = C / q "
+                                          "divides by zero; take sign(B) = +1 when B = 0"},
+        {vec3_make(0, REAL_INFINITY, 0), "sign(0) = 0: with B = 0, q is 0 and C / q divides by zero; take sign(0) = +1"},
+        {vec3_make(0, 0, 0), "sign(0) = 0: with B = 0, q is 0 (and t1 = t0 = 0); take sign(B) = +1 when B = 0"},
+    };
+    const char *in = describe("sphere_roots(%s, robust) as (near, far, 0), where B = d.f = 0", describe_ray(&s, r));
+    /* sqrt and two divisions: a few roundings of tau */
+    bool found;
+    vec3 got = roots_got(&s, r, SPHERE_ROBUST, &found);
+    if (!found)
+        fail_msg("%s\n    expected roots -+%.17g\n    got      false (no roots)\n    likely mistake: "
+                 "disc = A (R^2 - l.l) with l = f + t_m d, t_m = -B / A: here t_m = 0 and l = f",
+                 in, tau);
+    assert_vec3_why(vec3_make((real)-tau, (real)tau, 0), got, 8 * REAL_EPSILON * tau, in,
+                    "q = -(B + sign(B) sqrt(disc)), t0 = q / A, t1 = C / q", sign_zero, N(sign_zero));
+    real t = 0;
+    vec3 n;
+    bool hit = sphere_intersect(&s, r, 0, REAL_INFINITY, SPHERE_ROBUST, &t, &n);
+    const suspect none[] = {{0, "sign(0) = 0 gave no usable root: take sign(B) = +1 when B = 0"}};
+    assert_close_why(tau, hit ? t : 0, 8 * REAL_EPSILON * tau,
+                     describe("sphere_intersect(%s, (0, inf), robust): t", describe_ray(&s, r)),
+                     "the far root, t = sqrt(-C / A)", none, 1);
+}
+
+/* A ray that starts near the sphere has one small root.  The stable pair
+ * keeps its digits; (-B + sqrt(disc)) / A subtracts two nearly equal
+ * numbers and loses them.  Here f = (1, 1.5, 3 + 2^-10), so C = f.f - R^2 =
+ * 6 2^-10 + 2^-20 exactly (24 significant bits: exact in float too), and
+ * the small root is about C / 2|B|.  The stable root errs by a few roundings
+ * of itself (B, disc, q, C / q): 16 eps relative. */
+static void test_small_root_near_surface(void **state)
+{
+    (void)state;
+    const sphere s = {{(real)0.25, (real)-0.5, 1}, (real)3.5};
+    const vec3 f = {1, (real)1.5, 3 + (real)0x1p-10};
+    const vec3 p = vec3_add(s.center, f);
+    const vec3 dirs[] = {{(real)-0.3, (real)-0.2, (real)-0.9}, {(real)0.1, (real)-0.9, (real)-0.35},
+                         {(real)0.3, (real)0.2, (real)0.9}, {(real)-0.2, (real)-0.5, (real)-0.1}};
+    for (size_t k = 0; k < N(dirs); k++) {
+        ray r = {p, dirs[k]};
+        long double A = (long double)r.d.x * r.d.x + (long double)r.d.y * r.d.y + (long double)r.d.z * r.d.z;
+        long double B = (long double)r.d.x * f.x + (long double)r.d.y * f.y + (long double)r.d.z * f.z;
+        long double C = 6.0L / 1024 + 1.0L / 1048576;
+        long double q = -(B + (B < 0 ? -1 : 1) * sqrtl(B * B - A * C));
+        long double small = C / q;
+        real t0, t1;
+        if (!sphere_roots(&s, r, SPHERE_ROBUST, &t0, &t1))
+            fail_msg("sphere_roots(%s, robust): no roots, expected a small root %.17Lg", describe_ray(&s, r), small);
+        real got = fabsl((long double)t0) < fabsl((long double)t1) ? t0 : t1;
+        const suspect cancel[] = {
+            {(double)((-B + (B < 0 ? 1 : -1) * -sqrtl(B * B - A * C)) / A),
+             "the small root computed as (-B -+ sqrt(disc)) / A cancels: use t1 = C / q"},
+        };
+        assert_close_why((double)small, got, 16 * REAL_EPSILON * fabsl(small),
+                         describe("sphere_roots(%s, robust): the small root, p just off the sphere (C = %.6g)",
+                                  describe_ray(&s, r), (double)C),
+                         "the stable pair: q = -(B + sign(B) sqrt(disc)), t0 = q / A, t1 = C / q, so that neither "
+                         "root subtracts nearly equal numbers",
+                         cancel, N(cancel));
+    }
+}
+
+/* ---- the nearest root in the open window ------------------------------------ */
+
+#define NONE ((real)NAN)
+
+static void expect_nearest(real t0, real t1, real t_min, real t_max, real expected, const suspect *mistakes,
+                           size_t n)
+{
+    real t = ((real)NAN);
+    bool hit = sphere_nearest_root(t0, t1, t_min, t_max, &t);
+    const char *in = describe("sphere_nearest_root(t0 = %.9g, t1 = %.9g, t_min = %.9g, t_max = %.9g)", (double)t0,
+                              (double)t1, (double)t_min, (double)t_max);
+    const char *why = n ? mistakes[0].mistake : "the window is open: t_min < t < t_max";
+    if (expected != expected) {
+        if (hit)
+            fail_msg("%s\n    expected no hit\n    got      true, t = %.17g\n    likely mistake: %s", in, (double)t,
+                     why);
+        return;
+    }
+    if (!hit)
+        fail_msg("%s\n    expected t = %.17g\n    got      false (no hit)\n    likely mistake: %s", in,
+                 (double)expected, n > 1 ? mistakes[1].mistake : why);
+    assert_close_why(expected, t, 0, in, "the nearest root inside (t_min, t_max)", mistakes, n);
+}
+
+static void test_nearest_root(void **state)
+{
+    (void)state;
+    const real inf = REAL_INFINITY;
+    const suspect far[] = {{6, "took the far root: the nearest root inside the window is the hit"}};
+    expect_nearest(4, 6, 0, inf, 4, far, 1);
+    const suspect unsorted[] = {{6, "assumed t0 is the nearer root: the formulas do not sort them, take min(t0, t1)"}};
+    expect_nearest(6, 4, 0, inf, 4, unsorted, 1);
+    const suspect inside[] = {{-1, "took a root before t_min: the near root is behind the ray's origin"},
+                              {0, "no hit when the near root is before t_min: then the far root is the hit (p inside)"}};
+    expect_nearest(-1, 1, 0, inf, 1, inside, N(inside));
+    expect_nearest(1, -1, 0, inf, 1, inside, N(inside));
+    const suspect at_min[] = {{4, "accepted t == t_min: the window (t_min, t_max) is open; compare with t_min itself, not 0 or a "
+                                   "fixed epsilon"},
+                              {0, "no hit: the near root equals t_min, so the far root is the hit"}};
+    expect_nearest(4, 6, 4, 10, 6, at_min, N(at_min));
+    /* a ray that starts on the sphere going in: roots 0 and 2.5 */
+    const suspect start[] = {{0, "accepted t == t_min = 0: a ray that starts on the sphere would hit it where it "
+                                 "starts; the window is open"},
+                             {0, "no hit: the root 0 is at t_min, the far root 2.5 is the hit"}};
+    expect_nearest(0, (real)2.5, 0, inf, (real)2.5, start, N(start));
+    expect_nearest((real)2.5, 0, 0, inf, (real)2.5, start, N(start));
+    /* ... and going out: roots -2.5 and -0 */
+    const suspect out[] = {{0, "accepted t == t_min = 0 (or -0 == 0): a ray leaving the sphere from its surface "
+                               "does not hit it; the window is open"}};
+    expect_nearest((real)-2.5, -(real)0, 0, inf, NONE, out, 1);
+    expect_nearest((real)-2.5, 0, 0, inf, NONE, out, 1);
+    const suspect at_max[] = {{0, "accepted t == t_max (or t_max ignored): the window (t_min, t_max) is open"}};
+    expect_nearest(4, 6, 0, 4, NONE, at_max, 1);
+    const suspect beyond[] = {{0, "t_max ignored: a root beyond t_max is no hit (a shadow ray stops at the light)"}};
+    expect_nearest(4, 6, 0, 3, NONE, beyond, 1);
+    const suspect before[] = {{0, "a root at or before t_min taken: both roots are outside the window"}};
+    expect_nearest(4, 6, 6, inf, NONE, before, 1);
+    const suspect between[] = {{0, "the window lies between the roots: neither is inside it"}};
+    expect_nearest(4, 6, (real)4.5, (real)5.5, NONE, between, 1);
+    const suspect tangent[] = {{0, "a double root (a tangent ray) is a hit"}};
+    expect_nearest(5, 5, 0, inf, 5, tangent, 1);
+    /* near the ends of the range: a tiny root is still after t_min = 0, a huge one before t_max */
+    const suspect fixed[] = {{3, "compared with a fixed epsilon instead of t_min"},
+                             {0, "no hit: a tiny positive root is after t_min = 0"}};
+    expect_nearest((real)1e-30, 3, 0, inf, (real)1e-30, fixed, N(fixed));
+    const suspect huge[] = {{(real)2e30, "took the far root"}, {0, "no hit: both roots are before t_max = inf"}};
+    expect_nearest((real)2e30, (real)1e30, 0, inf, (real)1e30, huge, N(huge));
+    expect_nearest((real)1e30, (real)2e30, (real)1.5e30, inf, (real)2e30, at_min, 1);
+}
+
+/* ---- rays that start on the sphere -------------------------------------------
+ *
+ * f = p - c is a multiple of (2, 3, 6)/7 or (3, 0, 4)/5 with f.f = R^2
+ * exactly, so C = 0 and both formulas give the root t = 0 exactly (the
+ * stable pair as C / q, the textbook one as -B + sqrt(B^2) with sqrt(B^2) =
+ * |B| exactly).  Going in, the hit is the far root t = -2B/A (a few
+ * roundings: 8 eps relative); going out there is none. */
+static void surface_case(sphere_formula formula)
+{
+    const struct {
+        vec3 c;
+        real R;
+        vec3 f;
+    } spheres[] = {{{(real)0.25, (real)-0.5, 1}, (real)3.5, {1, (real)1.5, 3}},
+                   {{(real)-1e4, (real)2e4, (real)0.5}, (real)2.5, {(real)1.5, 0, 2}}};
+    const vec3 dirs[] = {{(real)-0.3, (real)-0.2, (real)-0.9}, {(real)0.6, (real)-0.7, (real)-0.2},
+                         {(real)0.3, (real)0.25, (real)0.9}, {(real)-0.5, (real)0.8, (real)0.4}};
+    for (size_t k = 0; k < N(spheres); k++) {
+        const sphere s = {spheres[k].c, spheres[k].R};
+        const vec3 p = vec3_add(s.center, spheres[k].f);
+        for (size_t m = 0; m < N(dirs); m++) {
+            ray r = {p, dirs[m]};
+            real B = vec3_dot(r.d, spheres[k].f), A = vec3_dot(r.d, r.d);
+            real t = 12345;
+            vec3 n;
+            bool hit = sphere_intersect(&s, r, 0, REAL_INFINITY, formula, &t, &n);
+            const char *in = describe("sphere_intersect(%s, (0, inf), %s), p on the sphere, going %s", describe_ray(&s, r),
+                                      formula_name(formula), B < 0 ? "in" : "out");
+            if (B > 0) {
+                if (hit)
+                    fail_msg("%s\n    expected no hit\n    got      t = %.17g\n    likely mistake: %s", in, (double)t,
+                             t == 0 ? "accepted t == t_min = 0: the window is open" : "a root before t_min taken");
+                continue;
+            }
+            real expected = -2 * B / A;
+            const suspect at_start[] = {{0, "accepted the root t = 0 == t_min: the ray would hit the sphere where it starts"},
+                                        {12345, "no hit: going in, the far root -2B/A is the hit"}};
+            assert_close_why(expected, hit ? t : 12345, 8 * REAL_EPSILON * expected, in, "the far root -2B/A",
+                             at_start, N(at_start));
+        }
+    }
+}
+
+static void test_ray_on_surface(void **state)
+{
+    (void)state;
+    surface_case(SPHERE_ROBUST);
+    surface_case(SPHERE_TEXTBOOK);
+}
+
+/* ---- the normal ---------------------------------------------------------------- */
+
+/* Points near spheres far from the origin.  A hit point is on the sphere only
+ * up to rounding, so |x - c| is R only roughly: here x is put 0.1% off the
+ * sphere on purpose, and n must still be a unit vector (dividing by the
+ * computed length: 4 eps), pointing out of the sphere. */
+static void test_normal_unit_far_from_origin(void **state)
+{
+    (void)state;
+    const sphere spheres[] = {{{(real)300.5, (real)-700.25, (real)500.125}, (real)0.5},
+                              {{(real)-2e4, (real)3e4, (real)1e4}, (real)1e3},
+                              {{0, 0, 0}, (real)1e-3}};
+    for (size_t k = 0; k < N(spheres); k++) {
+        const sphere *s = &spheres[k];
+        for (int m = 0; m < 27; m++) {
+            if (m == 13)
+                continue;
+            vec3 e = vec3_normalize(vec3_make((real)(m % 3 - 1), (real)(m / 3 % 3 - 1), (real)(m / 9 - 1)));
+            vec3 x = vec3_add(s->center, vec3_scale(e, s->radius * (real)1.001));
+            vec3 n = sphere_normal(s, x);
+            vec3 m_ = vec3_sub(x, s->center);
+            const char *in = describe("sphere_normal(c = (%g, %g, %g), R = %g; x = c + 1.001 R (%.4f, %.4f, %.4f))",
+                                      (double)s->center.x, (double)s->center.y, (double)s->center.z,
+                                      (double)s->radius, (double)e.x, (double)e.y, (double)e.z);
+            const suspect_vec3 wrong[] = {
+                {vec3_scale(m_, 1 / s->radius), "divided by R: x is on the sphere only up to rounding, so |x - c| is not "
+                                                "exactly R; divide by the computed length |x - c|"},
+                {vec3_neg(vec3_normalize(m_)), "the normal points inwards: n = (x - c) / |x - c|, not c - x"},
+                {vec3_normalize(x), "the centre forgotten: n = (x - c) / |x - c|, not x / |x|"},
+                {m_, "not normalized: n = (x - c) / |x - c|"},
+            };
+            /* x - c is exact to within eps |c|; its direction then within 4 eps */
+            double tol = 4 * REAL_EPSILON * (1 + vec3_max_abs(s->center) / s->radius);
+            assert_vec3_why(vec3_normalize(m_), n, tol, describe("%s: n", in), "n = (x - c) / |x - c|", wrong,
+                            N(wrong));
+            assert_close_why(1, vec3_length(n), 4 * REAL_EPSILON, describe("%s: |n|", in),
+                             "n must be a unit vector: divide by |x - c|", NULL, 0);
+        }
     }
 }
 
@@ -261,6 +621,13 @@ static void test_far_spheres(void **state)
 }
 
 static const graded_test tests[] = {
+    GRADED(test_roots_robust, 2),
+    GRADED(test_roots_textbook, 2),
+    GRADED(test_b_zero_sign, 2),
+    GRADED(test_small_root_near_surface, 2),
+    GRADED(test_nearest_root, 3),
+    GRADED(test_ray_on_surface, 2),
+    GRADED(test_normal_unit_far_from_origin, 2),
     GRADED(test_hit, 2),
     GRADED(test_miss, 1),
     GRADED(test_tangent, 1),

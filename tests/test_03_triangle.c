@@ -16,6 +16,9 @@
  * there.  Tests whose data are small dyadic numbers compute exactly and
  * check exact values.
  */
+#include <math.h>
+#include <stdint.h>
+
 #include "suite.h"
 
 #include "03_triangle/cracks.h"
@@ -43,18 +46,28 @@ static vec3 point_at(const triangle *tri, real beta, real gamma)
                                      vec3_scale(vec3_sub(tri->c, tri->a), gamma)));
 }
 
-/* Asserts a hit of r at (t, beta, gamma) within tol. */
+static void print_triangle(const char *what, const triangle *tri, ray r);
+
+/* Asserts a hit of r at (t, beta, gamma) within tol; on failure prints the
+ * triangle, the ray, what was expected, what came back and the likely
+ * mistake. */
 static void expect_hit(const triangle *tri, ray r, triangle_test test, real t, real beta, real gamma, real tol)
 {
     triangle_hit h;
     if (!triangle_intersect(tri, r, 0, REAL_INFINITY, test, &h)) {
-        print_error("--triangle=%s: expected a hit at beta %g, gamma %g\n", test_names[test], (double)beta,
-                    (double)gamma);
-        fail();
+        print_triangle("input", tri, r);
+        fail_msg("--triangle=%s: expected a hit at t %g, beta %g, gamma %g; got a miss (are the edges closed, "
+                 "beta >= 0, gamma >= 0, beta + gamma <= 1, and is the window t_min < t < t_max?)",
+                 test_names[test], (double)t, (double)beta, (double)gamma);
     }
-    assert_close(t, h.t, tol * real_fmax(1, real_abs(t)));
-    assert_close(beta, h.beta, tol);
-    assert_close(gamma, h.gamma, tol);
+    real t_tol = tol * real_fmax(1, real_abs(t));
+    if (!(real_abs(h.t - t) <= t_tol && real_abs(h.beta - beta) <= tol && real_abs(h.gamma - gamma) <= tol)) {
+        print_triangle("input", tri, r);
+        fail_msg("--triangle=%s: expected t %.9g, beta %.9g, gamma %.9g (tolerance %g); got t %.9g, beta %.9g, "
+                 "gamma %.9g (a column of a determinant replaced by the wrong vector, or beta and gamma swapped?)",
+                 test_names[test], (double)t, (double)beta, (double)gamma, (double)tol, (double)h.t,
+                 (double)h.beta, (double)h.gamma);
+    }
 }
 
 /* Asserts a miss that leaves *hit untouched. */
@@ -62,11 +75,14 @@ static void expect_miss(const triangle *tri, ray r, real t_min, real t_max, tria
 {
     triangle_hit h = {-7, -7, -7};
     if (triangle_intersect(tri, r, t_min, t_max, test, &h)) {
-        print_error("--triangle=%s: expected a miss, got t %g, beta %g, gamma %g\n", test_names[test], (double)h.t,
-                    (double)h.beta, (double)h.gamma);
-        fail();
+        print_triangle("input", tri, r);
+        fail_msg("--triangle=%s: window (%g, %g): expected a miss, got t %g, beta %g, gamma %g (a comparison "
+                 "that lets t == t_min, t == t_max or a point outside an edge through, or M not checked?)",
+                 test_names[test], (double)t_min, (double)t_max, (double)h.t, (double)h.beta, (double)h.gamma);
     }
-    assert_true(h.t == -7 && h.beta == -7 && h.gamma == -7);
+    if (!(h.t == -7 && h.beta == -7 && h.gamma == -7))
+        fail_msg("--triangle=%s: a miss wrote into *hit (t %g): write it only on a hit", test_names[test],
+                 (double)h.t);
 }
 
 /* det[c0 c1 c2] of the identity is 1; swapping two columns changes its sign. */
@@ -312,6 +328,243 @@ static void test_normal(void **state)
     }
 }
 
+/* ---- data whose arithmetic is not exact ------------------------------------------------ */
+
+/* A small deterministic generator (xorshift64), so that every run and every
+ * build sees the same "random" data. */
+static uint64_t rng_state;
+static real uniform(void) /* in [0, 1) */
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return (real)((double)(rng_state >> 11) / 9007199254740992.0);
+}
+static real symmetric(void) { return 2 * uniform() - 1; }
+
+/* A random frame: an orthonormal basis u, v, w (rounded), a scale and an
+ * offset, so that local (x, y, z) becomes offset + scale (x u + y v + z w). */
+typedef struct {
+    vec3 u, v, w, offset;
+    real scale;
+} frame;
+
+static frame random_frame(real scale, real distance)
+{
+    vec3 w = vec3_normalize(vec3_make(symmetric(), symmetric(), symmetric() + (real)0.1));
+    vec3 u = vec3_normalize(vec3_cross(w, vec3_make(symmetric(), symmetric() + (real)0.2, symmetric())));
+    vec3 offset = vec3_scale(vec3_make(symmetric(), symmetric(), symmetric()), distance);
+    return (frame){u, vec3_cross(w, u), w, offset, scale};
+}
+
+static vec3 place(const frame *f, real x, real y, real z)
+{
+    return vec3_add(f->offset,
+                    vec3_scale(vec3_add(vec3_scale(f->u, x), vec3_add(vec3_scale(f->v, y), vec3_scale(f->w, z))),
+                               f->scale));
+}
+
+/* Sizes and places: small and large triangles, at and far from the origin. */
+static const struct {
+    real scale, distance;
+} placements[] = {{1, 0}, {(real)1e-3, (real)0.5}, {7, 30}, {(real)0.25, 1000}, {(real)1e4, 0}, {3, (real)2e5}};
+enum { N_PLACEMENTS = sizeof placements / sizeof placements[0] };
+
+static void print_triangle(const char *what, const triangle *tri, ray r)
+{
+    print_error("%s: a (%.9g, %.9g, %.9g), b (%.9g, %.9g, %.9g), c (%.9g, %.9g, %.9g); ray p (%.9g, %.9g, %.9g), "
+                "d (%.9g, %.9g, %.9g)\n",
+                what, (double)tri->a.x, (double)tri->a.y, (double)tri->a.z, (double)tri->b.x, (double)tri->b.y,
+                (double)tri->b.z, (double)tri->c.x, (double)tri->c.y, (double)tri->c.z, (double)r.p.x,
+                (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z);
+}
+
+/* Degenerate triangles made of rounded data: the third vertex computed on
+ * the line of the other two (so off it by rounding), or equal to one of
+ * them, in random frames.  Rays from random origins aimed at points of the
+ * segment must miss: M = det[a - b  a - c  d] is only rounding noise there,
+ * and so are beta, gamma and t.  The same rays hit the triangle whose third
+ * vertex is moved off the line by a quarter of the segment. */
+static void test_degenerate_rounded(void **state)
+{
+    (void)state;
+    rng_state = 0x9e3779b97f4a7c15u;
+    for (int k = 0; k < N_TESTS; k++)
+        for (int pl = 0; pl < N_PLACEMENTS; pl++)
+            for (int n = 0; n < 400; n++) {
+                frame f = random_frame(placements[pl].scale, placements[pl].distance);
+                real ax = symmetric(), ay = symmetric(), bx = symmetric(), by = symmetric();
+                real s = 2 * uniform() - (real)0.5;
+                vec3 a = place(&f, ax, ay, 0), b = place(&f, bx, by, 0);
+                vec3 on_line = n % 3 == 0 ? place(&f, ax + s * (bx - ax), ay + s * (by - ay), 0)
+                             : n % 3 == 1 ? vec3_add(a, vec3_scale(vec3_sub(b, a), s))
+                                          : (n % 2 ? a : b);
+                triangle tri = n % 2 ? (triangle){a, b, on_line} : (triangle){on_line, a, b};
+                real along = uniform();
+                vec3 x = vec3_add(a, vec3_scale(vec3_sub(b, a), along));
+                vec3 p = place(&f, 3 * symmetric(), 3 * symmetric(), 2 + uniform());
+                ray r = {p, vec3_sub(x, p)};
+                triangle_hit h;
+                if (triangle_intersect(&tri, r, 0, REAL_INFINITY, both[k], &h)) {
+                    print_triangle("degenerate triangle", &tri, r);
+                    fail_msg("--triangle=%s: expected a miss (the vertices are collinear up to rounding), got t %g, "
+                             "beta %g, gamma %g: is M compared with 0 before dividing?",
+                             test_names[k], (double)h.t, (double)h.beta, (double)h.gamma);
+                }
+                /* The control: a proper triangle over the same segment is hit at x,
+                 * where the coordinates resolve the triangle to better than 1e-3 of
+                 * its size (not so for a float triangle of size 3 at 2e5, whose
+                 * own plane the data know only to a few degrees). */
+                real amplify = 1 + placements[pl].distance / placements[pl].scale;
+                if (amplify * REAL_EPSILON > (real)1e-3)
+                    continue;
+                triangle proper = {a, b, place(&f, (ax + bx) / 2 - (by - ay) / 4, (ay + by) / 2 + (bx - ax) / 4, 0)};
+                real target_beta = along * (real)0.8, target_gamma = (real)0.1;
+                vec3 y = vec3_add(proper.a, vec3_add(vec3_scale(vec3_sub(proper.b, proper.a), target_beta),
+                                                     vec3_scale(vec3_sub(proper.c, proper.a), target_gamma)));
+                ray q = {p, vec3_sub(y, p)};
+                if (!triangle_intersect(&proper, q, 0, REAL_INFINITY, both[k], &h)) {
+                    print_triangle("proper triangle", &proper, q);
+                    fail_msg("--triangle=%s: expected a hit at t 1, beta %g, gamma %g; got a miss", test_names[k],
+                             (double)target_beta, (double)target_gamma);
+                }
+                /* The data carry rounding of the size of the placement's distance
+                 * against the triangle's size 1 (as in test_far_triangles). */
+                assert_close(1, h.t, 16 * TOL * amplify);
+            }
+}
+
+/* Rays that lie in the triangle's plane: here the plane x + y + z = 0, whose
+ * points are rounded off it (the basis (1, -1, 0)/sqrt 2, (1, 1, -2)/sqrt 6
+ * is irrational).  Origins and targets in the plane, targets inside the
+ * triangle: a miss, from both tests (the ray meets the triangle only
+ * edge-on, and the arithmetic cannot tell which t).  Lifted off the plane
+ * by the triangle's size, the same origins hit it at t = 1. */
+static void test_rays_in_the_plane(void **state)
+{
+    (void)state;
+    rng_state = 0x2545f4914f6cdd1du;
+    const vec3 e_u = {(real)0.70710678118654752, (real)-0.70710678118654752, 0};
+    const vec3 e_v = {(real)0.40824829046386302, (real)0.40824829046386302, (real)-0.81649658092772603};
+    const vec3 normal = {(real)0.57735026918962576, (real)0.57735026918962576, (real)0.57735026918962576};
+    for (int k = 0; k < N_TESTS; k++)
+        for (int pl = 0; pl < N_PLACEMENTS; pl++)
+            for (int n = 0; n < 400; n++) {
+                real size = placements[pl].scale, u0 = placements[pl].distance * symmetric(),
+                     v0 = placements[pl].distance * symmetric();
+                vec3 v[3];
+                for (int i = 0; i < 3; i++)
+                    v[i] = vec3_add(vec3_scale(e_u, u0 + size * symmetric()), vec3_scale(e_v, v0 + size * symmetric()));
+                triangle tri = {v[0], v[1], v[2]};
+                real beta = uniform() / 2, gamma = uniform() / 2;
+                vec3 x = point_at(&tri, beta, gamma);
+                vec3 p = vec3_add(vec3_scale(e_u, u0 + 3 * size * symmetric()), vec3_scale(e_v, v0 + 3 * size * symmetric()));
+                ray r = {p, vec3_sub(x, p)};
+                triangle_hit h;
+                if (triangle_intersect(&tri, r, 0, REAL_INFINITY, both[k], &h)) {
+                    print_triangle("ray in the triangle's plane x + y + z = 0", &tri, r);
+                    fail_msg("--triangle=%s: expected a miss (the ray lies in the plane), got t %g, beta %g, gamma %g "
+                             "(aimed at beta %g, gamma %g): a determinant that is rounding noise is not a hit",
+                             test_names[k], (double)h.t, (double)h.beta, (double)h.gamma, (double)beta, (double)gamma);
+                }
+                real area = vec3_length(vec3_cross(vec3_sub(tri.b, tri.a), vec3_sub(tri.c, tri.a)));
+                if (!(area > size * size / 8))
+                    continue; /* a sliver: the lifted ray would graze it */
+                if ((1 + placements[pl].distance / size) * REAL_EPSILON > (real)1e-3)
+                    continue; /* as in test_degenerate_rounded: the data do not resolve the triangle */
+                vec3 above_p = vec3_add(p, vec3_scale(normal, size));
+                ray lifted = {above_p, vec3_sub(x, above_p)};
+                if (!triangle_intersect(&tri, lifted, 0, REAL_INFINITY, both[k], &h)) {
+                    print_triangle("ray lifted off the plane", &tri, lifted);
+                    fail_msg("--triangle=%s: expected a hit at t 1, beta %g, gamma %g; got a miss", test_names[k],
+                             (double)beta, (double)gamma);
+                }
+            }
+}
+
+/* A ray that starts exactly on a triangle meets its plane at t = 0, which
+ * is outside the open window (0, infinity): a miss, whether it leaves the
+ * triangle or enters the space behind it.  Exact data first (t is exactly
+ * 0; test_t_window catches a window written t >= t_min), then a closed
+ * icosahedron in a random frame: from a point of a face, inwards the ray
+ * meets the opposite side, never its own face; outwards it meets nothing. */
+static void test_origin_on_the_triangle(void **state)
+{
+    (void)state;
+    vec3 on = point_at(&flat, (real)0.25, (real)0.375); /* exact: small dyadic numbers */
+    const vec3 dirs[] = {{0, 0, 1}, {0, 0, -1}, {1, 2, -3}, {-1, 0.5, 0.25}};
+    for (int k = 0; k < N_TESTS; k++)
+        for (int j = 0; j < 4; j++) {
+            triangle_hit h = {-7, -7, -7};
+            if (triangle_intersect(&flat, (ray){on, dirs[j]}, 0, REAL_INFINITY, both[k], &h))
+                fail_msg("--triangle=%s: ray from (%g, %g, %g), a point of the triangle, along (%g, %g, %g): expected "
+                         "a miss (t = 0 is outside (0, infinity)), got t %g: is the window test t > t_min?",
+                         test_names[k], (double)on.x, (double)on.y, (double)on.z, (double)dirs[j].x,
+                         (double)dirs[j].y, (double)dirs[j].z, (double)h.t);
+        }
+    rng_state = 0x5851f42d4c957f2du;
+    for (int k = 0; k < N_TESTS; k++)
+        for (int pl = 0; pl < N_PLACEMENTS; pl++) {
+            frame f = random_frame(placements[pl].scale, placements[pl].distance);
+            vec3 v[ICOSAHEDRON_VERTICES];
+            triangle faces[ICOSAHEDRON_FACES];
+            icosahedron_vertices(f.offset, f.scale, v);
+            icosahedron_triangles(v, faces);
+            const real inradius = (real)0.7946544722917661 * f.scale;
+            for (int face = 0; face < ICOSAHEDRON_FACES; face++) {
+                vec3 start = point_at(&faces[face], uniform() / 2, uniform() / 2);
+                vec3 inward = vec3_sub(f.offset, start), outward = vec3_neg(inward);
+                int first = -1;
+                real t_best = REAL_INFINITY;
+                for (int g = 0; g < ICOSAHEDRON_FACES; g++) {
+                    triangle_hit h;
+                    if (triangle_intersect(&faces[g], (ray){start, inward}, 0, t_best, both[k], &h)) {
+                        t_best = h.t;
+                        first = g;
+                    }
+                    if (triangle_intersect(&faces[g], (ray){start, outward}, 0, REAL_INFINITY, both[k], &h))
+                        fail_msg("--triangle=%s: icosahedron of radius %g at distance %g, ray from a point of face %d "
+                                 "outwards: expected no hit, got face %d at t %g",
+                                 test_names[k], (double)f.scale, (double)placements[pl].distance, face, g, (double)h.t);
+                }
+                /* Through the centre to the other side: at least two inradii away (t = 1 is the centre). */
+                if (first < 0 || first == face || !(t_best * vec3_length(inward) >= 2 * inradius * (1 - 64 * TOL)))
+                    fail_msg("--triangle=%s: icosahedron of radius %g at distance %g, ray from a point of face %d "
+                             "inwards: expected the far side (t >= %g), got face %d at t %g",
+                             test_names[k], (double)f.scale, (double)placements[pl].distance, face,
+                             (double)(2 * inradius / vec3_length(inward)), first, (double)t_best);
+            }
+        }
+}
+
+/* Near the ends of the number range: a triangle and a ray scaled together by
+ * 2^-e and 2^e, e a quarter of the exponent range of real, so that M (a
+ * product of three coordinates) stays finite and normal.  A power of two
+ * scales every rounding exactly, so beta and gamma are the unscaled ones
+ * and t too (p and d scale alike). */
+static void test_range_ends(void **state)
+{
+    (void)state;
+    const int e = (REAL_EPSILON < 1e-10 ? 1024 : 128) / 4;
+    const real scales[] = {(real)ldexp(1, -e), (real)ldexp(1, e)};
+    vec3 g = centroid(&tilted);
+    vec3 p = vec3_add(g, vec3_make(2, (real)-0.5, 4));
+    triangle_hit reference;
+    for (int k = 0; k < N_TESTS; k++) {
+        assert_true(triangle_intersect(&tilted, (ray){p, vec3_sub(g, p)}, 0, REAL_INFINITY, both[k], &reference));
+        for (int j = 0; j < 2; j++) {
+            real f = scales[j];
+            triangle scaled = {vec3_scale(tilted.a, f), vec3_scale(tilted.b, f), vec3_scale(tilted.c, f)};
+            ray r = {vec3_scale(p, f), vec3_scale(vec3_sub(g, p), f)};
+            triangle_hit h;
+            if (!triangle_intersect(&scaled, r, 0, REAL_INFINITY, both[k], &h))
+                fail_msg("--triangle=%s: the centroid ray scaled by 2^%d: expected a hit at t %g, got a miss",
+                         test_names[k], j ? e : -e, (double)reference.t);
+            assert_true(h.t == reference.t && h.beta == reference.beta && h.gamma == reference.gamma);
+        }
+    }
+}
+
 /* The icosahedron: closed, wound outwards, each edge shared by two faces. */
 static void test_icosahedron_is_closed(void **state)
 {
@@ -410,6 +663,10 @@ static const graded_test tests[] = {
     GRADED(test_grazing_rays, 2),
     GRADED(test_t_window, 2),
     GRADED(test_hit_point_is_consistent, 2),
+    GRADED(test_degenerate_rounded, 2),
+    GRADED(test_rays_in_the_plane, 2),
+    GRADED(test_origin_on_the_triangle, 2),
+    GRADED(test_range_ends, 1),
     GRADED(test_normal, 0), /* handed out complete: no points */
     GRADED(test_icosahedron_is_closed, 0), /* handed out complete: no points */
     GRADED(test_icosahedron_from_inside, 2),

@@ -1,4 +1,5 @@
 /* Chapter 04: the surface list, the closest hit and the flat colours. */
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -53,6 +54,34 @@ static void add_shape(surface_list *list, int which)
     }
 }
 
+/* Asserts what surfaces_intersect(list, r, t_min, t_max) reports: a miss
+ * (want < 0), or a hit on list entry want at t (within tol).  On failure it
+ * names the ray, the window, what was expected, what came back and the
+ * likely mistake (`why`). */
+static void expect_closest(const surface_list *list, ray r, real t_min, real t_max, int want, real t, real tol,
+                           const char *why)
+{
+    hit_record hit = {.t = -7, .surface = -7};
+    bool found = surfaces_intersect(list, r, t_min, t_max, &hit);
+    bool ok = want < 0 ? !found && hit.t == -7 && hit.surface == -7
+                       : found && hit.surface == want && real_abs(hit.t - t) <= tol;
+    if (ok)
+        return;
+    char expected[96], got[96];
+    if (want < 0)
+        snprintf(expected, sizeof expected, "no hit (and *hit untouched)");
+    else
+        snprintf(expected, sizeof expected, "surface %d at t %g", want, (double)t);
+    if (found || hit.surface != -7)
+        snprintf(got, sizeof got, "%s surface %d at t %.9g", found ? "a hit on" : "no hit, but *hit written:",
+                 hit.surface, (double)hit.t);
+    else
+        snprintf(got, sizeof got, "no hit");
+    fail_msg("ray p (%g, %g, %g), d (%g, %g, %g), window (%g, %g), %d surfaces: expected %s, got %s (%s)",
+             (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z,
+             (double)t_min, (double)t_max, list->n, expected, got, why);
+}
+
 /* Every ordering of the four shapes, with both sphere formulas and both
  * triangle tests, and a ray that starts ever further along: the hit is the
  * closest one after t_min, whichever position the shape has in the list. */
@@ -85,18 +114,22 @@ static void test_closest_hit_in_any_order(void **state)
                 for (int k = 0; k < N_SHAPES; k++)
                     add_shape(&list, order[k]);
                 for (size_t e = 0; e < sizeof expected / sizeof expected[0]; e++) {
+                    int position = 0; /* where the expected shape sits in this order */
+                    while (order[position] != expected[e].shape)
+                        position++;
+                    char why[200];
+                    snprintf(why, sizeof why,
+                             "list order %d%d%d%d of 0 front triangle, 1 ball, 2 inner triangle, 3 back ball: is "
+                             "every surface asked with t_best, not t_max, and t_best shrunk to each hit's t?",
+                             order[0], order[1], order[2], order[3]);
+                    expect_closest(&list, down_z, expected[e].t_min, REAL_INFINITY, position, expected[e].t,
+                                   TOL(16), why);
                     hit_record hit;
-                    if (!surfaces_intersect(&list, down_z, expected[e].t_min, REAL_INFINITY, &hit))
-                        fail_msg("order %d%d%d%d, t_min %g: no hit", order[0], order[1], order[2], order[3],
-                                 (double)expected[e].t_min);
+                    surfaces_intersect(&list, down_z, expected[e].t_min, REAL_INFINITY, &hit);
                     assert_int_equal(expected[e].shape, hit.source);
                     assert_int_equal(expected[e].shape, hit.shader);
-                    assert_true(hit.surface >= 0 && hit.surface < list.n);
-                    assert_int_equal(expected[e].shape, order[hit.surface]);
-                    assert_close(expected[e].t, hit.t, TOL(16));
                 }
-                hit_record hit;
-                assert_false(surfaces_intersect(&list, down_z, 15, REAL_INFINITY, &hit));
+                expect_closest(&list, down_z, 15, REAL_INFINITY, -1, 0, 0, "t_min passed on to every surface?");
                 surface_list_free(&list);
             }
         }
@@ -111,18 +144,16 @@ static void test_t_window(void **state)
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
     for (int k = N_SHAPES - 1; k >= 0; k--)
         add_shape(&list, k);
-    hit_record hit;
-    assert_false(surfaces_intersect(&list, down_z, 0, 7.5, &hit));  /* ends before the first shape */
-    assert_false(surfaces_intersect(&list, down_z, 0, 8, &hit));    /* t_max itself is outside */
-    assert_true(surfaces_intersect(&list, down_z, 0, 8.5, &hit));
-    assert_int_equal(FRONT, hit.source);
-    assert_true(surfaces_intersect(&list, down_z, 8, 20, &hit)); /* t_min itself is outside */
-    assert_int_equal(BALL, hit.source);
-    assert_close(9, hit.t, TOL(16));
-    assert_false(surfaces_intersect(&list, down_z, 9.6, 10.9, &hit)); /* inside the ball, between hits */
+    /* Listed back to front: list entry 3 is FRONT, 2 BALL, 1 INNER, 0 BACK. */
+    const char *window = "is t_best started at t_max, and t_min passed on unchanged?";
+    expect_closest(&list, down_z, 0, 7.5, -1, 0, 0, window); /* ends before the first shape */
+    expect_closest(&list, down_z, 0, 8, -1, 0, 0, window);   /* t_max itself is outside */
+    expect_closest(&list, down_z, 0, 8.5, 3, 8, TOL(16), window);
+    expect_closest(&list, down_z, 8, 20, 2, 9, TOL(16), window);       /* t_min itself is outside */
+    expect_closest(&list, down_z, 9.6, 10.9, -1, 0, 0, window);       /* inside the ball, between hits */
     /* Everything lies behind a ray that starts at z = 10 and looks up +z. */
     const ray up_z = {{0, 0, 10}, {0, 0, 1}};
-    assert_false(surfaces_intersect(&list, up_z, 0, REAL_INFINITY, &hit));
+    expect_closest(&list, up_z, 0, REAL_INFINITY, -1, 0, 0, "are hits behind the origin (t < t_min) refused?");
     surface_list_free(&list);
 }
 
@@ -137,15 +168,10 @@ static void test_empty_and_single(void **state)
     char err[256];
     assert_int_equal(0, surface_list_from_scene(&list, &desc, err, sizeof err));
     assert_int_equal(0, list.n);
-    hit_record hit = {.t = 42, .surface = 7};
-    assert_false(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
-    assert_close(42, hit.t, 0); /* a miss leaves the record alone */
-    assert_int_equal(7, hit.surface);
-
+    expect_closest(&list, down_z, 0, REAL_INFINITY, -1, 0, 0, "an empty list: is *hit written only on a hit?");
     add_shape(&list, BACK);
-    assert_true(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
-    assert_int_equal(0, hit.surface);
-    assert_close(11.5, hit.t, TOL(16));
+    expect_closest(&list, down_z, 0, REAL_INFINITY, 0, 11.5, TOL(16),
+                   "one sphere: is hit->surface set to its index, and the candidate copied?");
     surface_list_free(&list);
     scene_free(&desc);
 }
@@ -166,15 +192,15 @@ static void test_coincident_surfaces_first_wins(void **state)
             /* Shader 10 + first is listed first. */
             surface_list_add_sphere(&list, ball, 10 + first, 0);
             surface_list_add_sphere(&list, ball, 11 - first, 1);
-            hit_record hit;
-            assert_true(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
-            assert_int_equal(0, hit.surface);
-            assert_int_equal(10 + first, hit.shader);
+            const char *why = "two surfaces at the same t: the first in the list keeps it; is the window for "
+                              "the rest (t_min, t_best), open at t_best?";
+            expect_closest(&list, down_z, 0, REAL_INFINITY, 0, 9, TOL(16), why);
             /* The same with two copies of a triangle in front of them. */
             surface_list_add_triangle(&list, tri, 20 + first, 2);
             surface_list_add_triangle(&list, tri, 21 - first, 3);
+            expect_closest(&list, down_z, 0, REAL_INFINITY, 2, 8, TOL(16), why);
+            hit_record hit;
             assert_true(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
-            assert_int_equal(2, hit.surface);
             assert_int_equal(20 + first, hit.shader);
             surface_list_free(&list);
         }
@@ -423,6 +449,210 @@ static void test_scene_file(void **state)
     scene_free(&desc);
 }
 
+/* ---- rays that start on a surface ------------------------------------------------------- */
+
+/* Rays from a point exactly on a surface (small dyadic data: the point is
+ * exactly on it) with the window (0, infinity): the surface they start on
+ * is met at t = 0, outside the window.  Inwards a box's ray meets the
+ * opposite face, a sphere's ray the far side of the sphere; outwards
+ * nothing.  (Chapter 06 moves such rays off the surface; here the window
+ * alone must refuse t = 0.) */
+static void test_rays_from_a_surface(void **state)
+{
+    (void)state;
+    for (int f = 0; f < 2; f++)
+        for (int g = 0; g < 2; g++) {
+            surface_list list;
+            surface_list_init(&list, formulas[f], tests_of_triangles[g]);
+            triangle faces[BOX_TRIANGLES];
+            box_triangles(vec3_make(-1, -1, -1), vec3_make(1, 1, 1), faces); /* the cube [-1, 1]^3 */
+            for (int k = 0; k < BOX_TRIANGLES; k++)
+                surface_list_add_triangle(&list, faces[k], 0, 0);
+            surface_list_add_sphere(&list, (sphere){{5, 0.25, -0.5}, 2}, 1, 1); /* x from 3 to 7 */
+            const char *why = "is the window open at t_min, so that the start point (t = 0) is refused?";
+            /* On the box's face x = 1, at (1, 0.25, -0.5): inwards the face x = -1 at t = 2. */
+            ray in_box = {{1, 0.25, -0.5}, {-1, 0, 0}};
+            hit_record hit;
+            if (!surfaces_intersect(&list, in_box, 0, REAL_INFINITY, &hit) || hit.t != 2 || hit.point.x != -1)
+                fail_msg("--sphere=%s, --triangle=%s: ray from (1, 0.25, -0.5) on the cube's face x = 1, along -x: "
+                         "expected the face x = -1 at t 2, got %s t %g (%s)",
+                         f ? "textbook" : "robust", g ? "watertight" : "cramer",
+                         surfaces_intersect(&list, in_box, 0, REAL_INFINITY, &hit) ? "a hit at" : "no hit",
+                         (double)hit.t, why);
+            /* ... outwards along +x it leaves the box and meets the sphere at x = 3, t = 2. */
+            expect_closest(&list, (ray){{1, 0.25, -0.5}, {1, 0, 0}}, 0, REAL_INFINITY, BOX_TRIANGLES, 2,
+                           TOL(4), why);
+            /* ... and up, out of the top face's edge region, nothing. */
+            expect_closest(&list, (ray){{1, 0.25, -0.5}, {1, 1, 0}}, 0, REAL_INFINITY, -1, 0, 0, why);
+            /* On the sphere at (3, 0.25, -0.5): inwards the far side x = 7 at t = 4; outwards back to
+             * the box (the face x = 1 at t = 2). */
+            expect_closest(&list, (ray){{3, 0.25, -0.5}, {1, 0, 0}}, 0, REAL_INFINITY, BOX_TRIANGLES, 4, TOL(8),
+                           why);
+            if (!surfaces_intersect(&list, (ray){{3, 0.25, -0.5}, {-1, 0, 0}}, 0, REAL_INFINITY, &hit) ||
+                hit.source != 0 || real_abs(hit.t - 2) > TOL(4))
+                fail_msg("ray from (3, 0.25, -0.5) on the sphere, along -x: expected the cube's face x = 1 at t 2, "
+                         "got source %d at t %g (%s)", hit.source, (double)hit.t, why);
+            /* On the sphere at (5, 2.25, -0.5), outwards (+y): nothing. */
+            expect_closest(&list, (ray){{5, 2.25, -0.5}, {0, 1, 0}}, 0, REAL_INFINITY, -1, 0, 0, why);
+            surface_list_free(&list);
+        }
+}
+
+/* ---- unit normals, near and far ---------------------------------------------------------- */
+
+/* Every hit's normal has unit length, for spheres and triangles of sizes
+ * 1e-3 to 1e3 at up to 1e5 from the origin (the data in random directions,
+ * so no arithmetic is exact), where the coordinates resolve the shape to
+ * 1e-3 of its size.  A normal is a normalized vector: its length
+ * is 1 within a few roundings, 8 REAL_EPSILON. */
+static void test_normals_are_unit(void **state)
+{
+    (void)state;
+    uint64_t seed = 0x853c49e6748fea9bu;
+    const real sizes[] = {(real)1e-3, 1, (real)1e3}, distances[] = {0, 100, (real)1e5};
+    for (int k = 0; k < 3; k++)
+        for (int m = 0; m < 3; m++)
+            for (int n = 0; n < 50; n++) {
+                real random[9];
+                for (int i = 0; i < 9; i++) {
+                    seed ^= seed << 13;
+                    seed ^= seed >> 7;
+                    seed ^= seed << 17;
+                    random[i] = (real)((double)(seed >> 11) / 4503599627370496.0 - 1); /* in [-1, 1) */
+                }
+                real size = sizes[k];
+                if (distances[m] * REAL_EPSILON > size * (real)1e-3)
+                    continue; /* coordinates too coarse for the shape (float: 1e-3 at 1e5) */
+                vec3 centre = vec3_scale(vec3_make(random[0], random[1], random[2]), distances[m]);
+                vec3 a = vec3_add(centre, vec3_scale(vec3_make(random[3], random[4], random[5]), size));
+                vec3 b = vec3_add(centre, vec3_scale(vec3_make(random[6], random[7], random[8]), size));
+                vec3 c = vec3_add(centre, vec3_scale(vec3_make(random[4], random[8], random[3]), size));
+                surface_list list;
+                surface_list_init(&list, formulas[n % 2], tests_of_triangles[n / 2 % 2]);
+                surface_list_add_sphere(&list, (sphere){centre, size / 4}, 0, 0);
+                surface_list_add_triangle(&list, (triangle){a, b, c}, 1, 1);
+                vec3 eye = vec3_add(centre, vec3_scale(vec3_make(random[2], random[0] + 3, random[1]), 4 * size));
+                vec3 targets[2] = {centre, vec3_scale(vec3_add(a, vec3_add(b, c)), (real)1 / 3)};
+                for (int j = 0; j < 2; j++) {
+                    hit_record hit;
+                    ray r = {eye, vec3_sub(targets[j], eye)};
+                    if (!surfaces_intersect(&list, r, 0, REAL_INFINITY, &hit)) {
+                        if (j == 0) /* the ray at the sphere's centre hits something */
+                            fail_msg("size %g at (%g, %g, %g): the ray at the sphere's centre: expected a hit, got "
+                                     "none", (double)size, (double)centre.x, (double)centre.y, (double)centre.z);
+                        continue; /* a sliver of a triangle seen edge-on */
+                    }
+                    real length = vec3_length(hit.normal);
+                    if (!(real_abs(length - 1) <= 8 * REAL_EPSILON))
+                        fail_msg("size %g at (%g, %g, %g): the %s's normal (%.9g, %.9g, %.9g) has length %.9g, "
+                                 "expected 1 (is the hit record's normal copied whole?)",
+                                 (double)size, (double)centre.x, (double)centre.y, (double)centre.z,
+                                 hit.source ? "triangle" : "sphere", (double)hit.normal.x, (double)hit.normal.y,
+                                 (double)hit.normal.z, (double)length);
+                }
+                surface_list_free(&list);
+            }
+}
+
+/* ---- cracks in an ordinary image ------------------------------------------------------ */
+
+/* scenes/floor-diagonal.xml at scale s: a square floor of two triangles that
+ * share its diagonal, seen from s (0, 3, 4) by a camera looking at its
+ * centre.  The window's aspect 5 : 3 = |(0, 3, 4)| : 3 makes the diagonal
+ * run exactly through 48 pixel centres of the 48 x 48 image.  Returns how
+ * many pixels whose ray meets the plane y = 0 inside the square (by 1 % of
+ * its size, far more than rounding moves a point) report no hit. */
+static long floor_holes(real s, triangle_test test)
+{
+    const scene_camera desc = {.kind = CAMERA_PERSPECTIVE,
+                               .view_point = {0, 3 * s, 4 * s},
+                               .view_dir = {0, -3 * s, -4 * s},
+                               .view_up = {0, 1, 0},
+                               .proj_distance = 1,
+                               .view_width = 0.5,
+                               .view_height = 0.3};
+    camera cam;
+    assert_null(camera_init(&cam, &desc));
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, test);
+    const vec3 q0 = {-s, 0, s}, q1 = {s, 0, s}, q2 = {s, 0, -s}, q3 = {-s, 0, -s};
+    surface_list_add_triangle(&list, (triangle){q1, q2, q3}, 0, 0);
+    surface_list_add_triangle(&list, (triangle){q1, q3, q0}, 0, 1);
+    long holes = 0, inside = 0;
+    for (int j = 0; j < 48; j++)
+        for (int i = 0; i < 48; i++) {
+            ray r = camera_ray(&cam, ((real)i + (real)0.5) / 48, ((real)j + (real)0.5) / 48);
+            real t = -r.p.y / r.d.y;
+            vec3 x = ray_at(r, t);
+            if (!(t > 0 && real_abs(x.x) < (real)0.99 * s && real_abs(x.z) < (real)0.99 * s))
+                continue;
+            inside++;
+            hit_record hit;
+            if (!surfaces_intersect(&list, r, 0, REAL_INFINITY, &hit))
+                holes++;
+        }
+    surface_list_free(&list);
+    assert_true(inside > 1000); /* the floor fills most of the image */
+    return holes;
+}
+
+/* Eye rays through the shared diagonal of a floor: the renderer's default
+ * triangle test (the watertight one) leaves no hole, at any scale.  (Cramer's
+ * rule leaves 0 to 3 at each of these scales in double, 0 to 4 in float: the
+ * chapter's README has the table.) */
+static void test_floor_diagonal_has_no_holes(void **state)
+{
+    (void)state;
+    assert_int_equal(TRIANGLE_WATERTIGHT, TRIANGLE_TEST_DEFAULT);
+    const real scales[] = {(real)1e-3, (real)0.01, (real)0.1, (real)0.37, 1, 3, 10, 100, 1000};
+    for (size_t k = 0; k < sizeof scales / sizeof scales[0]; k++) {
+        long holes = floor_holes(scales[k], TRIANGLE_TEST_DEFAULT);
+        if (holes)
+            fail_msg("floor of half-size %g, 48 x 48, default triangle test: expected 0 background pixels on the "
+                     "floor, got %ld (a hit missed on the shared diagonal: is every triangle of the list tested?)",
+                     (double)scales[k], holes);
+    }
+}
+
+/* A degenerate triangle (its third vertex on the line of the other two, as
+ * rounding leaves it) and a triangle seen exactly edge-on lie in front of a
+ * sphere: neither may steal the sphere's hit with a t made of rounding
+ * noise, with either triangle test. */
+static void test_degenerate_in_front(void **state)
+{
+    (void)state;
+    const vec3 a = {(real)0.3, (real)-0.7, (real)2.1}, b = {(real)-0.4, (real)0.9, (real)1.3};
+    const vec3 c = vec3_add(a, vec3_scale(vec3_sub(b, a), (real)0.37)); /* collinear, rounded */
+    const vec3 eye = {(real)0.05, (real)0.1, 10};
+    for (int g = 0; g < 2; g++) {
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, tests_of_triangles[g]);
+        surface_list_add_triangle(&list, (triangle){a, b, c}, 1, 1);
+        /* In the plane x = 0.05 + (y - 0.1) / 7, which holds the eye: edge-on. */
+        const vec3 e0 = {(real)0.05, (real)0.1, (real)3.3}, e1 = {(real)(0.05 + 1.3 / 7), (real)1.4, (real)2.7};
+        const vec3 e2 = {(real)(0.05 - 1.1 / 7), (real)-1.0, (real)4.1};
+        surface_list_add_triangle(&list, (triangle){e0, e1, e2}, 2, 2);
+        surface_list_add_sphere(&list, (sphere){{0, 0, 0}, 1}, 3, 3);
+        const real steps[] = {0, (real)0.25, (real)0.5, (real)0.75, 1};
+        for (int k = 0; k < 5; k++) {
+            /* Aimed at points of the degenerate triangle's segment, and through the edge-on one. */
+            vec3 targets[2] = {vec3_add(a, vec3_scale(vec3_sub(b, a), steps[k])),
+                               vec3_add(e0, vec3_scale(vec3_sub(e1, e0), steps[k]))};
+            for (int m = 0; m < 2; m++) {
+                ray r = {eye, vec3_sub(targets[m], eye)};
+                hit_record hit;
+                bool any = surfaces_intersect(&list, r, 0, REAL_INFINITY, &hit);
+                if (any && hit.source != 3)
+                    fail_msg("--triangle=%s, ray from the eye at point %d of the %s triangle: expected a miss of "
+                             "it, got a hit at t %g (beta %g, gamma %g): a determinant that is rounding noise",
+                             g ? "watertight" : "cramer", k, m ? "edge-on" : "degenerate", (double)hit.t,
+                             (double)hit.beta, (double)hit.gamma);
+            }
+        }
+        surface_list_free(&list);
+    }
+}
+
 /* ---- the course's reference image ---------------------------------------------------------- */
 
 /* The course's two-boxes-rgb-normals.xml, traced pixel by pixel through the
@@ -481,6 +711,10 @@ static const graded_test tests[] = {
     GRADED(test_box_in_scene, 2),
     GRADED(test_flat_colors, 0), /* handed out complete: no points */
     GRADED(test_scene_file, 2),
+    GRADED(test_rays_from_a_surface, 1),
+    GRADED(test_normals_are_unit, 1),
+    GRADED(test_floor_diagonal_has_no_holes, 2),
+    GRADED(test_degenerate_in_front, 0), /* chapter 03's given check: no points */
     GRADED(test_two_boxes_reference, 0),
 };
 

@@ -100,6 +100,37 @@ static void test_any_thread_count_gives_the_same_image(void **state)
     image_free(&seeded);
 }
 
+/* A mapping that records what it is given: (u, v) = (i + du, 10 (j + dv))
+ * in pixel units, so that the test can read back i, j, du, dv. */
+static void record_map(int i, int j, int nx, int ny, real du, real dv, real *u, real *v)
+{
+    (void)nx;
+    (void)ny;
+    *u = (real)i + du;
+    *v = 10 * ((real)j + dv);
+}
+
+/* render_image_mapped asks the renderer's mapping (chapter 01's
+ * pixel_to_image) for every sample, with the pixel, the image size and the
+ * sample's place; NULL maps to the pixel centres like pixel_to_image. */
+static void test_the_mapping_is_the_renderers(void **state)
+{
+    (void)state;
+    image img;
+    assert_int_equal(0, image_init(&img, 3, 2));
+    render_options opt = {.samples = 1, .threads = 1, .quiet = true};
+    render_image_mapped(&img, position, NULL, &opt, record_map);
+    for (int j = 0; j < 2; j++)
+        for (int i = 0; i < 3; i++) {
+            assert_close(i + 0.5, image_at(&img, i, j)->r, 0);
+            assert_close(10 * (j + 0.5), image_at(&img, i, j)->g, 0);
+        }
+    render_image_mapped(&img, position, NULL, &opt, NULL);
+    assert_close(2.5 / 3, image_at(&img, 2, 1)->r, 2 * REAL_EPSILON);
+    assert_close(1.5 / 2, image_at(&img, 2, 1)->g, 0);
+    image_free(&img);
+}
+
 /* The summary line names the kinds of ray apart once there are secondary rays. */
 static void test_summary_counts_ray_kinds_apart(void **state)
 {
@@ -126,6 +157,7 @@ static const graded_test tests[] = {
     GRADED(test_stratified_samples_stay_in_their_strata, 0),
     GRADED(test_samples_average_to_the_pixel_mean, 0),
     GRADED(test_any_thread_count_gives_the_same_image, 0),
+    GRADED(test_the_mapping_is_the_renderers, 0),
     GRADED(test_summary_counts_ray_kinds_apart, 0),
 };
 SUITE_MAIN("common_render", tests)

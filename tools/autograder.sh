@@ -1,17 +1,27 @@
-#!/bin/sh
-# autograder.sh ZIP [CHAPTER] [TIMEOUT] - a Gradescope autograder for the project.
+#!/bin/bash
+# autograder.sh ZIP CHAPTER TIMEOUT DOUBLE_LIBS FLOAT_LIBS - a Gradescope autograder.
 #
-# The zip holds, at its root (Gradescope unpacks it into /autograder/source), what Gradescope asks for (setup.sh and
-# run_autograder) and the project itself: Makefile, common/, chapters/,
-# solutions/, tests/, tools/.  setup.sh installs the Debian packages and
-# checks that the solutions get full marks; run_autograder copies the
-# student's exercise files from /autograder/submission over the skeletons
-# and runs `make grade`, which writes /autograder/results/results.json.
-# CHAPTER (01 or 01_camera_rays; empty: every chapter) is what is graded.
-zip=$1
+# The zip holds, at its root (Gradescope unpacks it into /autograder/source),
+# a student's copy of the project (tools/handout.sh: no solution source, the
+# compiled reference libraries from DOUBLE_LIBS and FLOAT_LIBS), Gradescope's
+# setup.sh and run_autograder, and grade.conf (CHAPTER, 01 or 01_camera_rays,
+# empty for every chapter, and TIMEOUT, seconds per test).
+#
+# setup.sh (once, as root, on Gradescope's Ubuntu 22.04 image) installs the
+# Debian packages, creates the unprivileged user the tests run as, closes
+# the source folder to everyone but root, and checks that the reference gets
+# full marks, running as that user.  run_autograder (for each submission)
+# takes the graded chapter's exercise files from the submission
+# (tools/take-submission.sh) and runs `make grade GRADE_USER=...`: the
+# student's code runs as that user, which can read nothing of the grader's,
+# and the results go to /autograder/results/results.json.  Both take
+# AUTOGRADER_ROOT=dir instead of /autograder, for a trial run
+# (docs/instructor-guide.md).
+set -u
+zip=${1:?usage: autograder.sh ZIP CHAPTER TIMEOUT DOUBLE_LIBS FLOAT_LIBS}
 chapter=$2
 timeout=${3:-10}
-[ -n "$zip" ] || { echo "usage: $0 ZIP [CHAPTER] [TIMEOUT]" >&2; exit 2; }
+double_libs=${4:?} float_libs=${5:?}
 
 if ! command -v zip >/dev/null 2>&1; then
     if [ "$(id -u)" = 0 ]; then
@@ -30,62 +40,67 @@ fi
 
 stage=$(mktemp -d) || exit 1
 trap 'rm -rf "$stage"' EXIT
-cp -R Makefile common chapters solutions tests tools "$stage/" || exit 1
-printf 'CHAPTER=%s\nTIMEOUT=%s\n' "$chapter" "$timeout" >"$stage/grade.conf"
+tools/handout.sh "$stage/zip" "$double_libs" "$float_libs" >/dev/null || exit 1
+printf 'CHAPTER=%s\nTIMEOUT=%s\n' "$chapter" "$timeout" >"$stage/zip/grade.conf"
 
-cat >"$stage/setup.sh" <<'SETUP'
+cat >"$stage/zip/setup.sh" <<'SETUP'
 #!/bin/bash
-# Gradescope runs this once, as root, when it builds the autograder image.
-set -e
-export DEBIAN_FRONTEND=noninteractive
-apt-get update -qq
-apt-get install -y -qq make gcc libexpat1-dev libstb-dev libcmocka-dev coreutils >/dev/null
-mkdir -p /autograder/source
-cd /autograder/source
+# Gradescope runs this once, as root, when it builds the autograder image
+# (Ubuntu 22.04).  AUTOGRADER_ROOT=dir stands for /autograder in a trial run;
+# AUTOGRADER_NO_APT=1 skips apt-get there.
+set -euo pipefail
+root=${AUTOGRADER_ROOT:-/autograder}
+user=rtgrade # the unprivileged user the student's code runs as
+if [ -z "${AUTOGRADER_NO_APT:-}" ]; then
+    export DEBIAN_FRONTEND=noninteractive
+    apt-get update -qq
+    apt-get install -y -qq --no-install-recommends make gcc libc6-dev binutils coreutils \
+        libexpat1-dev libstb-dev libcmocka-dev >/dev/null
+fi
+id -u "$user" >/dev/null 2>&1 ||
+    useradd --system --no-create-home --home-dir /nonexistent --shell /usr/sbin/nologin "$user"
+cd "$root/source"
 . ./grade.conf
-# The solutions must get full marks, which also builds everything once.
-make --no-print-directory grade SOURCE=solutions CHAPTER="$CHAPTER" TIMEOUT="$TIMEOUT" \
-    GRADE_JSON=/tmp/solutions.json GRADE_JUNIT=/tmp/solutions.xml
+# Only root reads the project, the builds and the skeletons kept for run_autograder.
+chown -R root:root "$root/source"
+chmod -R go-rwx "$root/source"
+rm -rf pristine && cp -R chapters pristine
+# The reference must get full marks, run as the user, which also builds everything once.
+make --no-print-directory grade SOURCE=reference CHAPTER="$CHAPTER" TIMEOUT="$TIMEOUT" GRADE_USER="$user" \
+    GRADE_JSON=build-grade/reference.json GRADE_JUNIT=build-grade/reference.xml
 SETUP
 
-cat >"$stage/run_autograder" <<'RUN'
+cat >"$stage/zip/run_autograder" <<'RUN'
 #!/bin/bash
-# Gradescope runs this for every submission.  The student's exercise files
-# replace the skeletons: a file is taken from the submission by its path
-# (.../NN_name/FILE.c) or, when no other chapter has a file of that name, by
-# its name alone.  Nothing else of the submission is used.
-root=${AUTOGRADER_ROOT:-/autograder} # another root for a trial run
+# Gradescope runs this, as root, for every submission.  The graded chapter's
+# exercise files are taken from the submission (tools/take-submission.sh says
+# which, and which are missing); the tests run as the unprivileged user, and
+# only root can write the results.  AUTOGRADER_ROOT=dir stands for /autograder.
+root=${AUTOGRADER_ROOT:-/autograder}
+user=rtgrade
 cd "$root/source" || exit 1
 . ./grade.conf
 mkdir -p "$root/results"
+chown root:root "$root/results"
+chmod 755 "$root/results"
 rm -f "$root/results/results.json"
-for solution in solutions/[0-9][0-9]_*/*.c; do
-    rel=${solution#solutions/}
-    ch=${rel%%/*}
-    file=${rel#*/}
-    if [ -n "$CHAPTER" ]; then
-        case "$ch" in "$CHAPTER"*) ;; *) continue ;; esac
-    fi
-    tools/skeletons.sh write "$solution" >/dev/null # the skeleton, should a file be missing
-    found=$(find "$root/submission" -type f -path "*/$ch/$file" | head -n 1)
-    if [ -z "$found" ] && [ "$(ls solutions/*/"$file" | wc -l)" = 1 ]; then
-        found=$(find "$root/submission" -type f -name "$file" | head -n 1)
-    fi
-    if [ -n "$found" ]; then
-        cp "$found" "chapters/$ch/$file"
-        echo "chapters/$ch/$file: from ${found#"$root"/submission/}"
-    else
-        echo "chapters/$ch/$file: not in the submission; the skeleton is graded"
-    fi
-done
-make --no-print-directory grade CHAPTER="$CHAPTER" TIMEOUT="$TIMEOUT" \
-    GRADE_JSON="$root/results/results.json" GRADE_JUNIT="$root/results/junit.xml"
-[ -s "$root/results/results.json" ] || echo '{"score": 0, "output": "the grader did not run; see the autograder output", "tests": []}' >"$root/results/results.json"
+notes=build-grade/submission.txt
+mkdir -p build-grade
+tools/take-submission.sh "$root/submission" pristine "$CHAPTER" >"$notes"
+cat "$notes"
+make --no-print-directory grade CHAPTER="$CHAPTER" TIMEOUT="$TIMEOUT" GRADE_USER="$user" GRADE_NOTES="$notes" \
+    GRADE_JSON="$root/results/results.json" GRADE_JUNIT=build-grade/junit.xml
+if [ ! -s "$root/results/results.json" ]; then
+    printf '{"score": 0, "output": "The grader could not run; please tell the course staff.", "tests": []}\n' \
+        >"$root/results/results.json"
+fi
 RUN
-chmod +x "$stage/setup.sh" "$stage/run_autograder"
+chmod 755 "$stage/zip/setup.sh" "$stage/zip/run_autograder"
 
+# The zip must hold no solution source either.
+tools/handout.sh --check "$stage/zip" >/dev/null || exit 1
 mkdir -p "$(dirname "$zip")"
 case "$zip" in /*) out=$zip ;; *) out=$(pwd)/$zip ;; esac
 rm -f "$out"
-(cd "$stage" && zip -qr "$out" .) || exit 1
-echo "wrote $zip (grades ${chapter:-every chapter}; upload it as a Gradescope autograder)"
+(cd "$stage/zip" && zip -qr "$out" .) || exit 1
+echo "wrote $zip (grades ${chapter:-every chapter}; no solution source; upload it as a Gradescope autograder)"

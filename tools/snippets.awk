@@ -13,7 +13,9 @@
 # is the region of chapters/01_camera_rays/camera.h (a path from the top of
 # the repository) between the lines `/* snippet: camera */` and
 # `/* end snippet */`, without those lines and without the markers of any
-# region nested in it, and with the indentation the region's lines share
+# region nested in it, without the EXERCISE_STUB(...) lines that
+# tools/skeleton.awk adds to a stub (the text shows the stub as the student
+# should read it), and with the indentation the region's lines share
 # removed.  Blocks may not show solutions/: a student reads the chapters/ file.
 #
 # mode=fill prints the text with every block filled; mode=check prints
@@ -44,6 +46,7 @@ function region(path, name, lang,    line, depth, found, n, k, lines, indent, le
             if (--depth == 0) break
             continue
         }
+        if (line ~ /^[ \t]*EXERCISE_STUB\(.*\);[ \t]*$/) continue
         lines[++n] = line
     }
     close(path)

@@ -1,5 +1,6 @@
 /* camera.c - chapter 01: the camera basis and eye rays. */
 #include "01_camera_rays/camera.h"
+#include "exercise.h"
 
 #include <stdio.h>
 
@@ -10,11 +11,12 @@ static vec3 unit(vec3 a) { return vec3_normalize(vec3_scale(a, 1 / vec3_max_abs(
 /* snippet: basis */
 void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
 {
-    /* TODO basis: the camera's orthonormal basis (lecture, "Specifying views"; SCENES.md <camera>):
+    /* TODO basis: the camera's orthonormal basis (lecture, "Specifying views"; <camera> in docs/scenes.md):
      *     w = -viewDir / |viewDir|
      *     u = (viewDir x viewUp) / |viewDir x viewUp|
      *     v = w x u
      * Normalize with unit(), which also copes with very large or small vectors. */
+    EXERCISE_STUB("01_camera_rays", "camera.c", "basis");
     (void)view_dir;
     (void)view_up;
     *u = vec3_make(0, 0, 0);
@@ -72,12 +74,14 @@ ray camera_ray(const camera *cam, real u, real v)
         /* TODO perspective: perspective projection, "same origin, different directions":
          *     p = e,   d = -d w + us u + vs v   (d: the projection distance; us u + vs v is `offset`)
          * Do not normalize d: then t = 1 is the image plane. */
+        EXERCISE_STUB("01_camera_rays", "camera.c", "perspective");
         (void)offset;
         r.p = cam->e;
         r.d = vec3_make(0, 0, 0);
     } else {
         /* TODO orthographic: parallel projection, "same direction, different origins":
          *     p = e + us u + vs v,   d = -w */
+        EXERCISE_STUB("01_camera_rays", "camera.c", "orthographic");
         r.p = cam->e;
         r.d = vec3_make(0, 0, 0);
     }

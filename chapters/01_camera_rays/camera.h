@@ -25,7 +25,7 @@ typedef struct {
 } camera;
 /* end snippet */
 
-/* Builds the camera of a scene description (SCENES.md's <camera>).  Returns
+/* Builds the camera of a scene description (<camera> in docs/scenes.md).  Returns
  * NULL, or the problem when the camera is degenerate: a zero viewDir or
  * viewUp, viewUp parallel to viewDir, or a size that is not positive. */
 const char *camera_init(camera *cam, const scene_camera *desc);

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 
 #include "01_camera_rays/camera.h"
+#include "01_camera_rays/pixel.h"
 #include "renderer.h"
 
 enum { SHOW_DIRECTION, SHOW_FLOOR };
@@ -92,6 +93,7 @@ int main(int argc, char **argv)
         .builtin = builtin,
         .prepare = prepare,
         .sample = sample,
+        .pixel_to_image = pixel_to_image,
         .release = free,
     };
     return renderer_main(&r, argc, argv);

@@ -12,6 +12,7 @@
 #include <stdlib.h>
 
 #include "01_camera_rays/camera.h"
+#include "01_camera_rays/pixel.h"
 #include "02_sphere/sphere.h"
 #include "renderer.h"
 #include "scene_build.h"
@@ -111,6 +112,7 @@ int main(int argc, char **argv)
         .builtin = builtin,
         .prepare = prepare,
         .sample = sample,
+        .pixel_to_image = pixel_to_image,
         .release = release,
     };
     return renderer_main(&r, argc, argv);

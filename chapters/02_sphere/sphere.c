@@ -4,9 +4,10 @@
  * centre c and radius R, and f = p - c is the ray's origin seen from the
  * centre.  Putting x = p + t d into (x - c).(x - c) - R^2 = 0 gives
  *     A t^2 + 2 B t + C = 0,   A = d.d,  B = d.f,  C = f.f - R^2      (1)
- * Both formulas below return its two roots; sphere_intersect() picks one.
+ * Both formulas below return its two roots; sphere_nearest_root() picks one.
  */
 #include "02_sphere/sphere.h"
+#include "exercise.h"
 
 /* The lecture's algebraic solution, for any d (not only a unit d):
  *     t = (-d.f -+ sqrt((d.f)^2 - (d.d)(f.f - R^2))) / (d.d)          (2)
@@ -17,6 +18,7 @@ static bool textbook_roots(const sphere *s, ray r, real *t0, real *t1)
      *     f = p - c,  A = d.d,  B = d.f,  C = f.f - R^2,  discriminant B^2 - A C
      *     no root when the discriminant is negative (or NaN: test !(disc >= 0));
      *     else t0 = (-B - sqrt(disc)) / A,  t1 = (-B + sqrt(disc)) / A */
+    EXERCISE_STUB("02_sphere", "sphere.c", "textbook");
     (void)s;
     (void)r;
     *t0 = *t1 = 0;
@@ -41,6 +43,7 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
      *     l = f + t_m d               the perpendicular from c to the line, |l| = l_m
      *     disc = A (R^2 - l.l)        equal to B^2 - A C, without its cancellation             (4)
      * Keep l as a vector: l.l is small when the ray passes near c, B^2 and A C are not. */
+    EXERCISE_STUB("02_sphere", "sphere.c", "robust_discriminant");
     (void)f;
     (void)B;
     real disc = -1;
@@ -49,7 +52,10 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     /* TODO robust_roots: the stable pair of roots (5)
      *     q = -(B + sign(B) sqrt(disc))    B and sign(B) sqrt(disc) have the same sign: no cancellation
      *     t0 = q / A,  t1 = C / q          (C = f.f - R^2; when q = 0 both roots are 0: t1 = t0)
-     * Which of t0, t1 is nearer depends on the sign of B; sphere_intersect() sorts them. */
+     * sign(B) must be +1 or -1, also for B = 0 (a ray whose origin is the point of its line closest to c):
+     * a sign(0) = 0 makes q = 0 there, and C / q a division by zero.
+     * Which of t0, t1 is nearer depends on the sign of B; sphere_nearest_root() sorts them. */
+    EXERCISE_STUB("02_sphere", "sphere.c", "robust_roots");
     (void)A;
     (void)disc;
     *t0 = *t1 = 0;
@@ -57,30 +63,49 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
 }
 /* end snippet */
 
-/* The outward unit normal at a point x of the sphere. */
-static vec3 sphere_normal(const sphere *s, vec3 x)
+bool sphere_roots(const sphere *s, ray r, sphere_formula formula, real *t0, real *t1)
+{
+    return formula == SPHERE_TEXTBOOK ? textbook_roots(s, r, t0, t1) : robust_roots(s, r, t0, t1);
+}
+
+/* snippet: normal */
+vec3 sphere_normal(const sphere *s, vec3 x)
 {
     /* TODO normal: the outward unit normal at the hit point x:
      *     n = (x - c) / |x - c|
      * |x - c| is R up to rounding; dividing by the computed length makes n a unit vector all the same.
      * x - c is never zero at a hit (it has length R), but guard it so that no NaN leaves this function. */
+    EXERCISE_STUB("02_sphere", "sphere.c", "normal");
     (void)s;
     (void)x;
     return vec3_make(0, 0, 0);
 }
+/* end snippet */
 
 /* snippet: nearest */
+bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
+{
+    /* TODO nearest: the nearest root inside the open window (t_min, t_max), the lecture's
+     * s.intersect(ray, tMin, tMax):
+     *     near = min(t0, t1), far = max(t0, t1)        (the formulas do not sort them)
+     *     the near root when t_min < near < t_max, else the far root when t_min < far < t_max, else none.
+     * The window is open: a root equal to t_min or t_max is outside it.  So a ray that starts on the
+     * sphere (a root t = 0 with t_min = 0) does not hit it again where it starts. */
+    EXERCISE_STUB("02_sphere", "sphere.c", "nearest");
+    (void)t0;
+    (void)t1;
+    (void)t_min;
+    (void)t_max;
+    (void)t;
+    return false;
+}
+/* end snippet */
+
+/* snippet: intersect */
 bool sphere_intersect(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula, real *t, vec3 *n)
 {
-    real t0, t1;
-    bool real_roots = formula == SPHERE_TEXTBOOK ? textbook_roots(s, r, &t0, &t1) : robust_roots(s, r, &t0, &t1);
-    if (!real_roots)
-        return false;
-    real near = real_fmin(t0, t1), far = real_fmax(t0, t1);
-    /* The nearest root inside the open window (t_min, t_max): the far one
-     * when the near one is before t_min (p is inside the sphere). */
-    real hit = near > t_min && near < t_max ? near : far > t_min && far < t_max ? far : REAL_INFINITY;
-    if (hit == REAL_INFINITY)
+    real t0, t1, hit;
+    if (!sphere_roots(s, r, formula, &t0, &t1) || !sphere_nearest_root(t0, t1, t_min, t_max, &hit))
         return false;
     *t = hit;
     *n = sphere_normal(s, ray_at(r, hit));

@@ -10,6 +10,10 @@
  *   --cracks=N          before rendering, count the rays from 100 points inside
  *                       an icosahedron aimed at its vertices and at N - 1
  *                       points of every edge that miss it (0: do not count).
+ *   --degenerate=N      before rendering, count the false hits of N rays at
+ *                       degenerate triangles and N rays in a triangle's plane,
+ *                       and the hits lost of about N / 4 proper ones, with
+ *                       random rotated and translated data (degenerate_count.h).
  *
  * The built-in scene is one large triangle and an icosahedron; with
  * --show=cracks the camera stands inside the icosahedron.  A scene file's
@@ -20,7 +24,9 @@
 #include <time.h>
 
 #include "01_camera_rays/camera.h"
+#include "01_camera_rays/pixel.h"
 #include "03_triangle/cracks.h"
+#include "03_triangle/degenerate_count.h"
 #include "03_triangle/icosahedron.h"
 #include "renderer.h"
 #include "scene_build.h"
@@ -31,12 +37,15 @@ static const char *const triangle_choices[] = {"cramer", "watertight", NULL};
 static int show = SHOW_BARYCENTRIC;
 static int test = TRIANGLE_CRAMER;
 static int cracks_steps = 0;
+static int degenerate_cases = 0;
 
 static const knob knobs[] = {
     {"triangle", KNOB_CHOICE, &test, triangle_choices, "the ray-triangle test"},
     {"show", KNOB_CHOICE, &show, show_choices, "what to colour each pixel by"},
     {"cracks", KNOB_INT, &cracks_steps, NULL,
      "first count the rays at an icosahedron's edges, in steps of 1/V, that slip through (0: off)"},
+    {"degenerate", KNOB_INT, &degenerate_cases, NULL,
+     "first count false hits at V degenerate triangles and V in-plane rays, and lost hits (0: off)"},
 };
 
 /* --show=cracks: how close to an edge, in barycentric units, a pixel is
@@ -178,6 +187,18 @@ static void count_cracks(const char *name)
             name, triangle_choices[test], REAL_NAME, c.misses, c.rays, seconds);
 }
 
+/* --degenerate=N: false hits at degenerate triangles and by rays in the
+ * plane, lost hits on proper triangles, with the chosen test. */
+static void count_degenerate(const char *name)
+{
+    degenerate_count c = degenerate_counts(degenerate_cases, (triangle_test)test);
+    fprintf(stderr,
+            "%s: --triangle=%s (%s): %ld of %ld rays at degenerate triangles hit (worst %.3g edge lengths off); "
+            "%ld of %ld rays in the plane hit (worst %.3g); %ld of %ld clear hits lost\n",
+            name, triangle_choices[test], REAL_NAME, c.degenerate_hits, c.degenerate_rays, c.degenerate_worst,
+            c.plane_hits, c.plane_rays, c.plane_worst, c.lost_hits, c.clear_hits);
+}
+
 static void release(void *prepared)
 {
     stage *s = prepared;
@@ -191,6 +212,10 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
     const char *where = desc->path ? desc->path : "built-in scene";
     if (cracks_steps < 0 || cracks_steps > 1 << 16) {
         snprintf(err, err_size, "--cracks=%d: must be from 0 (off) to 65536", cracks_steps);
+        return NULL;
+    }
+    if (degenerate_cases < 0 || degenerate_cases > 100000000) {
+        snprintf(err, err_size, "--degenerate=%d: must be from 0 (off) to 100000000", degenerate_cases);
         return NULL;
     }
     stage *s = calloc(1, sizeof *s);
@@ -216,6 +241,8 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
     }
     if (cracks_steps > 0)
         count_cracks("03_triangle");
+    if (degenerate_cases > 0)
+        count_degenerate("03_triangle");
     return s;
 }
 
@@ -233,6 +260,7 @@ int main(int argc, char **argv)
         .prepare = prepare,
         .sample = sample,
         .release = release,
+        .pixel_to_image = pixel_to_image,
     };
     return renderer_main(&r, argc, argv);
 }

@@ -1,6 +1,8 @@
 /* triangle.c - chapter 03: the barycentric ray-triangle intersection. */
 #include "03_triangle/triangle.h"
+#include "exercise.h"
 
+#include "03_triangle/degenerate.h"
 #include "03_triangle/watertight.h"
 
 /* The lecture's slide "Barycentric ray-triangle intersection":
@@ -17,9 +19,12 @@ static bool cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_
      *     gamma = det3(a - b, a - p, d) / M     (column 2 replaced)
      *     t     = det3(a - b, a - c, a - p) / M (column 3 replaced)
      * M == 0 means no single solution (a ray parallel to the plane, or a degenerate
-     * triangle): return false before dividing.  Hit when t_min < t < t_max and the point
+     * triangle), and a non-finite M comes from infinite or NaN data: in both cases
+     * return false before dividing.  (A tiny M made of rounding noise is the given
+     * check's business, in triangle_intersect.)  Hit when t_min < t < t_max and the point
      * is inside, edges included: beta >= 0, gamma >= 0, beta + gamma <= 1.
      * Write the comparisons so that a NaN fails them: !(t > t_min && t < t_max). */
+    EXERCISE_STUB("03_triangle", "triangle.c", "cramer");
     (void)tri;
     (void)r;
     (void)t_min;
@@ -33,7 +38,15 @@ bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, tria
 {
     if (test == TRIANGLE_WATERTIGHT)
         return triangle_intersect_watertight(tri, r, t_min, t_max, hit);
-    return cramer(tri, r, t_min, t_max, hit);
+    /* Cramer's rule divides by M; where M is only rounding noise (a
+     * degenerate triangle, a ray in or along the plane) its beta, gamma and
+     * t are noise too, so such a hit does not count (degenerate.h).  Only
+     * hits pay for the check. */
+    triangle_hit h;
+    if (!cramer(tri, r, t_min, t_max, &h) || !triangle_crossing_certain(tri, r))
+        return false;
+    *hit = h;
+    return true;
 }
 /* end snippet */
 

@@ -27,8 +27,9 @@ typedef struct {
 
 /* The triangle test knob, --triangle. */
 typedef enum {
-    TRIANGLE_CRAMER,     /* the lecture's 3x3 system, solved by Cramer's rule (the default) */
-    TRIANGLE_WATERTIGHT, /* Woo, Benthin and Wald (2013): no ray slips between two triangles */
+    TRIANGLE_CRAMER,     /* the lecture's 3x3 system by Cramer's rule (chapter 03's default) */
+    TRIANGLE_WATERTIGHT, /* Woop, Benthin and Wald (2013): no ray slips between two triangles;
+                          * the default from chapter 04 on */
 } triangle_test;
 
 typedef struct {
@@ -39,8 +40,10 @@ typedef struct {
 
 /* The hit of r with tri in the open window (t_min, t_max); false when none.
  * Both sides of the triangle are hit.  A ray parallel to the triangle's
- * plane (or lying in it) and a degenerate triangle (collinear or coincident
- * vertices) are misses; no input makes the result NaN.  *hit is written
+ * plane (or lying in it), a ray that starts in the plane, and a degenerate
+ * triangle (collinear or coincident vertices) are misses, also when rounding
+ * makes their determinant not quite zero (degenerate.h); no input makes the
+ * result NaN.  *hit is written
  * only on a hit. */
 bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, triangle_test test, triangle_hit *hit);
 

@@ -1,5 +1,7 @@
-/* watertight.c - chapter 03: Woo, Benthin and Wald's watertight test (2013). */
+/* watertight.c - chapter 03: Woop, Benthin and Wald's watertight test (2013). */
 #include "03_triangle/watertight.h"
+
+#include "03_triangle/degenerate.h"
 
 static real component(vec3 v, int k) { return k == 0 ? v.x : k == 1 ? v.y : v.z; }
 
@@ -62,10 +64,11 @@ bool triangle_intersect_watertight(const triangle *tri, ray r, real t_min, real 
     real det = u + v + w;
     if (det == 0 || !isfinite(det))
         return false;
-    /* The shear rounds, so a degenerate triangle (collinear or coincident
-     * vertices) may still show a sliver of area here: ask the triangle itself.
-     * Only rays that pass the edge tests pay for this cross product. */
-    if (vec3_max_abs(vec3_cross(vec3_sub(tri->b, tri->a), vec3_sub(tri->c, tri->a))) == 0)
+    /* Rounding leaves det a sliver of either sign where it should be 0 (a
+     * degenerate triangle, a ray in the plane): accept only a crossing that
+     * the data decide (degenerate.h).  Only rays that passed the edge tests
+     * pay for this check. */
+    if (!triangle_crossing_certain(tri, r))
         return false;
     real az = sz * component(a, kz), bz = sz * component(b, kz), cz = sz * component(c, kz);
     real t = (u * az + v * bz + w * cz) / det;

@@ -1,6 +1,6 @@
 /* watertight.h - chapter 03: the watertight ray/triangle test.
  *
- * Woo, Benthin and Wald, "Watertight Ray/Triangle Intersection", Journal of
+ * Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection", Journal of
  * Computer Graphics Techniques 2(1), 2013.  The ray is made the z axis of a
  * sheared coordinate system; there the test is three 2D edge functions whose
  * values depend only on the ray and the edge's two vertices, so two

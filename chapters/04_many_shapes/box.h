@@ -1,6 +1,7 @@
 /* box.h - chapter 04: an axis-aligned box as 12 triangles.
  *
- * SCENES.md's <surface type="Box"> is given by two corners, minPt and maxPt.
+ * A <surface type="Box"> of the scene format (docs/scenes.md) is given by two
+ * corners, minPt and maxPt.
  * Its six faces are two triangles each, wound counter-clockwise seen from
  * outside, so that every triangle_normal() (b - a) x (c - a) points out of
  * the box, as the RGBNormals images of the course show.

@@ -1,5 +1,6 @@
 /* closest_hit.c - chapter 04: the first surface along a ray. */
 #include "04_many_shapes/closest_hit.h"
+#include "exercise.h"
 
 /* snippet: surfaces_intersect */
 bool surfaces_intersect(const surface_list *list, ray r, real t_min, real t_max, hit_record *hit)
@@ -13,6 +14,7 @@ bool surfaces_intersect(const surface_list *list, ray r, real t_min, real t_max,
      * it only reports hits with t < t_best, so every hit it reports is closer
      * than the best so far.  Copy such a candidate to *hit, set hit->surface = k,
      * and return whether anything was hit. */
+    EXERCISE_STUB("04_many_shapes", "closest_hit.c", "closest");
     (void)list;
     (void)r;
     (void)t_min;

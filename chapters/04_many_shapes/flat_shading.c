@@ -6,7 +6,7 @@
 /* snippet: flat_color */
 color flat_color(const scene *desc, const hit_record *hit)
 {
-    if (hit->shader < 0) /* SCENES.md: a surface without a shader is white */
+    if (hit->shader < 0) /* docs/scenes.md: a surface without a shader is white */
         return color_make(1, 1, 1);
     const scene_shader *shader = &desc->shaders[hit->shader];
     if (shader->kind == SHADER_RGB_NORMALS) { /* (n + 1) / 2: each component from [-1, 1] to [0, 1] */

@@ -7,12 +7,14 @@
  * closer one hides the other, and where they cut through each other the
  * outline of the cut shows.
  *
- * Knobs: --sphere=robust|textbook (chapter 02), --triangle=cramer|watertight
- * (chapter 03), passed to every intersection through the surface list.
+ * Knobs: --sphere=robust|textbook (chapter 02), --triangle=watertight|cramer
+ * (chapter 03; watertight by default, TRIANGLE_TEST_DEFAULT), passed to every
+ * intersection through the surface list.
  */
 #include <stdlib.h>
 
 #include "01_camera_rays/camera.h"
+#include "01_camera_rays/pixel.h"
 #include "04_many_shapes/flat_shading.h"
 #include "04_many_shapes/scene_surfaces.h"
 #include "renderer.h"
@@ -23,7 +25,7 @@ static const sphere_formula sphere_formulas[] = {SPHERE_ROBUST, SPHERE_TEXTBOOK}
 static int sphere_choice = 0;
 static const char *const triangle_choices[] = {"cramer", "watertight", NULL};
 static const triangle_test triangle_tests[] = {TRIANGLE_CRAMER, TRIANGLE_WATERTIGHT};
-static int triangle_choice = 0;
+static int triangle_choice = TRIANGLE_TEST_DEFAULT; /* triangle_choices is in the order of the enum */
 
 static const knob knobs[] = {
     {"sphere", KNOB_CHOICE, &sphere_choice, sphere_choices, "ray-sphere formula (chapter 02)"},
@@ -140,6 +142,7 @@ int main(int argc, char **argv)
         .prepare = prepare,
         .sample = sample,
         .release = release,
+        .pixel_to_image = pixel_to_image,
     };
     return renderer_main(&r, argc, argv);
 }

@@ -4,9 +4,9 @@
  * side by side.  A Box of the scene file becomes 12 triangles and a Mesh its
  * faces, so the list knows only the two shapes of chapters 02 and 03.
  *
- * Geometry knows nothing of shading (DESIGN.md, principle 2): a surface
- * carries its shape and the index of its scene shader, and the renderer
- * looks the colour up.  The list also carries the accuracy knobs of the two
+ * Geometry knows nothing of shading: a surface carries its shape and the
+ * index of its scene shader, and the renderer looks the colour up, so that
+ * the shading chapters change the lookup, not the list.  The list also carries the accuracy knobs of the two
  * intersection tests, so that every call uses the same ones.
  */
 #ifndef CH04_SURFACE_H
@@ -50,6 +50,14 @@ typedef struct {
     int shader;       /* index into scene.shaders; -1: none */
     real beta, gamma; /* a triangle's barycentric coordinates of point; 0 for a sphere */
 } hit_record;
+/* end snippet */
+
+/* snippet: default_test */
+/* The triangle test of every renderer from this chapter on, unless
+ * --triangle says otherwise: the watertight one, because Cramer's rule lets
+ * eye rays through the shared edge of two triangles (a square floor of two
+ * triangles shows background pixels along its diagonal; see the README). */
+#define TRIANGLE_TEST_DEFAULT TRIANGLE_WATERTIGHT
 /* end snippet */
 
 /* An empty list with the given knobs. */

@@ -10,7 +10,7 @@ static vec3 unit(vec3 a) { return vec3_normalize(vec3_scale(a, 1 / vec3_max_abs(
 /* snippet: basis */
 void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
 {
-    /* EXERCISE basis: the camera's orthonormal basis (lecture, "Specifying views"; SCENES.md <camera>):
+    /* EXERCISE basis: the camera's orthonormal basis (lecture, "Specifying views"; <camera> in docs/scenes.md):
      *     w = -viewDir / |viewDir|
      *     u = (viewDir x viewUp) / |viewDir x viewUp|
      *     v = w x u

@@ -4,7 +4,7 @@
  * centre c and radius R, and f = p - c is the ray's origin seen from the
  * centre.  Putting x = p + t d into (x - c).(x - c) - R^2 = 0 gives
  *     A t^2 + 2 B t + C = 0,   A = d.d,  B = d.f,  C = f.f - R^2      (1)
- * Both formulas below return its two roots; sphere_intersect() picks one.
+ * Both formulas below return its two roots; sphere_nearest_root() picks one.
  */
 #include "02_sphere/sphere.h"
 
@@ -66,7 +66,9 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     /* EXERCISE robust_roots: the stable pair of roots (5)
      *     q = -(B + sign(B) sqrt(disc))    B and sign(B) sqrt(disc) have the same sign: no cancellation
      *     t0 = q / A,  t1 = C / q          (C = f.f - R^2; when q = 0 both roots are 0: t1 = t0)
-     * Which of t0, t1 is nearer depends on the sign of B; sphere_intersect() sorts them. */
+     * sign(B) must be +1 or -1, also for B = 0 (a ray whose origin is the point of its line closest to c):
+     * a sign(0) = 0 makes q = 0 there, and C / q a division by zero.
+     * Which of t0, t1 is nearer depends on the sign of B; sphere_nearest_root() sorts them. */
     real C = vec3_dot(f, f) - s->radius * s->radius;
     real root = real_sqrt(disc);
     real q = -(B + (B < 0 ? -root : root));
@@ -82,8 +84,13 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
 }
 /* end snippet */
 
-/* The outward unit normal at a point x of the sphere. */
-static vec3 sphere_normal(const sphere *s, vec3 x)
+bool sphere_roots(const sphere *s, ray r, sphere_formula formula, real *t0, real *t1)
+{
+    return formula == SPHERE_TEXTBOOK ? textbook_roots(s, r, t0, t1) : robust_roots(s, r, t0, t1);
+}
+
+/* snippet: normal */
+vec3 sphere_normal(const sphere *s, vec3 x)
 {
     /* EXERCISE normal: the outward unit normal at the hit point x:
      *     n = (x - c) / |x - c|
@@ -98,19 +105,43 @@ static vec3 sphere_normal(const sphere *s, vec3 x)
     return vec3_make(0, 0, 0);
     END EXERCISE */
 }
+/* end snippet */
 
 /* snippet: nearest */
+bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
+{
+    /* EXERCISE nearest: the nearest root inside the open window (t_min, t_max), the lecture's
+     * s.intersect(ray, tMin, tMax):
+     *     near = min(t0, t1), far = max(t0, t1)        (the formulas do not sort them)
+     *     the near root when t_min < near < t_max, else the far root when t_min < far < t_max, else none.
+     * The window is open: a root equal to t_min or t_max is outside it.  So a ray that starts on the
+     * sphere (a root t = 0 with t_min = 0) does not hit it again where it starts. */
+    real near = real_fmin(t0, t1), far = real_fmax(t0, t1);
+    if (near > t_min && near < t_max) {
+        *t = near;
+        return true;
+    }
+    if (far > t_min && far < t_max) { /* the near root is at or before t_min: p is inside the sphere */
+        *t = far;
+        return true;
+    }
+    return false;
+    /* STUB
+    (void)t0;
+    (void)t1;
+    (void)t_min;
+    (void)t_max;
+    (void)t;
+    return false;
+    END EXERCISE */
+}
+/* end snippet */
+
+/* snippet: intersect */
 bool sphere_intersect(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula, real *t, vec3 *n)
 {
-    real t0, t1;
-    bool real_roots = formula == SPHERE_TEXTBOOK ? textbook_roots(s, r, &t0, &t1) : robust_roots(s, r, &t0, &t1);
-    if (!real_roots)
-        return false;
-    real near = real_fmin(t0, t1), far = real_fmax(t0, t1);
-    /* The nearest root inside the open window (t_min, t_max): the far one
-     * when the near one is before t_min (p is inside the sphere). */
-    real hit = near > t_min && near < t_max ? near : far > t_min && far < t_max ? far : REAL_INFINITY;
-    if (hit == REAL_INFINITY)
+    real t0, t1, hit;
+    if (!sphere_roots(s, r, formula, &t0, &t1) || !sphere_nearest_root(t0, t1, t_min, t_max, &hit))
         return false;
     *t = hit;
     *n = sphere_normal(s, ray_at(r, hit));

@@ -1,0 +1,16 @@
+/* exercise.c - the line an unfinished exercise prints (see exercise.h). */
+#include "exercise.h"
+
+#include <stdio.h>
+#include <string.h>
+
+void exercise_announce(const char *chapter, const char *file, const char *exercise, const char *function)
+{
+    /* "01_camera_rays" -> "01": the chapter's number. */
+    int number = (int)strcspn(chapter, "_");
+    /* One fprintf: stdio locks the stream, so lines from two threads do not interleave. */
+    fprintf(stderr,
+            "chapter %.*s: %s is still an exercise (TODO %s in chapters/%s/%s); it returns a placeholder, "
+            "so images that need it show only the background (make REFERENCE=%.*s links the reference chapter %.*s instead)\n",
+            number, chapter, function, exercise, chapter, file, number, chapter, number, chapter);
+}

@@ -1,0 +1,65 @@
+#!/bin/bash
+# handout.sh DEST DOUBLE_LIBS FLOAT_LIBS - write the repository a student receives.
+#
+# DEST gets the project without solutions/: Makefile, README.md, common/,
+# chapters/ (the skeletons), tests/, tools/, docs/, and reference/double/ and
+# reference/float/, the compiled reference of each chapter's exercise files
+# (libNN_name.a from DOUBLE_LIBS and FLOAT_LIBS, which `make handout` builds).
+# The Makefile of the copy finds them: grading chapter N links the student's
+# chapter N with the libraries of the others.  Then every exercise's solution
+# lines (tools/solution-lines.awk) are looked for in DEST: the copy is
+# refused, and removed, when one exercise's lines all appear in one file.
+# `handout.sh --check DIR` runs that check alone (the autograder's zip).
+set -u
+tools=$(dirname "$0")
+
+# leak_check DIR: fails naming each exercise whose solution lines are all in one file of DIR.
+leak_check() {
+    local dir=$1 status=0 lines block files
+    lines=$(awk -f "$tools/solution-lines.awk" solutions/[0-9][0-9]_*/*.c) || return 1
+    for block in $(printf '%s\n' "$lines" | cut -f1 | sort -u); do
+        files=""
+        first=1
+        while IFS= read -r line; do
+            found=$(grep -rlF --exclude='*.a' -- "$line" "$dir" | sort)
+            if [ "$first" = 1 ]; then files=$found; first=0; else files=$(comm -12 <(echo "$files") <(echo "$found")); fi
+        done < <(printf '%s\n' "$lines" | awk -F'\t' -v b="$block" '$1 == b { print $2 }')
+        if [ -n "$files" ]; then
+            echo "handout: the solution of exercise ${block##*:} of ${block%:*} is in: $(echo $files)" >&2
+            status=1
+        fi
+    done
+    return $status
+}
+
+if [ "${1:-}" = --check ]; then
+    leak_check "$2" && echo "$2: no solution source (checked $(awk -f "$tools/solution-lines.awk" solutions/[0-9][0-9]_*/*.c | cut -f1 | sort -u | wc -l) exercises)"
+    exit
+fi
+
+dest=${1:?usage: handout.sh DEST DOUBLE_LIBS FLOAT_LIBS}
+double_libs=${2:?} float_libs=${3:?}
+if [ -e "$dest" ] && [ -n "$(ls -A "$dest")" ]; then
+    echo "handout: $dest exists and is not empty; give a new folder" >&2
+    exit 1
+fi
+mkdir -p "$dest/reference/double" "$dest/reference/float" || exit 1
+cp -R Makefile README.md common chapters tests tools docs "$dest/" || exit 1
+[ -e .gitignore ] && cp .gitignore "$dest/"
+cp "$double_libs"/lib*.a "$dest/reference/double/" || exit 1
+cp "$float_libs"/lib*.a "$dest/reference/float/" || exit 1
+cat >"$dest/reference/README.md" <<'TEXT'
+# The compiled reference
+
+`double/libNN_name.a` and `float/libNN_name.a` hold the reference versions of chapter NN's exercise files,
+compiled (for `REAL=double` and `REAL=float`).  `make grade CHAPTER=NN` grades your chapter NN with these
+libraries standing in for the other chapters, so a mistake in one chapter costs points in that chapter
+only.  `make STUDENT=0` builds every renderer from them: the reference images, to compare with yours.
+TEXT
+if ! leak_check "$dest"; then
+    rm -rf "$dest"
+    echo "handout: refused; $dest removed" >&2
+    exit 1
+fi
+n=$(ls "$dest"/reference/double/*.a | wc -l)
+echo "wrote $dest: the student's copy (skeletons, tests, common/, docs/, and $n compiled reference libraries; no solutions/)"

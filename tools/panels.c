@@ -1,0 +1,133 @@
+/* panels.c - puts images side by side, each under a label, into one PNG.
+ *
+ *     panels OUTPUT.png IMAGE LABEL [IMAGE LABEL ...]
+ *
+ * The images must have the same height.  Each gets a white strip above it
+ * with its LABEL centred, in the 5 x 7 bitmap font of font5x7.h (black), scaled
+ * by the largest whole factor up to 3 at which every label fits its panel;
+ * panels are 16 pixels apart.  Used by tools/figures.sh for the `panels`
+ * lines of a chapter's figures.txt (docs/CONTRIBUTING.md).  The output is a
+ * function of the inputs alone, so figures stay byte-reproducible.
+ *
+ * Exit status: 0, or 1 with one line naming the problem (no output written).
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include "font5x7.h"
+
+enum { GAP = 16, MAX_SCALE = 3 };
+
+typedef struct {
+    unsigned char *pixels; /* RGB, top row first */
+    int width, height;
+    const char *label, *path;
+} panel;
+
+static const glyph *find_glyph(char c)
+{
+    for (size_t k = 0; k < sizeof font5x7 / sizeof font5x7[0]; k++)
+        if (font5x7[k].c == c)
+            return &font5x7[k];
+    return NULL;
+}
+
+/* A glyph is 5 columns and 1 of space: 6 columns a character. */
+static int text_width(const char *s, int scale) { return ((int)strlen(s) * 6 - 1) * scale; }
+
+static void put(unsigned char *img, int width, int x, int y, unsigned char value)
+{
+    unsigned char *p = img + 3 * ((size_t)y * (size_t)width + (size_t)x);
+    p[0] = p[1] = p[2] = value;
+}
+
+static void draw_text(unsigned char *img, int width, int x0, int y0, const char *s, int scale)
+{
+    for (int k = 0; s[k]; k++) {
+        const glyph *g = find_glyph(s[k]);
+        const int drop = strchr("gpqy", s[k]) ? 2 : 0; /* their tails go below the line */
+        for (int row = 0; row < 7; row++)
+            for (int col = 0; col < 5; col++) {
+                /* an unknown character is a box */
+                int ink = g ? g->rows[row][col] == '#' : row == 0 || row == 6 || col == 0 || col == 4;
+                if (!ink)
+                    continue;
+                for (int a = 0; a < scale; a++)
+                    for (int b = 0; b < scale; b++)
+                        put(img, width, x0 + (6 * k + col) * scale + b, y0 + (row + drop) * scale + a, 0);
+            }
+    }
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 4 || argc % 2 != 0) {
+        fprintf(stderr, "usage: %s OUTPUT.png IMAGE LABEL [IMAGE LABEL ...]\n", argv[0]);
+        return 2;
+    }
+    const char *output = argv[1];
+    int n = (argc - 2) / 2, status = 1;
+    panel *panels = calloc((size_t)n, sizeof *panels);
+    unsigned char *out = NULL;
+    if (!panels) {
+        fprintf(stderr, "panels: out of memory\n");
+        return 1;
+    }
+    int total = 0, height = 0, scale = MAX_SCALE;
+    for (int k = 0; k < n; k++) {
+        panel *p = &panels[k];
+        p->path = argv[2 + 2 * k];
+        p->label = argv[3 + 2 * k];
+        int channels;
+        p->pixels = stbi_load(p->path, &p->width, &p->height, &channels, 3);
+        if (!p->pixels) {
+            fprintf(stderr, "panels: %s: cannot read the image (%s)\n", p->path, stbi_failure_reason());
+            goto done;
+        }
+        if (k > 0 && p->height != height) {
+            fprintf(stderr, "panels: %s is %d pixels high, %s %d: panels must have the same height\n", p->path,
+                    p->height, panels[0].path, height);
+            goto done;
+        }
+        height = p->height;
+        total += p->width + (k > 0 ? GAP : 0);
+        while (scale > 1 && text_width(p->label, scale) > p->width)
+            scale--;
+        if (text_width(p->label, scale) > p->width) {
+            fprintf(stderr, "panels: the label '%s' is wider than its image %s (%d pixels)\n", p->label, p->path,
+                    p->width);
+            goto done;
+        }
+    }
+    const int strip = 9 * scale + 2 * 3 * scale; /* the label's cell, with a margin of 3 font pixels around */
+    const int full = strip + height;
+    out = malloc((size_t)total * (size_t)full * 3);
+    if (!out) {
+        fprintf(stderr, "panels: out of memory for a %dx%d image\n", total, full);
+        goto done;
+    }
+    memset(out, 255, (size_t)total * (size_t)full * 3);
+    for (int k = 0, x = 0; k < n; x += panels[k].width + GAP, k++) {
+        const panel *p = &panels[k];
+        draw_text(out, total, x + (p->width - text_width(p->label, scale)) / 2, 3 * scale, p->label, scale);
+        for (int y = 0; y < p->height; y++)
+            memcpy(out + 3 * ((size_t)(strip + y) * (size_t)total + (size_t)x),
+                   p->pixels + 3 * (size_t)y * (size_t)p->width, 3 * (size_t)p->width);
+    }
+    if (!stbi_write_png(output, total, full, 3, out, total * 3)) {
+        fprintf(stderr, "panels: %s: cannot write the image\n", output);
+        remove(output);
+        goto done;
+    }
+    status = 0;
+done:
+    for (int k = 0; k < n; k++)
+        stbi_image_free(panels[k].pixels);
+    free(panels);
+    free(out);
+    return status;
+}
