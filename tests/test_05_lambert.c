@@ -44,9 +44,20 @@ static void test_irradiance_facing(void **state)
     scene_light light = {.position = vec3_add(point, vec3_scale(n, (real)2.5)), .intensity = {10, 20, 5}};
     color k_d = {0.3, 0.2, 0.7};
     color L = lambert(k_d, point, n, &light);
-    assert_close(0.3 * 10 / 6.25, L.r, FAR_TOL(0.5, 2.5));
-    assert_close(0.2 * 20 / 6.25, L.g, FAR_TOL(0.7, 2.5));
-    assert_close(0.7 * 5 / 6.25, L.b, FAR_TOL(0.6, 2.5));
+    const char *in = describe("lambert(k_d = (0.3, 0.2, 0.7), light 2.5 straight above the point, I = (10, 20, 5))");
+    const suspect sr[] = {
+        {0.3 * 10, "no falloff: divide by r^2, the squared distance to the light"},
+        {0.3 * 10 / 2.5, "divided by r, not r^2: the light spreads over a sphere of area 4 pi r^2"},
+        {0.3 * 10 * 2.5 / 6.25, "l not normalized: n . (light.pos - point) is r times the cosine"},
+        {10 / 6.25, "k_d missing: the surface reflects k_d of the irradiance"},
+        {(0.3 + 10) / 6.25, "k_d added to I: multiply them, channel by channel (color_mul)"},
+    };
+    assert_close_why(0.3 * 10 / 6.25, L.r, FAR_TOL(0.5, 2.5), describe("%s: red", in),
+                     "L_d = k_d max(0, n . l) I / r^2", sr, sizeof sr / sizeof sr[0]);
+    assert_close_why(0.2 * 20 / 6.25, L.g, FAR_TOL(0.7, 2.5), describe("%s: green", in),
+                     "each channel: k_d.g I.g, not another channel's", NULL, 0);
+    assert_close_why(0.7 * 5 / 6.25, L.b, FAR_TOL(0.6, 2.5), describe("%s: blue", in),
+                     "each channel: k_d.b I.b, not another channel's", NULL, 0);
 }
 
 /* Lambert's cosine law: the light at angle theta from the normal, always at
@@ -64,7 +75,14 @@ static void test_cosine_law(void **state)
         scene_light light = {.position = vec3_add(point, vec3_scale(at_angle(n, theta), 3)), .intensity = {9, 9, 9}};
         double expected = 0.25 * 9 / 9 * fmax(0, cos(theta));
         color L = lambert(k_d, point, n, &light);
-        assert_close(expected, L.r, FAR_TOL(0.25, 3));
+        const suspect sc[] = {
+            {0.25 * cos(theta), "negative: clamp the cosine, max(0, n . l): a light behind the surface gives nothing"},
+            {0.25, "no cosine: the irradiance falls with cos(theta) = n . l as the surface tilts away"},
+            {0.25 * 9 / 3 * fmax(0, cos(theta)), "divided by r, not r^2"},
+        };
+        assert_close_why(expected, L.r, FAR_TOL(0.25, 3),
+                         describe("lambert(k_d = 0.25, I = 9, light 3 away at %g degrees from n): red", degrees[k]),
+                         "L_d = k_d max(0, n . l) I / r^2", sc, sizeof sc / sizeof sc[0]);
         assert_close(L.r, L.g, 0);
     }
     /* 60 degrees: exactly half of facing, as the lecture says */

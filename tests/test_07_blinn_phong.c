@@ -39,7 +39,15 @@ static void test_half_vector(void **state)
     for (double deg = 5; deg < 90; deg += 21) {
         vec3 v = at_angle(n, side, deg * pi / 180);
         vec3 l = at_angle(n, side, -deg * pi / 180); /* the mirror direction */
-        assert_vec3_close(n, half_vector(v, l), TOL(1));
+        const suspect_vec3 sh[] = {
+            {vec3_add(v, l), "not normalized: h = (v + l) / |v + l|"},
+            {vec3_scale(vec3_add(v, l), 0.5), "halved, not normalized: |v + l| / 2 is cos(angle / 2), not 1"},
+            {l, "h is l: the half vector lies half-way between v and l"},
+            {v, "h is v: the half vector lies half-way between v and l"},
+        };
+        assert_vec3_why(n, half_vector(v, l), TOL(1),
+                        describe("half_vector(v, l) with l the mirror of v about n, %g degrees from it", deg),
+                        "h = (v + l) / |v + l|, which is n in the mirror configuration", sh, sizeof sh / sizeof sh[0]);
     }
     vec3 v = vec3_normalize(vec3_make(0.3, 0.9, -0.2)), l = vec3_normalize(vec3_make(-0.7, 0.1, 0.5));
     vec3 h = half_vector(v, l);
@@ -70,9 +78,20 @@ static void test_exponent_behaviour(void **state)
         double previous = INFINITY;
         for (int k = 0; k < 4; k++) {
             color L = blinn_phong_specular(k_s, (real)exponents[k], point, n, v, &light, PHONG_COURSE);
-            double expected = 0.9 * 10 / 6.25 * pow(cos(alphas[a] * pi / 180), exponents[k]);
+            double cos_alpha = cos(alphas[a] * pi / 180), cos_l = cos(40 * pi / 180);
+            double expected = 0.9 * 10 / 6.25 * pow(cos_alpha, exponents[k]);
+            const suspect ss[] = {
+                {expected * cos_l, "times n . l: that is the lecture's form; the course's has no cosine"},
+                {0.9 * 10 / 6.25 * cos_alpha, "exponent ignored: (n . h)^p, with p the shader's exponent"},
+                {0.9 * 10 * pow(cos_alpha, exponents[k]), "no falloff: divide by r^2"},
+                {0.9 * 10 / 2.5 * pow(cos_alpha, exponents[k]), "divided by r, not r^2"},
+                {10 / 6.25 * pow(cos_alpha, exponents[k]), "k_s missing"},
+            };
             /* cos^p has the relative error of cos times p */
-            assert_close(expected, L.r, FAR_TOL(1.44, 2.5) * (1 + exponents[k] * alphas[a] / 10));
+            assert_close_why(expected, L.r, FAR_TOL(1.44, 2.5) * (1 + exponents[k] * alphas[a] / 10),
+                             describe("blinn_phong_specular(k_s.r = 0.9, p = %g, I = 10, r = 2.5, course form, "
+                                      "n . h = cos(%g degrees)): red", exponents[k], alphas[a]),
+                             "k_s max(0, n . h)^p I / r^2", ss, sizeof ss / sizeof ss[0]);
             assert_close(L.r * 0.3 / 0.9, L.b, TOL(L.r));
             if (alphas[a] > 0)
                 assert_true(L.r < previous); /* narrower with every larger p */
@@ -105,7 +124,13 @@ static void test_course_and_lecture_forms(void **state)
         color course = blinn_phong_specular(k_s, 50, point, n, v, &light, PHONG_COURSE);
         color lecture = blinn_phong_specular(k_s, 50, point, n, v, &light, PHONG_LECTURE);
         assert_true(course.r > 0);
-        assert_close(course.r * cos(theta), lecture.r, FAR_TOL(course.r, 3) * 50);
+        const suspect sf[] = {
+            {course.r, "the lecture's form is the course's times max(0, n . l); it was left out"},
+            {course.r * cos(theta) * cos(theta), "n . l applied twice"},
+        };
+        assert_close_why(course.r * cos(theta), lecture.r, FAR_TOL(course.r, 3) * 50,
+                         describe("blinn_phong_specular(p = 50, light at %g degrees from n), lecture form", degrees[k]),
+                         "lecture: k_s max(0, n . h)^p max(0, n . l) I / r^2", sf, sizeof sf / sizeof sf[0]);
         assert_close(0, course.b, 0); /* k_s has no blue */
     }
 }
@@ -186,7 +211,16 @@ static void test_two_lights_add(void **state)
                          blinn_phong_specular(s->specular_color, s->exponent, sp.hit.point, sp.n, sp.v, &b,
                                               PHONG_COURSE));
     assert_true(La.r > 0.01 && Lb.r > 0.01);
-    assert_close(0.02 + La.r + Lb.r, both.r, TOL(1));
+    const suspect sl[] = {
+        {desc.ambient.r, "no light added: loop over tr->desc->lights and add each unblocked one's contribution"},
+        {desc.ambient.r + La.r, "only the first light: loop over all n_lights"},
+        {desc.ambient.r + Lb.r, "only the last light: add (+=) each contribution to result, do not replace it"},
+        {La.r + Lb.r, "ambient missing: start from result = ambient"},
+    };
+    assert_close_why(desc.ambient.r + La.r + Lb.r, both.r, TOL(1),
+                     describe("shade_phong: a Phong floor point, ambient 0.02, two lights in front, nothing between"),
+                     "result = ambient + the sum over the unblocked lights of light_contribution", sl,
+                     sizeof sl / sizeof sl[0]);
     assert_close(0.03 + La.g + Lb.g, both.g, TOL(1));
     assert_close(0.04 + La.b + Lb.b, both.b, TOL(1));
 
@@ -196,7 +230,10 @@ static void test_two_lights_add(void **state)
     rays[RAY_SHADOW] = 0;
     color one = shade_spot(&desc, PHONG_COURSE, rays, &sp);
     assert_int_equal(2, rays[RAY_SHADOW]);
-    assert_close(0.02 + Lb.r, one.r, TOL(1));
+    const suspect sb[] = {{desc.ambient.r + La.r + Lb.r, "the blocked light was added: ask light_blocked first"}};
+    assert_close_why(desc.ambient.r + Lb.r, one.r, TOL(1),
+                     describe("shade_phong: the same point, a sphere between it and the first light"),
+                     "a light whose shadow ray is blocked adds nothing", sb, 1);
     assert_close(0.04 + Lb.b, one.b, TOL(1));
     scene_free(&desc);
 }

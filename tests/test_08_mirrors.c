@@ -139,9 +139,11 @@ static void add_plane(scene *desc, int shader, vec3 centre, vec3 n, real size)
     vec3 v[3];
     for (int k = 0; k < 3; k++) {
         double angle = 2.0943951023931957 * k; /* 120 degrees apart, counter-clockwise about n */
-        v[k] = vec3_add(centre, vec3_add(vec3_scale(a, size * (real)cos(angle)), vec3_scale(b, size * (real)sin(angle))));
+        v[k] = vec3_add(centre,
+                        vec3_add(vec3_scale(a, size * (real)cos(angle)), vec3_scale(b, size * (real)sin(angle))));
     }
-    scene_add_surface(desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = shader, .v0 = v[0], .v1 = v[1], .v2 = v[2]});
+    scene_add_surface(desc,
+                      (scene_surface){.kind = SURFACE_TRIANGLE, .shader = shader, .v0 = v[0], .v1 = v[1], .v2 = v[2]});
 }
 
 /* A tilted mirror far from the origin and a probe where the mirror direction
@@ -160,7 +162,8 @@ static void test_mirror_ray_reaches_probe(void **state)
     vec3 eye = vec3_add(far_point, vec3_make(-3, 5, 2));
     vec3 d = vec3_sub(far_point, eye);
     vec3 r = reflect(d, n); /* checked by test_reflect_known */
-    probe_shader = add_shader(&desc, SHADER_LAMBERTIAN, color_make((real)0.2, (real)0.4, (real)0.6), color_make(0, 0, 0));
+    probe_shader =
+        add_shader(&desc, SHADER_LAMBERTIAN, color_make((real)0.2, (real)0.4, (real)0.6), color_make(0, 0, 0));
     scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = probe_shader,
                                              .center = vec3_add(far_point, vec3_scale(r, 2)), .radius = 0.5});
     path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
@@ -201,7 +204,8 @@ static void test_glazed_adds_to_chapter_07(void **state)
         phong.mirror_coefficient = k_m;
         vec3 n = vec3_normalize(vec3_make(-1, 3, 1));
         add_plane(&desc, scene_add_shader(&desc, phong), far_point, n, 10);
-        scene_add_light(&desc, (scene_light){.position = vec3_add(far_point, vec3_make(1, 4, 2)), .intensity = {5, 6, 7}});
+        scene_add_light(&desc,
+                        (scene_light){.position = vec3_add(far_point, vec3_make(1, 4, 2)), .intensity = {5, 6, 7}});
         vec3 eye = vec3_add(far_point, vec3_make(2, 3, -1));
         path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
         uint64_t rays[RAY_KINDS] = {0}, rays_07[RAY_KINDS] = {0};

@@ -22,18 +22,20 @@ static const knob knobs[] = {
      "where secondary rays start: none (the blunder), fixed 1e-3, bound (error bound)"},
 };
 
-/* "policy scale acne% leak%" a line, with the build's real type first. */
+/* "build policy shape scale acne% leak%" a line, the build being this one's real type. */
 static int acne_table(void)
 {
     for (int p = 0; eps_policy_names[p]; p++) {
-        for (int k = 0; k < ACNE_SCALES; k++) {
-            acne_result result;
-            if (acne_measure(acne_scales[k], (eps_policy)p, 64, &result) != 0) {
-                fprintf(stderr, "06_shadows: out of memory\n");
-                return 1;
+        for (int shape = 0; shape < ACNE_SHAPES; shape++) {
+            for (int k = 0; k < ACNE_SCALES; k++) {
+                acne_result result;
+                if (acne_measure((acne_shape)shape, acne_scales[k], (eps_policy)p, 64, &result) != 0) {
+                    fprintf(stderr, "06_shadows: out of memory\n");
+                    return 1;
+                }
+                printf("%s %s %s %g %.2f %.2f\n", REAL_NAME, eps_policy_names[p], acne_shape_names[shape],
+                       (double)acne_scales[k], result.acne, result.leak);
             }
-            printf("%s %s %g %.2f %.2f\n", REAL_NAME, eps_policy_names[p], (double)acne_scales[k], result.acne,
-                   result.leak);
         }
     }
     return 0;

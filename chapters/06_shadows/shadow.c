@@ -1,5 +1,6 @@
 /* shadow.c - chapter 06: is the light blocked? */
 #include "06_shadows/shadow.h"
+#include "exercise.h"
 
 /* snippet: light_blocked */
 bool light_blocked(const tracer *tr, const shading_point *sp, vec3 light_pos, eps_policy policy, uint64_t *rays)
@@ -11,6 +12,7 @@ bool light_blocked(const tracer *tr, const shading_point *sp, vec3 light_pos, ep
      *     count it: ++rays[RAY_SHADOW];
      *     it is blocked when tr->closest_hit(tr->accel, ray, 0, t_max, &hit)
      *     finds a surface in (0, t_max). */
+    EXERCISE_STUB("06_shadows", "shadow.c", "shadow");
     (void)tr;
     (void)sp;
     (void)light_pos;

@@ -1,6 +1,6 @@
 # phong-plots.gp - the lecture's "Phong model - plots": (cos alpha)^p for exponents 1 to 1000.
 # Run by `make figures` as: gnuplot -e "output='FILE.png'; build='BUILD'" phong-plots.gp
-set terminal pngcairo size 800,420 font "sans,10"
+set terminal pngcairo size 1100,520 font "sans,12"
 set output output
 set title "Blinn-Phong: increasing p narrows the peak of (n . h)^p = (cos alpha)^p"
 set xlabel "alpha, the angle between n and h (degrees)"

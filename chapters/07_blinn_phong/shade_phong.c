@@ -1,5 +1,6 @@
 /* shade_phong.c - chapter 07: the shade function of the Blinn-Phong stage. */
 #include "07_blinn_phong/shade_phong.h"
+#include "exercise.h"
 
 #include "05_lambert/lambert.h"
 #include "05_lambert/shade_lambert.h"
@@ -37,6 +38,7 @@ color shade_phong(const tracer *tr, const shading_point *sp, int depth, uint64_t
      * skip a light behind the surface without casting a shadow ray
      * (light_in_front, chapter 06), ask light_blocked (chapter 06, with the
      * policy tracer_eps(tr)), and add light_contribution to result. */
+    EXERCISE_STUB("07_blinn_phong", "shade_phong.c", "lights");
     return result;
 }
 /* end snippet */

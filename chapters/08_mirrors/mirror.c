@@ -1,5 +1,6 @@
 /* mirror.c - chapter 08: the mirror direction and the mirror term L_m. */
 #include "08_mirrors/mirror.h"
+#include "exercise.h"
 
 #include "06_shadows/spawn.h"
 #include "08_mirrors/path.h"
@@ -11,6 +12,7 @@ vec3 reflect(vec3 d, vec3 n)
      *     written for the ray's direction d = -v:
      *         r = d - 2 (d . n) n
      *     n is a unit vector; d may have any length (r gets the same one). */
+    EXERCISE_STUB("08_mirrors", "mirror.c", "reflect");
     (void)n;
     return d;
 }
@@ -29,6 +31,7 @@ color mirror_radiance(const tracer *tr, const shading_point *sp, color k_m, int 
      *     - count it: ++rays[RAY_REFLECTED];
      *     - and trace it, one level deeper: trace(&next.tr, ray, 0,
      *       REAL_INFINITY, depth + 1, rays). */
+    EXERCISE_STUB("08_mirrors", "mirror.c", "recursion");
     (void)tr;
     (void)sp;
     (void)k_m;

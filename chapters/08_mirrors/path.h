@@ -40,7 +40,7 @@ typedef struct {
 /* end snippet */
 
 /* The defaults of --depth and --min-weight (measured in the README). */
-#define PATH_DEFAULT_DEPTH 16
+#define PATH_DEFAULT_DEPTH 32
 #define PATH_DEFAULT_MIN_WEIGHT ((real)1e-3)
 /* --depth beyond this counts as this: the recursion must not exhaust the stack. */
 #define PATH_MAX_DEPTH 256
