@@ -2,23 +2,24 @@
 #include "10_interpolation/shade_interp.h"
 
 #include "04_many_shapes/flat_shading.h"
-#include "08_mirrors/shade_glazed.h"
 #include "10_interpolation/face_query.h"
 #include "10_interpolation/interpolate.h"
 #include "10_interpolation/sphere_uv.h"
 
-/* The shading of the chapters before this one. */
+/* The shading of the chapters before this one: chapter 09's glass, which
+ * shades every other shader by chapter 08's glazed surface. */
 static color shade_earlier(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
-    return shade_glazed(tr, sp, depth, rays);
+    return shade_glass(tr, sp, depth, rays);
 }
 
 static const interp_knobs *knobs_of(const tracer *tr)
 {
     static const interp_knobs defaults = {
-        .earlier = {.phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
-                    .depth = PATH_DEFAULT_DEPTH,
-                    .min_weight = PATH_DEFAULT_MIN_WEIGHT},
+        .earlier = {.path = {.phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
+                             .depth = PATH_DEFAULT_DEPTH,
+                             .min_weight = PATH_DEFAULT_MIN_WEIGHT},
+                    .fresnel = FRESNEL_EXACT},
         .normals = NORMALS_INTERPOLATED,
         .filter = TEXTURE_NEAREST,
         .below = BELOW_FLIP,

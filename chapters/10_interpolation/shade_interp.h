@@ -18,14 +18,14 @@
 #ifndef CH10_SHADE_INTERP_H
 #define CH10_SHADE_INTERP_H
 
-#include "08_mirrors/path.h"
+#include "09_refraction/shade_glass.h"
 #include "10_interpolation/shading_normal.h"
 #include "10_interpolation/texture.h"
 
 /* snippet: interp_knobs */
 /* The knobs of chapter 10: chapter 09's first, then its own two. */
 typedef struct {
-    path_knobs earlier; /* chapters 06-09: --shadow-eps, --phong, --depth, --min-weight */
+    glass_knobs earlier; /* chapters 06-09: --shadow-eps, --phong, --depth, --min-weight, --fresnel */
     int normals;        /* a normal_source: --normals */
     int filter;         /* a texture_filter: --texture-filter */
     int below;          /* a below_policy: --below-surface */

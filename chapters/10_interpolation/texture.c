@@ -1,5 +1,6 @@
 /* texture.c - chapter 10: a texture's colour at texture coordinates (u, v). */
 #include "10_interpolation/texture.h"
+#include "exercise.h"
 
 #include <math.h>
 
@@ -12,6 +13,7 @@ int texel_index(texture_kind kind, long long i, int n)
      *     RepeatTexture: i mod n, in [0, n) also for negative i
      *         (C's % keeps the sign of i: -1 % 4 is -1, which must become 3);
      *     ClampTexture: i clamped to [0, n - 1]. */
+    EXERCISE_STUB("10_interpolation", "texture.c", "wrap");
     (void)kind;
     (void)n;
     return i < 0 ? 0 : 0;
@@ -47,6 +49,7 @@ color texture_nearest(const scene_texture *tex, mesh_uv uv)
      *     column, row).  (For x < -1/2 dropping the fraction rounds up, not
      *     down: texel 0 reaches half a texel further to the left than the
      *     others.  The course's images show it, so it stays.) */
+    EXERCISE_STUB("10_interpolation", "texture.c", "nearest");
     (void)x;
     (void)y;
     return texture_image_texel(img, 0, 0);
@@ -66,6 +69,7 @@ color texture_bilinear(const scene_texture *tex, mesh_uv uv)
      *         top    = (1 - s) T(x0, y0)     + s T(x0 + 1, y0)
      *         bottom = (1 - s) T(x0, y0 + 1) + s T(x0 + 1, y0 + 1)
      *         result = (1 - t) top + t bottom */
+    EXERCISE_STUB("10_interpolation", "texture.c", "bilinear");
     (void)x;
     (void)y;
     return texture_image_texel(img, 0, 0);
