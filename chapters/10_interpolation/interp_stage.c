@@ -1,6 +1,8 @@
 /* interp_stage.c - chapter 10: the stage, as the renderer describes it. */
 #include "10_interpolation/interp_stage.h"
 
+#include "10_interpolation/interp_scene.h"
+
 interp_knobs interp_settings = {
     .earlier = {.path = {.phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
                          .depth = PATH_DEFAULT_DEPTH,
@@ -49,6 +51,7 @@ shading_stage interp_stage(build_query_fn build)
         .shade = shade_interp,
         .shade_knobs = &interp_settings,
         .build_query = build ? build : interp_query_linear,
+        .builtin = interp_scene,
     };
 }
 /* end snippet */

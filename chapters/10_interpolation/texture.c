@@ -15,8 +15,9 @@ int texel_index(texture_kind kind, long long i, int n)
      *     ClampTexture: i clamped to [0, n - 1]. */
     EXERCISE_STUB("10_interpolation", "texture.c", "wrap");
     (void)kind;
+    (void)i;
     (void)n;
-    return i < 0 ? 0 : 0;
+    return 0;
 }
 /* end snippet */
 
@@ -47,8 +48,8 @@ color texture_nearest(const scene_texture *tex, mesh_uv uv)
      *     the row by texel_index (the texture's kind tex->kind; the image's
      *     width and height); and read the texel: texture_image_texel(img,
      *     column, row).  (For x < -1/2 dropping the fraction rounds up, not
-     *     down: texel 0 reaches half a texel further to the left than the
-     *     others.  The course's images show it, so it stays.) */
+     *     down: texel 0 is read from x = -3/2 to 1/2, a whole texel more
+     *     than the others.  The course's images show it, so it stays.) */
     EXERCISE_STUB("10_interpolation", "texture.c", "nearest");
     (void)x;
     (void)y;

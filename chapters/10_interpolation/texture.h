@@ -14,7 +14,8 @@
  * 1/2) with the fractions dropped.  This is how the course's solution reads
  * its textures (measured against its reference images: the README says how),
  * down to one quirk: dropping a fraction rounds towards zero, so for x < -1/2
- * the index is one more than the nearest texel's.
+ * the index is one more than the nearest texel's (texel 0 is read from x =
+ * -3/2 to 1/2, the texels before it one column late).
  *
  * Outside the image the texture's type decides:
  *     RepeatTexture  the image repeats: column i is column i mod W (also for
