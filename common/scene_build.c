@@ -27,6 +27,14 @@ int scene_add_surface(scene *s, scene_surface surface)
 
 int scene_add_light(scene *s, scene_light light) { return append((void **)&s->lights, &s->n_lights, &light, sizeof light); }
 
+int scene_add_mesh(scene *s, mesh m) { return append((void **)&s->meshes, &s->n_meshes, &m, sizeof m); }
+
+int scene_add_texture(scene *s, scene_texture texture)
+{
+    texture.name = NULL; /* built-in textures are referred to by index */
+    return append((void **)&s->textures, &s->n_textures, &texture, sizeof texture);
+}
+
 scene_shader scene_default_shader(shader_kind kind)
 {
     return (scene_shader){

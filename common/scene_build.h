@@ -12,6 +12,10 @@
 int scene_add_shader(scene *s, scene_shader shader);
 int scene_add_surface(scene *s, scene_surface surface);
 int scene_add_light(scene *s, scene_light light);
+/* These two take over what they are given: the mesh's arrays and the
+ * texture's texels (allocated with malloc) are freed by scene_free. */
+int scene_add_mesh(scene *s, mesh m);
+int scene_add_texture(scene *s, scene_texture texture);
 
 /* A shader with the defaults of docs/scenes.md: white, exponent 1, eta 1.5, no texture. */
 scene_shader scene_default_shader(shader_kind kind);

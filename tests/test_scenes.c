@@ -13,6 +13,7 @@
 
 #include "05_lambert/shading_stage.h"
 #include "07_blinn_phong/shade_phong.h"
+#include "10_interpolation/interp_stage.h"
 #include "image_compare.h"
 #include "suite.h"
 
@@ -66,6 +67,31 @@ static void test_07_wire_box_orthographic(void **state) { (void)state; check_sce
 static void test_07_bunny(void **state) { (void)state; check_scene(&stage07, "bunny"); }
 static void test_07_bunny2(void **state) { (void)state; check_scene(&stage07, "bunny2"); }
 
+/* ---- chapter 10: every scene of the corpus, textures and vertex normals too --------------------------
+ * Chapter 10's stage as its renderer runs it (interp_stage.h, the defaults:
+ * nearest texel, interpolated normals); chapter 11 renders with the same
+ * stage over its grid and must give the same bytes. */
+
+static void check_10(const char *name)
+{
+    const shading_stage stage = interp_stage(NULL);
+    check_scene(&stage, name);
+}
+
+static void test_10_one_sphere(void **state) { (void)state; check_10("one-sphere"); }
+static void test_10_one_sphere_rgb_normals(void **state) { (void)state; check_10("one-sphere-rgb-normals"); }
+static void test_10_two_boxes(void **state) { (void)state; check_10("two-boxes"); }
+static void test_10_two_boxes_rgb_normals(void **state) { (void)state; check_10("two-boxes-rgb-normals"); }
+static void test_10_wire_box(void **state) { (void)state; check_10("wire-box"); }
+static void test_10_wire_box_orthographic(void **state) { (void)state; check_10("wire-box-orthographic"); }
+static void test_10_bunny(void **state) { (void)state; check_10("bunny"); }
+static void test_10_bunny2(void **state) { (void)state; check_10("bunny2"); }
+static void test_10_bunny_norms(void **state) { (void)state; check_10("bunny-norms"); }
+static void test_10_earth(void **state) { (void)state; check_10("earth"); }
+static void test_10_earth_eclipse_textured(void **state) { (void)state; check_10("earth-eclipse-textured"); }
+static void test_10_teapot(void **state) { (void)state; check_10("teapot"); }
+static void test_10_diagnostic(void **state) { (void)state; check_10("diagnostic"); }
+
 static const graded_test tests[] = {
     GRADED(test_07_one_sphere, 0),
     GRADED(test_07_two_boxes, 0),
@@ -73,6 +99,19 @@ static const graded_test tests[] = {
     GRADED(test_07_wire_box_orthographic, 0),
     GRADED(test_07_bunny, 0),
     GRADED(test_07_bunny2, 0),
+    GRADED(test_10_one_sphere, 0),
+    GRADED(test_10_one_sphere_rgb_normals, 0),
+    GRADED(test_10_two_boxes, 0),
+    GRADED(test_10_two_boxes_rgb_normals, 0),
+    GRADED(test_10_wire_box, 0),
+    GRADED(test_10_wire_box_orthographic, 0),
+    GRADED(test_10_bunny, 0),
+    GRADED(test_10_bunny2, 0),
+    GRADED(test_10_bunny_norms, 0),
+    GRADED(test_10_earth, 0),
+    GRADED(test_10_earth_eclipse_textured, 0),
+    GRADED(test_10_teapot, 0),
+    GRADED(test_10_diagnostic, 0),
 };
 
 SUITE_MAIN("scenes", tests)

@@ -1,0 +1,28 @@
+/* interpolate.c - chapter 10: values stored at vertices, read between them. */
+#include "10_interpolation/interpolate.h"
+#include "exercise.h"
+
+/* snippet: interpolate */
+vec3 interpolate_vec3(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma)
+{
+    /* TODO interpolate: the lecture's barycentric interpolation of an
+     *     attribute given at the three vertices:
+     *         A = (1 - beta - gamma) A_a + beta A_b + gamma A_c
+     *     alpha = 1 - beta - gamma is the weight of vertex a (chapter 03's
+     *     point a + beta (b - a) + gamma (c - a) is alpha a + beta b + gamma c). */
+    EXERCISE_STUB("10_interpolation", "interpolate.c", "interpolate");
+    (void)A_b;
+    (void)A_c;
+    (void)beta;
+    (void)gamma;
+    return A_a;
+}
+/* end snippet */
+
+mesh_uv interpolate_uv(mesh_uv A_a, mesh_uv A_b, mesh_uv A_c, real beta, real gamma)
+{
+    /* (u, v) as a vector (u, v, 0): the same weights */
+    vec3 A = interpolate_vec3(vec3_make(A_a.u, A_a.v, 0), vec3_make(A_b.u, A_b.v, 0), vec3_make(A_c.u, A_c.v, 0),
+                              beta, gamma);
+    return (mesh_uv){A.x, A.y};
+}

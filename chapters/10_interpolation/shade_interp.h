@@ -1,0 +1,56 @@
+/* shade_interp.h - chapter 10: the shade function of the interpolation stage.
+ *
+ * Chapter 10 changes what the shading is given, not how it shades: at a
+ * point of a mesh face it replaces
+ *   - the shading normal n by the interpolated vertex normal (shading_normal.h),
+ *   - a textured shader's diffuse colour k_d by the texture's colour at the
+ *     point's texture coordinates (texture.h): the interpolated vt of a mesh
+ *     face, the course's (u, v) of a sphere (sphere_uv.h),
+ * and then calls the shading of chapters 05-09 (chapter 09's shade_glass,
+ * which calls chapter 08's glazed surface, which calls chapter 07's
+ * Blinn-Phong) with them.  RGBNormals shows the interpolated normal.
+ *
+ * A surface without the attribute keeps what it had: a face with a corner
+ * without vn is shaded flat with the geometric normal; a textured shader on
+ * a surface without texture coordinates (a Box, a Triangle, a face without
+ * vt) keeps its diffuseColor.
+ */
+#ifndef CH10_SHADE_INTERP_H
+#define CH10_SHADE_INTERP_H
+
+#include "09_refraction/shade_glass.h"
+#include "10_interpolation/shading_normal.h"
+#include "10_interpolation/texture.h"
+
+/* snippet: interp_knobs */
+/* The knobs of chapter 10: chapter 09's first, then its own two. */
+typedef struct {
+    glass_knobs earlier; /* chapters 06-09: --shadow-eps, --phong, --depth, --min-weight, --fresnel */
+    int normals;        /* a normal_source: --normals */
+    int filter;         /* a texture_filter: --texture-filter */
+    int below;          /* a below_policy: --below-surface */
+} interp_knobs;
+/* end snippet */
+
+/* What the point looks like to the shading: the shading point with the
+ * interpolated normal (and, for mirror and glass points, the normal that
+ * keeps the mirror direction above the surface), whether it has texture
+ * coordinates, and which. */
+typedef struct {
+    shading_point sp;
+    bool smooth;     /* sp.n is an interpolated normal */
+    vec3 n_raw;      /* the interpolated normal before it was turned (RGBNormals shows it) */
+    bool has_uv;
+    mesh_uv uv;
+} interp_point;
+
+/* The interpolated attributes of the point tr's closest-hit query found:
+ * tr->accel is a face_query (face_query.h). */
+interp_point interp_at(const tracer *tr, const shading_point *sp);
+
+/* A shade_fn: the shading of chapter 09 with the interpolated normal and the
+ * textured diffuse colour.  tr->knobs is an interp_knobs (NULL: the
+ * defaults); tr->accel is a face_query. */
+color shade_interp(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays);
+
+#endif
