@@ -6,7 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MAX_KNOBS 16
+#define MAX_KNOBS 24
 #define MAX_IMAGE_SIDE 16384
 
 enum { OPT_SEED = 256, OPT_NONFINITE, OPT_KNOB = 512 };
