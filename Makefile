@@ -352,8 +352,8 @@ check-links:
 check-snippets:
 	@tools/snippets.sh check $(SNIPPET_TEXTS)
 
-# Chapter 11's grid renders the images of the linear scan, byte for byte.
-check-grid-images: $(BUILD)/04_many_shapes/render $(BUILD)/11_grid/render
+# Chapter 11 renders the images of chapter 10, byte for byte.
+check-grid-images: $(BUILD)/10_interpolation/render $(BUILD)/11_grid/render
 	@tools/check-grid-images.sh $(BUILD)
 
 # Text, skeletons and figures agree with their sources; the grid changes no
