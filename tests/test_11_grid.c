@@ -21,7 +21,15 @@
 #include "01_camera_rays/camera.h"
 #include "04_many_shapes/closest_hit.h"
 #include "04_many_shapes/scene_surfaces.h"
+#include "05_lambert/shading_scene.h"
+#include "08_mirrors/mirror_scene.h"
+#include "09_refraction/glass_scene.h"
+#include "10_interpolation/interp_scene.h"
+#include "10_interpolation/interp_stage.h"
 #include "11_grid/grid.h"
+#include "11_grid/grid_scene.h"
+#include "11_grid/grid_stage.h"
+#include "image.h"
 #include "scene_build.h"
 #include "suite.h"
 
@@ -755,6 +763,58 @@ static void test_cornell_scenes(void **state)
     }
 }
 
+/* ---- chapter 11's renderer: chapter 10's images, byte for byte ------------------------------- */
+
+/* Renders `desc` at side x side through `stage` into *img (1 sample per pixel, the centre). */
+static void render_stage(const shading_stage *stage, const scene *desc, int side, image *img)
+{
+    char err[512] = "";
+    shading_view *view = shading_prepare(stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
+    if (!view)
+        fail_msg("%s", err);
+    assert_int_equal(0, image_init(img, side, side));
+    render_options opt = {.samples = 1};
+    render_image(img, shading_sample, view, &opt);
+    shading_release(view);
+}
+
+/* The built-in scenes of chapters 05-07 (one scene), 08, 09, 10 and 11,
+ * rendered by chapter 10's stage (interp_stage over the linear scan) and by
+ * chapter 11's (the same stage over the grid): every pixel the same, bit for
+ * bit, since every ray of every kind gets the same hit.  (Chapter 04's
+ * built-in scene lives in its render.c; tools/check-grid-images.sh compares
+ * the two renderers on the chapters' scene files and the Cornell corpus.) */
+static void test_builtin_scenes_as_chapter_10(void **state)
+{
+    (void)state;
+    static const struct {
+        const char *name;
+        int (*builtin)(scene *desc);
+        int side;
+    } scenes[] = {
+        {"chapters 05-07", shading_scene, 64}, {"chapter 08", mirror_scene, 64}, {"chapter 09", glass_scene, 64},
+        {"chapter 10", interp_scene, 64},      {"chapter 11", grid_scene, 40},
+    };
+    const shading_stage linear = interp_stage(NULL), gridded = grid_stage();
+    for (size_t s = 0; s < sizeof scenes / sizeof scenes[0]; s++) {
+        scene desc;
+        scene_init(&desc);
+        assert_int_equal(0, scenes[s].builtin(&desc));
+        image a, b;
+        render_stage(&linear, &desc, scenes[s].side, &a);
+        render_stage(&gridded, &desc, scenes[s].side, &b);
+        for (int k = 0; k < a.width * a.height; k++)
+            if (memcmp(&a.pixels[k], &b.pixels[k], sizeof a.pixels[k]) != 0)
+                fail_msg("built-in scene of %s, pixel (%d, %d) of %dx%d: chapter 11's radiance differs from chapter "
+                         "10's (likely mistake: the grid returns another hit than the linear scan for a shadow or "
+                         "reflected ray, t_min > 0 or a finite t_max)",
+                         scenes[s].name, k % a.width, k / a.width, a.width, a.height);
+        image_free(&a);
+        image_free(&b);
+        scene_free(&desc);
+    }
+}
+
 static const graded_test tests[] = {
     GRADED(test_cell_range, 4),
     GRADED(test_dda_cells, 4),
@@ -769,6 +829,7 @@ static const graded_test tests[] = {
     GRADED(test_mailbox_counts, 1),
     GRADED(test_empty_and_single, 1),
     GRADED(test_cornell_scenes, 0),
+    GRADED(test_builtin_scenes_as_chapter_10, 0),
 };
 
 SUITE_MAIN("11_grid", tests)
