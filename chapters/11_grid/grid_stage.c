@@ -26,16 +26,19 @@ static double now(void)
 static bool grid_closest_hit(const void *accel, ray r, real t_min, real t_max, hit_record *hit)
 {
     const grid_query *gq = accel;
-    grid_tally_here.queries++;
-    return grid_intersect_counted(&gq->grid, r, t_min, t_max, hit, &grid_tally_here.counts);
+    bool found = grid_intersect_counted(&gq->grid, r, t_min, t_max, hit, &grid_tally_here.counts);
+    if (grid_tally_here.queries++ == 0)
+        grid_tally_here.first = grid_tally_here.counts;
+    return found;
 }
 
 /* Chapter 04's linear scan, counted: every surface is tested. */
 static bool list_closest_hit(const void *accel, ray r, real t_min, real t_max, hit_record *hit)
 {
     const surface_list *list = accel;
-    grid_tally_here.queries++;
     grid_tally_here.counts.tests += (uint64_t)list->n;
+    if (grid_tally_here.queries++ == 0)
+        grid_tally_here.first = grid_tally_here.counts;
     return surfaces_intersect(list, r, t_min, t_max, hit);
 }
 

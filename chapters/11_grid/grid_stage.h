@@ -36,10 +36,12 @@ typedef struct {
 extern grid_knobs grid_settings;
 
 /* What the closest-hit queries of one thread did: added to by every query,
- * read and reset by whoever counts (the renderer, per sample). */
+ * read and reset by whoever counts (the renderer, per sample: the first
+ * query after the reset is then the sample's eye ray). */
 typedef struct {
-    uint64_t queries; /* closest-hit queries: one per ray of any kind */
-    grid_counts counts;
+    uint64_t queries;   /* closest-hit queries: one per ray of any kind */
+    grid_counts counts; /* what they did, all together */
+    grid_counts first;  /* what the first query since the reset did */
 } grid_tally;
 
 extern _Thread_local grid_tally grid_tally_here;

@@ -14,7 +14,7 @@
  * --mailbox=on|off, --leap=on|off, --cull=on|off, --accel=grid|list (list:
  * chapter 04's linear scan, that is chapter 10 as it is, for comparison),
  * --show=image|cells|tests (a heat map of the cells visited or the surfaces
- * tested per pixel, by all of the pixel's rays), --heat-max (the count shown white).
+ * tested per pixel by its eye ray), --heat-max (the count shown white).
  */
 #include <omp.h>
 #include <stdio.h>
@@ -45,7 +45,7 @@ static const knob grid_knob_list[] = {
     {"leap", KNOB_CHOICE, &grid_settings.leap, on_off, "cross blocks of empty cells in one step"},
     {"cull", KNOB_CHOICE, &grid_settings.cull, on_off, "test a surface only when the ray meets its box"},
     {"accel", KNOB_CHOICE, &grid_settings.accel, accel_choices, "grid, or chapter 04's linear scan over the list"},
-    {"show", KNOB_CHOICE, &show_choice, show_choices, "the image, or cells visited or surfaces tested per pixel"},
+    {"show", KNOB_CHOICE, &show_choice, show_choices, "the image, or each pixel's eye ray's cells visited or tests"},
     {"heat-max", KNOB_INT, &heat_max, NULL, "--show=cells|tests: the count shown white"},
 };
 
@@ -94,8 +94,9 @@ static color sample(const void *prepared, real u, real v, uint64_t *rays)
     }
     if (show_choice == SHOW_IMAGE)
         return c;
-    return heat_color(show_choice == SHOW_CELLS ? grid_tally_here.counts.cells : grid_tally_here.counts.tests,
-                      heat_max);
+    /* The eye ray's march: what the grid does for the rays the camera casts. */
+    const grid_counts *eye = &grid_tally_here.first;
+    return heat_color(show_choice == SHOW_CELLS ? eye->cells : eye->tests, heat_max);
 }
 
 static void release(void *prepared)
