@@ -43,7 +43,15 @@ static void test_reflect_known(void **state)
 {
     (void)state;
     vec3 up = {0, 1, 0};
-    assert_vec3_close(vec3_make(1, 1, 0), reflect(vec3_make(1, -1, 0), up), 0);
+    const suspect_vec3 s45[] = {
+        {{1, -1, 0}, "r = d: the part of d along n must change sign"},
+        {{-1, 1, 0}, "-r: r = d - 2 (d . n) n, not 2 (d . n) n - d (that is the lecture's form for v = -d)"},
+        {{1, -3, 0}, "d + 2 (d . n) n: the correction is subtracted"},
+        {{1, 0, 0}, "d - (d . n) n is the part along the surface only: the factor 2 is missing"},
+    };
+    assert_vec3_why(vec3_make(1, 1, 0), reflect(vec3_make(1, -1, 0), up), 0,
+                    "reflect(d = (1, -1, 0), n = (0, 1, 0)): 45 degrees down onto a floor",
+                    "r = d - 2 (d . n) n", s45, sizeof s45 / sizeof s45[0]);
     assert_vec3_close(vec3_make(-3, 2.5, 7), reflect(vec3_make(-3, -2.5, 7), up), 0);
     assert_vec3_close(vec3_make(0, 4, 0), reflect(vec3_make(0, -4, 0), up), 0);      /* head on */
     assert_vec3_close(vec3_make(2, 0, -1), reflect(vec3_make(2, 0, -1), up), 0);      /* along the surface */
@@ -51,7 +59,13 @@ static void test_reflect_known(void **state)
     /* a tilted plane: n = (2, -3, 6) / 7 and d = (1, 2, -2): d . n = -16/7,
      * r = d + (32/7) n = (1 + 64/49, 2 - 96/49, -2 + 192/49) */
     vec3 n = vec3_normalize(vec3_make(2, -3, 6));
-    assert_vec3_close(vec3_make(113.0 / 49, 2.0 / 49, 94.0 / 49), reflect(vec3_make(1, 2, -2), n), TOL(4));
+    const suspect_vec3 st[] = {
+        {{1 - 64.0 / 49, 2 + 96.0 / 49, -2 - 192.0 / 49}, "d + 2 (d . n) n: the correction is subtracted"},
+        {{1 + 32.0 / 49, 2 - 48.0 / 49, -2 + 96.0 / 49}, "the factor 2 is missing"},
+    };
+    assert_vec3_why(vec3_make(113.0 / 49, 2.0 / 49, 94.0 / 49), reflect(vec3_make(1, 2, -2), n), TOL(4),
+                    "reflect(d = (1, 2, -2), n = (2, -3, 6) / 7)", "r = d - 2 (d . n) n", st,
+                    sizeof st / sizeof st[0]);
 }
 
 /* Random directions and normals: r keeps the length of d, flips its part

@@ -104,6 +104,22 @@ static void test_snell_law(void **state)
         real cos_t;
         assert_true(refract(d, n, eta_i, eta_t, &T, &cos_t));
         double theta_t = asin(eta_i * sin(theta_i) / eta_t); /* the law, in double */
+        vec3 expected = vec3_add(vec3_scale(t, (real)sin(theta_t)), vec3_scale(n, (real)-cos(theta_t)));
+        if (k < 8) { /* the first few with the likely mistakes named */
+            double inverted = asin(fmin(1, eta_t * sin(theta_i) / eta_i));
+            const suspect_vec3 sT[] = {
+                {vec3_add(vec3_scale(t, (real)sin(inverted)), vec3_scale(n, (real)-cos(inverted))),
+                 "S_t = (eta_t / eta_i) S_i: the ratio is upside down (eta_i sin(theta_i) = eta_t sin(theta_t))"},
+                {vec3_add(vec3_scale(t, (real)sin(theta_t)), vec3_scale(n, (real)cos(theta_t))),
+                 "C_t = +cos(theta_t) n: the transmitted ray goes on to the far side, against n"},
+                {d, "T = d: Snell's law bends the ray"},
+            };
+            assert_vec3_why(expected, T, TOL(8),
+                            describe("refract at theta_i = %.2f degrees from eta %g into %g", theta_i * 180 / pi,
+                                     (double)eta_i, (double)eta_t),
+                            "S_t = (eta_i / eta_t) S_i, C_t = -cos(theta_t) n, T = C_t + S_t", sT,
+                            sizeof sT / sizeof sT[0]);
+        }
         assert_close(1, vec3_length(T), TOL(2));
         assert_close(cos(theta_t), cos_t, TOL(8));
         assert_close(-cos(theta_t), vec3_dot(T, n), TOL(8)); /* on the far side */
@@ -178,7 +194,14 @@ static void test_critical_angle(void **state)
 static void test_fresnel_normal_incidence(void **state)
 {
     (void)state;
-    assert_close(0.04, fresnel_exact(1, 1, 1, (real)1.5), TOL(1));
+    const suspect s0[] = {
+        {0.08, "r_s^2 + r_p^2 is twice R: unpolarised light is the average of the two, (r_s^2 + r_p^2) / 2"},
+        {-0.2, "r_s is an amplitude: R is its square"},
+        {0.2, "r_s is an amplitude: R is its square"},
+        {0.0, "R = 0 head on: r_s = (eta_i cos_i - eta_t cos_t) / (eta_i cos_i + eta_t cos_t)"},
+    };
+    assert_close_why(0.04, fresnel_exact(1, 1, 1, (real)1.5), TOL(1), "fresnel_exact(cos_i = 1, cos_t = 1, 1, 1.5)",
+                     "R = (r_s^2 + r_p^2) / 2 = ((1 - 1.5) / (1 + 1.5))^2 head on", s0, sizeof s0 / sizeof s0[0]);
     assert_close(0.04, fresnel_exact(1, 1, (real)1.5, 1), TOL(1));
     assert_close(0.04, fresnel_schlick(1, 1, 1, (real)1.5), TOL(1));
     assert_close(0.04, fresnel_schlick(1, 1, (real)1.5, 1), TOL(1));
@@ -200,7 +223,20 @@ static void test_fresnel_exact_values(void **state)
             double i = limit * k / 20.5, t = asin(eta_i * sin(i) / eta_t);
             double r_s = -sin(i - t) / sin(i + t), r_p = tan(i - t) / tan(i + t);
             double R = (r_s * r_s + r_p * r_p) / 2;
-            assert_close(R, fresnel_exact((real)cos(i), (real)cos(t), (real)eta_i, (real)eta_t), TOL(4));
+            double r_p_wrong = (eta_i * cos(i) - eta_t * cos(t)) / (eta_i * cos(i) + eta_t * cos(t));
+            double r_p_swapped = (eta_t * cos(t) - eta_i * cos(i)) / (eta_t * cos(t) + eta_i * cos(i));
+            const suspect sR[] = {
+                {r_s * r_s, "only r_s: R averages the two polarisations, (r_s^2 + r_p^2) / 2"},
+                {r_p * r_p, "only r_p: R averages the two polarisations, (r_s^2 + r_p^2) / 2"},
+                {r_s * r_s + r_p * r_p, "r_s^2 + r_p^2 without the / 2"},
+                {(r_s * r_s + r_p_wrong * r_p_wrong) / 2, "r_p written like r_s: in r_p eta_t goes with cos_i"},
+                {(r_s * r_s + r_p_swapped * r_p_swapped) / 2, "r_p with the cosines swapped"},
+            };
+            assert_close_why(R, fresnel_exact((real)cos(i), (real)cos(t), (real)eta_i, (real)eta_t), TOL(4),
+                             describe("fresnel_exact at theta_i = %.1f degrees from eta %g into %g", i * 180 / pi,
+                                      eta_i, eta_t),
+                             "r_s = (eta_i cos_i - eta_t cos_t) / (...), r_p = (eta_t cos_i - eta_i cos_t) / (...)", sR,
+                             sizeof sR / sizeof sR[0]);
         }
         double brewster = atan(eta_t / eta_i), t = asin(eta_i * sin(brewster) / eta_t);
         double r_s = (eta_i * cos(brewster) - eta_t * cos(t)) / (eta_i * cos(brewster) + eta_t * cos(t));
@@ -248,8 +284,15 @@ static void test_schlick_cosines(void **state)
     (void)state;
     real R_0 = (real)0.04;
     real c = (real)0.6, c_t = (real)0.3;
-    assert_close(R_0 + (1 - R_0) * pow(1 - 0.6, 5), fresnel_schlick(c, c_t, 1, (real)1.5), TOL(1));
-    assert_close(R_0 + (1 - R_0) * pow(1 - 0.3, 5), fresnel_schlick(c, c_t, (real)1.5, 1), TOL(1));
+    const suspect s_in[] = {{R_0 + (1 - R_0) * pow(1 - 0.3, 5), "into glass the cosine is cos_i, the incoming side's"}};
+    assert_close_why(R_0 + (1 - R_0) * pow(1 - 0.6, 5), fresnel_schlick(c, c_t, 1, (real)1.5), TOL(1),
+                     "fresnel_schlick(cos_i = 0.6, cos_t = 0.3, 1, 1.5)", "R = R_0 + (1 - R_0) (1 - cos)^5", s_in, 1);
+    const suspect s_out[] = {
+        {R_0 + (1 - R_0) * pow(1 - 0.6, 5), "out of glass the cosine is cos_t (the side of the smaller index), "
+                                             "or R jumps at the critical angle"}};
+    assert_close_why(R_0 + (1 - R_0) * pow(1 - 0.3, 5), fresnel_schlick(c, c_t, (real)1.5, 1), TOL(1),
+                     "fresnel_schlick(cos_i = 0.6, cos_t = 0.3, 1.5, 1)", "R = R_0 + (1 - R_0) (1 - cos_t)^5", s_out,
+                     1);
     /* just below the critical angle on the way out */
     vec3 n = vec3_make(0, 0, 1), t = vec3_make(1, 0, 0), T;
     real cos_t;

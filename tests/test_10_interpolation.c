@@ -29,7 +29,10 @@ static double uniform(void)
     return (double)((rng >> 11) & ((1UL << 53) - 1)) / (double)(1UL << 53);
 }
 static real between(double lo, double hi) { return (real)(lo + (hi - lo) * uniform()); }
-static vec3 random_vec3(double size) { return vec3_make(between(-size, size), between(-size, size), between(-size, size)); }
+static vec3 random_vec3(double size)
+{
+    return vec3_make(between(-size, size), between(-size, size), between(-size, size));
+}
 
 /* ---- barycentric interpolation ---------------------------------------------------------------- */
 
@@ -65,9 +68,10 @@ static void test_interpolate_random(void **state)
         vec3 point = vec3_add(a, vec3_add(vec3_scale(vec3_sub(b, a), beta), vec3_scale(vec3_sub(c, a), gamma)));
         /* each term rounds relative to |offset| + 3 <= ~176 */
         assert_vec3_close(point, interpolate_vec3(a, b, c, beta, gamma), TOL(200));
-        vec3 A[3] = {random_vec3(1), random_vec3(1), random_vec3(1)}, B[3] = {random_vec3(1), random_vec3(1),
-                                                                               random_vec3(1)};
-        vec3 sum = vec3_add(interpolate_vec3(A[0], A[1], A[2], beta, gamma), interpolate_vec3(B[0], B[1], B[2], beta, gamma));
+        vec3 A[3] = {random_vec3(1), random_vec3(1), random_vec3(1)};
+        vec3 B[3] = {random_vec3(1), random_vec3(1), random_vec3(1)};
+        vec3 sum = vec3_add(interpolate_vec3(A[0], A[1], A[2], beta, gamma),
+                            interpolate_vec3(B[0], B[1], B[2], beta, gamma));
         vec3 of_sum = interpolate_vec3(vec3_add(A[0], B[0]), vec3_add(A[1], B[1]), vec3_add(A[2], B[2]), beta, gamma);
         assert_vec3_close(sum, of_sum, TOL(8));
     }
