@@ -1,0 +1,70 @@
+/* path.h - chapter 08: how deep the recursion goes, and how little it may carry.
+ *
+ * A mirror ray is traced with trace() again, one level deeper; what it finds
+ * may be a mirror too, and so on.  Two knobs stop the recursion:
+ *
+ *   --depth N        no ray deeper than N bounces is cast (an eye ray is depth
+ *                    0, its mirror ray depth 1, ...).  A ray that would go
+ *                    deeper is not traced and brings no light: black.
+ *   --min-weight w   no ray is cast whose path weight, the product of the
+ *                    coefficients along the path that leads to it (k_m of
+ *                    each mirror, the Fresnel R or T of each glass surface of
+ *                    chapter 09), is below w in every colour channel: what it
+ *                    could add to the pixel is at most w times the radiance it
+ *                    finds.  It brings no light either.
+ *
+ * A coefficient of zero never casts a ray, whatever the knobs (docs/design.md:
+ * "no mirror rays where the mirror coefficient is zero").
+ *
+ * The weight travels with the tracer.  trace() hands the shade function the
+ * tracer it was given, unchanged; so a ray that path_next lets through is
+ * traced with a path_tracer, a copy of the tracer that also carries the
+ * path's weight, and a shade function called at depth d >= 1 holds one.  An
+ * eye ray (depth 0) is traced with the renderer's own tracer, weight 1.
+ */
+#ifndef CH08_PATH_H
+#define CH08_PATH_H
+
+#include <stdbool.h>
+
+#include "07_blinn_phong/shade_phong.h"
+
+/* snippet: path_knobs */
+/* The knobs of chapter 08: chapter 07's first (so tracer_eps and the Phong
+ * form still work), then the two that stop the recursion. */
+typedef struct {
+    phong_knobs phong;
+    int depth;       /* --depth: the deepest bounce that is traced */
+    real min_weight; /* --min-weight: the smallest path weight that is traced */
+} path_knobs;
+/* end snippet */
+
+/* The defaults of --depth and --min-weight (measured in the README). */
+#define PATH_DEFAULT_DEPTH 32
+#define PATH_DEFAULT_MIN_WEIGHT ((real)1e-3)
+/* --depth beyond this counts as this: the recursion must not exhaust the stack. */
+#define PATH_MAX_DEPTH 256
+
+/* The knobs of a tracer whose knobs begin with path_knobs (chapters 08-11);
+ * the defaults when tr->knobs is NULL. */
+const path_knobs *tracer_path_knobs(const tracer *tr);
+
+/* snippet: path_tracer */
+/* A tracer on a path: what every ray beyond the eye ray is traced with. */
+typedef struct {
+    tracer tr;    /* first member: &next.tr is a tracer for trace() */
+    color weight; /* the product of the coefficients along the path */
+} path_tracer;
+/* end snippet */
+
+/* The weight of the path that reached a shade function called with tr at
+ * `depth`: 1 for an eye ray, the path_tracer's weight beyond. */
+color path_weight(const tracer *tr, int depth);
+
+/* Whether a ray leaving a point reached at `depth` with coefficient k (k_m, R
+ * or T) is cast: not when depth is already the deepest, not when the path's
+ * weight times k is zero or below --min-weight in every channel.  When it is,
+ * *next is the tracer to trace it with, at depth + 1. */
+bool path_next(const tracer *tr, int depth, color k, path_tracer *next);
+
+#endif

@@ -1,0 +1,56 @@
+/* fresnel.c - chapter 09: how much a glass surface reflects. */
+#include "09_refraction/fresnel.h"
+
+#include <stddef.h>
+
+const char *const fresnel_mode_names[] = {"exact", "schlick", NULL};
+
+/* snippet: fresnel_exact */
+real fresnel_exact(real cos_i, real cos_t, real eta_i, real eta_t)
+{
+    /* EXERCISE fresnel: Fresnel's equations for unpolarised light:
+     *     r_s = (eta_i cos_i - eta_t cos_t) / (eta_i cos_i + eta_t cos_t)
+     *     r_p = (eta_t cos_i - eta_i cos_t) / (eta_t cos_i + eta_i cos_t)
+     *     R = (r_s^2 + r_p^2) / 2 */
+    real r_s = (eta_i * cos_i - eta_t * cos_t) / (eta_i * cos_i + eta_t * cos_t);
+    real r_p = (eta_t * cos_i - eta_i * cos_t) / (eta_t * cos_i + eta_i * cos_t);
+    return (r_s * r_s + r_p * r_p) / 2;
+    /* STUB
+    (void)cos_i;
+    (void)cos_t;
+    (void)eta_i;
+    (void)eta_t;
+    return 0;
+    END EXERCISE */
+}
+/* end snippet */
+
+/* snippet: fresnel_schlick */
+real fresnel_schlick(real cos_i, real cos_t, real eta_i, real eta_t)
+{
+    /* EXERCISE schlick: Schlick's approximation:
+     *     R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2
+     *     R = R_0 + (1 - R_0) (1 - cos)^5
+     *     with cos the cosine on the side of the smaller index: cos_i when
+     *     eta_i <= eta_t (into glass), cos_t otherwise (out of it). */
+    real r = (eta_i - eta_t) / (eta_i + eta_t);
+    real R_0 = r * r;
+    real m = 1 - (eta_i <= eta_t ? cos_i : cos_t);
+    return R_0 + (1 - R_0) * m * m * m * m * m;
+    /* STUB
+    (void)cos_i;
+    (void)cos_t;
+    (void)eta_i;
+    (void)eta_t;
+    return 0;
+    END EXERCISE */
+}
+/* end snippet */
+
+real fresnel(fresnel_mode mode, real cos_i, real cos_t, real eta_i, real eta_t)
+{
+    if (eta_i == eta_t) /* no change of index, no surface: nothing is reflected */
+        return 0;
+    return mode == FRESNEL_SCHLICK ? fresnel_schlick(cos_i, cos_t, eta_i, eta_t)
+                                   : fresnel_exact(cos_i, cos_t, eta_i, eta_t);
+}

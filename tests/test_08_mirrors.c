@@ -1,0 +1,424 @@
+/* Chapter 08: the mirror direction, the recursive call, depth and weight, the furnace. */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "05_lambert/shading_stage.h"
+#include "08_mirrors/mirror.h"
+#include "08_mirrors/mirror_scene.h"
+#include "08_mirrors/path.h"
+#include "08_mirrors/shade_glazed.h"
+#include "display.h"
+#include "scene_build.h"
+#include "suite.h"
+
+/* A few roundings of values of size about 1 (see test_05_lambert.c). */
+#define TOL(size) (32 * REAL_EPSILON * (size))
+
+static const vec3 far_point = {-37.25, 12.5, 53.125};
+
+/* A random unit vector (a fixed seed: the same vectors on every run). */
+static unsigned long rng = 12345;
+static double uniform(void)
+{
+    rng = rng * 6364136223846793005UL + 1442695040888963407UL;
+    return (double)((rng >> 11) & ((1UL << 53) - 1)) / (double)(1UL << 53);
+}
+static vec3 random_unit(void)
+{
+    for (;;) {
+        vec3 v = vec3_make((real)(2 * uniform() - 1), (real)(2 * uniform() - 1), (real)(2 * uniform() - 1));
+        real l = vec3_length(v);
+        if (l > (real)0.1 && l <= 1)
+            return vec3_scale(v, 1 / l);
+    }
+}
+
+/* ---- the mirror direction -------------------------------------------------------------------- */
+
+/* Known directions: 45 degrees down onto the floor comes up at 45 degrees;
+ * head on comes straight back; along the surface goes on; the lecture's
+ * r = 2 (n . v) n - v for v = -d. */
+static void test_reflect_known(void **state)
+{
+    (void)state;
+    vec3 up = {0, 1, 0};
+    const suspect_vec3 s45[] = {
+        {{1, -1, 0}, "r = d: the part of d along n must change sign"},
+        {{-1, 1, 0}, "-r: r = d - 2 (d . n) n, not 2 (d . n) n - d (that is the lecture's form for v = -d)"},
+        {{1, -3, 0}, "d + 2 (d . n) n: the correction is subtracted"},
+        {{1, 0, 0}, "d - (d . n) n is the part along the surface only: the factor 2 is missing"},
+    };
+    assert_vec3_why(vec3_make(1, 1, 0), reflect(vec3_make(1, -1, 0), up), 0,
+                    "reflect(d = (1, -1, 0), n = (0, 1, 0)): 45 degrees down onto a floor",
+                    "r = d - 2 (d . n) n", s45, sizeof s45 / sizeof s45[0]);
+    assert_vec3_close(vec3_make(-3, 2.5, 7), reflect(vec3_make(-3, -2.5, 7), up), 0);
+    assert_vec3_close(vec3_make(0, 4, 0), reflect(vec3_make(0, -4, 0), up), 0);      /* head on */
+    assert_vec3_close(vec3_make(2, 0, -1), reflect(vec3_make(2, 0, -1), up), 0);      /* along the surface */
+    assert_vec3_close(vec3_make(1, 1, 0), reflect(vec3_make(1, -1, 0), vec3_neg(up)), 0); /* either side of n */
+    /* a tilted plane: n = (2, -3, 6) / 7 and d = (1, 2, -2): d . n = -16/7,
+     * r = d + (32/7) n = (1 + 64/49, 2 - 96/49, -2 + 192/49) */
+    vec3 n = vec3_normalize(vec3_make(2, -3, 6));
+    const suspect_vec3 st[] = {
+        {{1 - 64.0 / 49, 2 + 96.0 / 49, -2 - 192.0 / 49}, "d + 2 (d . n) n: the correction is subtracted"},
+        {{1 + 32.0 / 49, 2 - 48.0 / 49, -2 + 96.0 / 49}, "the factor 2 is missing"},
+    };
+    assert_vec3_why(vec3_make(113.0 / 49, 2.0 / 49, 94.0 / 49), reflect(vec3_make(1, 2, -2), n), TOL(4),
+                    "reflect(d = (1, 2, -2), n = (2, -3, 6) / 7)", "r = d - 2 (d . n) n", st,
+                    sizeof st / sizeof st[0]);
+}
+
+/* Random directions and normals: r keeps the length of d, flips its part
+ * along n and keeps the rest (r + d is along the surface, r - d along n), and
+ * is the lecture's 2 (n . v) n - v with v = -d / |d|. */
+static void test_reflect_random(void **state)
+{
+    (void)state;
+    for (int k = 0; k < 1000; k++) {
+        vec3 n = random_unit();
+        vec3 d = vec3_scale(random_unit(), (real)(0.1 + 10 * uniform()));
+        real size = vec3_length(d);
+        vec3 r = reflect(d, n);
+        assert_close(size, vec3_length(r), TOL(4 * size));
+        assert_close(-vec3_dot(d, n), vec3_dot(r, n), TOL(4 * size));
+        assert_close(0, vec3_length(vec3_cross(vec3_sub(r, d), n)), TOL(8 * size));
+        vec3 v = vec3_scale(d, -1 / size);
+        vec3 lecture = vec3_sub(vec3_scale(n, 2 * vec3_dot(n, v)), v);
+        assert_vec3_close(lecture, vec3_scale(r, 1 / size), TOL(8));
+    }
+}
+
+/* ---- the recursive call ---------------------------------------------------------------------- */
+
+/* A probe: a shader that records the ray that reached it (and its depth)
+ * and shows its diffuse colour; every other shader is glazed. */
+#define MAX_PROBES 8
+static _Thread_local struct {
+    int n;
+    ray r[MAX_PROBES];
+    int depth[MAX_PROBES];
+    color weight[MAX_PROBES];
+} probe;
+static int probe_shader = -1;
+
+static color probe_shade(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
+{
+    if (sp->hit.shader == probe_shader && probe_shader >= 0) {
+        if (probe.n < MAX_PROBES) {
+            probe.r[probe.n] = sp->r;
+            probe.depth[probe.n] = depth;
+            probe.weight[probe.n] = path_weight(tr, depth);
+        }
+        probe.n++;
+        return tr->desc->shaders[probe_shader].diffuse_color;
+    }
+    return shade_glazed(tr, sp, depth, rays);
+}
+
+static path_knobs knobs_of(int depth, real min_weight)
+{
+    return (path_knobs){.phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
+                        .depth = depth,
+                        .min_weight = min_weight};
+}
+
+/* Traces one eye ray through desc with the glazed shader (and the probe). */
+static color trace_one(const scene *desc, const path_knobs *knobs, ray r, uint64_t *rays)
+{
+    char err[256] = "";
+    const shading_stage stage = {.name = "test", .shade = probe_shade, .shade_knobs = knobs};
+    shading_view *view = shading_prepare(&stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
+    if (!view)
+        fail_msg("%s", err);
+    probe.n = 0;
+    color c = trace(&view->tr, r, 0, REAL_INFINITY, 0, rays);
+    shading_release(view);
+    return c;
+}
+
+static int add_shader(scene *desc, shader_kind kind, color diffuse, color k_m)
+{
+    scene_shader s = scene_default_shader(kind);
+    s.diffuse_color = diffuse;
+    s.mirror_coefficient = k_m;
+    return scene_add_shader(desc, s);
+}
+
+/* A big triangle around `centre` in the plane with unit normal n (wound so
+ * that its normal is n). */
+static void add_plane(scene *desc, int shader, vec3 centre, vec3 n, real size)
+{
+    vec3 a = vec3_normalize(vec3_cross(n, vec3_make((real)0.3, (real)0.5, (real)0.8)));
+    vec3 b = vec3_cross(n, a);
+    vec3 v[3];
+    for (int k = 0; k < 3; k++) {
+        double angle = 2.0943951023931957 * k; /* 120 degrees apart, counter-clockwise about n */
+        v[k] = vec3_add(centre,
+                        vec3_add(vec3_scale(a, size * (real)cos(angle)), vec3_scale(b, size * (real)sin(angle))));
+    }
+    scene_add_surface(desc,
+                      (scene_surface){.kind = SURFACE_TRIANGLE, .shader = shader, .v0 = v[0], .v1 = v[1], .v2 = v[2]});
+}
+
+/* A tilted mirror far from the origin and a probe where the mirror direction
+ * goes: the probe receives one ray, from the mirror's point, at depth 1,
+ * along reflect(d, n), carrying the weight k_m; the eye sees k_m times the
+ * probe's colour (black diffuse, no lights).  One reflected ray is counted. */
+static void test_mirror_ray_reaches_probe(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    desc.back_color = color_make((real)0.9, (real)0.9, (real)0.9);
+    vec3 n = vec3_normalize(vec3_make(1, 4, -2));
+    color k_m = {0.8, 0.5, 0.25};
+    add_plane(&desc, add_shader(&desc, SHADER_LAMBERTIAN, color_make(0, 0, 0), k_m), far_point, n, 10);
+    vec3 eye = vec3_add(far_point, vec3_make(-3, 5, 2));
+    vec3 d = vec3_sub(far_point, eye);
+    vec3 r = reflect(d, n); /* checked by test_reflect_known */
+    probe_shader =
+        add_shader(&desc, SHADER_LAMBERTIAN, color_make((real)0.2, (real)0.4, (real)0.6), color_make(0, 0, 0));
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = probe_shader,
+                                             .center = vec3_add(far_point, vec3_scale(r, 2)), .radius = 0.5});
+    path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
+    uint64_t rays[RAY_KINDS] = {0};
+    color L = trace_one(&desc, &knobs, (ray){eye, d}, rays);
+    assert_int_equal(1, probe.n);
+    assert_int_equal(1, probe.depth[0]);
+    assert_int_equal(1, rays[RAY_REFLECTED]);
+    assert_int_equal(0, rays[RAY_SHADOW]); /* no lights */
+    /* from the mirror's point (60 from the origin: the offset is tiny), along r */
+    assert_vec3_close(far_point, probe.r[0].p, 1e4 * REAL_EPSILON * 60);
+    assert_close(0, vec3_length(vec3_cross(vec3_normalize(probe.r[0].d), vec3_normalize(r))), TOL(8));
+    assert_true(vec3_dot(probe.r[0].d, r) > 0);
+    assert_vec3_close(vec3_make(0.8, 0.5, 0.25), vec3_make(probe.weight[0].r, probe.weight[0].g, probe.weight[0].b),
+                      TOL(1));
+    assert_close(0.8 * 0.2, L.r, TOL(1));
+    assert_close(0.5 * 0.4, L.g, TOL(1));
+    assert_close(0.25 * 0.6, L.b, TOL(1));
+    scene_free(&desc);
+}
+
+/* The glazed surface is chapter 07's result plus k_m L_m: with k_m = 0 it is
+ * chapter 07's exactly and casts no mirror ray; with k_m it adds k_m times
+ * what the mirror ray finds (here the backColor). */
+static void test_glazed_adds_to_chapter_07(void **state)
+{
+    (void)state;
+    for (int mirror = 0; mirror < 2; mirror++) {
+        scene desc;
+        scene_init(&desc);
+        desc.back_color = color_make((real)0.3, (real)0.2, (real)0.1);
+        desc.ambient = color_make((real)0.01, (real)0.02, (real)0.03);
+        color k_m = mirror ? color_make((real)0.5, (real)0.25, (real)0.125) : color_make(0, 0, 0);
+        scene_shader phong = scene_default_shader(SHADER_PHONG);
+        phong.diffuse_color = color_make((real)0.2, (real)0.3, (real)0.1);
+        phong.specular_color = color_make((real)0.4, (real)0.4, (real)0.4);
+        phong.exponent = 20;
+        phong.mirror_coefficient = k_m;
+        vec3 n = vec3_normalize(vec3_make(-1, 3, 1));
+        add_plane(&desc, scene_add_shader(&desc, phong), far_point, n, 10);
+        scene_add_light(&desc,
+                        (scene_light){.position = vec3_add(far_point, vec3_make(1, 4, 2)), .intensity = {5, 6, 7}});
+        vec3 eye = vec3_add(far_point, vec3_make(2, 3, -1));
+        path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
+        uint64_t rays[RAY_KINDS] = {0}, rays_07[RAY_KINDS] = {0};
+        probe_shader = -1;
+        color L = trace_one(&desc, &knobs, (ray){eye, vec3_sub(far_point, eye)}, rays);
+        /* chapter 07 alone on the same point */
+        const shading_stage stage_07 = {.name = "test", .shade = shade_phong, .shade_knobs = &knobs.phong};
+        char err[256] = "";
+        shading_view *view = shading_prepare(&stage_07, &desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
+        assert_non_null(view);
+        color L_07 = trace(&view->tr, (ray){eye, vec3_sub(far_point, eye)}, 0, REAL_INFINITY, 0, rays_07);
+        shading_release(view);
+        assert_true(L_07.r > 0.01); /* lit: the light is on the viewer's side */
+        assert_int_equal(mirror, rays[RAY_REFLECTED]);
+        assert_int_equal(rays_07[RAY_SHADOW], rays[RAY_SHADOW]);
+        assert_close(L_07.r + k_m.r * 0.3, L.r, TOL(1));
+        assert_close(L_07.g + k_m.g * 0.2, L.g, TOL(1));
+        assert_close(L_07.b + k_m.b * 0.1, L.b, TOL(1));
+        scene_free(&desc);
+    }
+}
+
+/* Two facing mirrors, k_m = 0.5, black diffuse, ambient a: an eye ray
+ * between them, along their normal, bounces back and forth.  At depth D
+ * the eye sees a (1 + k + ... + k^D) = a (1 - k^(D+1)) / (1 - k), with D
+ * reflected rays; with --min-weight 0.1 no ray of weight k^4 = 0.0625 is
+ * cast: 3 reflected rays, whatever the depth. */
+static void test_facing_mirrors_depth_and_weight(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    desc.ambient = color_make((real)0.1, (real)0.2, (real)0.4);
+    desc.back_color = color_make(1, 1, 1); /* never seen */
+    vec3 n = vec3_normalize(vec3_make(2, 1, -2)); /* (2, 1, -2) / 3 */
+    int s = add_shader(&desc, SHADER_LAMBERTIAN, color_make(0, 0, 0), color_make(0.5, 0.5, 0.5));
+    add_plane(&desc, s, far_point, n, 50);                                   /* facing +n */
+    add_plane(&desc, s, vec3_add(far_point, vec3_scale(n, 3)), vec3_neg(n), 50); /* 3 away, facing -n */
+    ray eye = {vec3_add(far_point, vec3_scale(n, 1)), vec3_scale(n, -1)};
+    const int depths[] = {0, 1, 3, 10};
+    for (int k = 0; k < 4; k++) {
+        path_knobs knobs = knobs_of(depths[k], 0);
+        uint64_t rays[RAY_KINDS] = {0};
+        probe_shader = -1;
+        color L = trace_one(&desc, &knobs, eye, rays);
+        double sum = (1 - pow(0.5, depths[k] + 1)) / 0.5;
+        assert_int_equal(depths[k], rays[RAY_REFLECTED]);
+        assert_close(0.1 * sum, L.r, TOL(1));
+        assert_close(0.4 * sum, L.b, TOL(2));
+    }
+    path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, (real)0.1);
+    uint64_t rays[RAY_KINDS] = {0};
+    color L = trace_one(&desc, &knobs, eye, rays);
+    assert_int_equal(3, rays[RAY_REFLECTED]);
+    assert_close(0.1 * 1.875, L.r, TOL(1));
+    scene_free(&desc);
+}
+
+/* ---- a convex mirror never sees itself ------------------------------------------------------- */
+
+/* A mirror sphere (k_m = 1, black diffuse) of radius s at s (3.7, 2.9,
+ * -4.3), scales 1e-4 to 1e4, looked at from 3 s away by a grid of eye rays
+ * that covers it to its rim.  Every eye ray that hits it casts exactly one
+ * mirror ray, which must escape to the background: a mirror ray that hit the
+ * sphere again would cast a second one.  So reflected rays = hits, and every
+ * hit shows k_m times the backColor exactly. */
+static void test_convex_mirror_never_sees_itself(void **state)
+{
+    (void)state;
+    const real scales[] = {(real)1e-4, (real)1e-2, 1, (real)1e2, (real)1e4};
+    for (int k = 0; k < 5; k++) {
+        real s = scales[k];
+        vec3 c = vec3_scale(vec3_make((real)3.7, (real)2.9, (real)-4.3), s);
+        scene desc;
+        scene_init(&desc);
+        desc.back_color = color_make((real)0.25, (real)0.5, (real)0.75);
+        int m = add_shader(&desc, SHADER_LAMBERTIAN, color_make(0, 0, 0), color_make(1, 1, 1));
+        scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = m, .center = c, .radius = s});
+        path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
+        char err[256] = "";
+        probe_shader = -1;
+        const shading_stage stage = {.name = "test", .shade = probe_shade, .shade_knobs = &knobs};
+        shading_view *view = shading_prepare(&stage, &desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
+        assert_non_null(view);
+        vec3 eye = vec3_add(c, vec3_scale(vec3_make(1, 2, 2), s)); /* 3 s from the centre */
+        vec3 to_c = vec3_normalize(vec3_sub(c, eye));
+        vec3 u = vec3_normalize(vec3_cross(to_c, vec3_make(0, 1, 0))), w = vec3_cross(u, to_c);
+        uint64_t rays[RAY_KINDS] = {0};
+        long hits = 0;
+        const int n = 81;
+        for (int i = 0; i < n; i++)
+            for (int j = 0; j < n; j++) {
+                /* the sphere subtends asin(1/3): tan = 0.3536; the grid reaches 0.36 */
+                real a = (real)0.36 * (2 * (real)i / (n - 1) - 1), b = (real)0.36 * (2 * (real)j / (n - 1) - 1);
+                ray r = {eye, vec3_add(to_c, vec3_add(vec3_scale(u, a), vec3_scale(w, b)))};
+                uint64_t before = rays[RAY_REFLECTED];
+                color L = trace(&view->tr, r, 0, REAL_INFINITY, 0, rays);
+                if (rays[RAY_REFLECTED] == before)
+                    continue; /* missed the sphere */
+                hits++;
+                if (rays[RAY_REFLECTED] != before + 1 || L.g != desc.back_color.g)
+                    fail_msg("scale %g, ray (%d, %d): %d mirror rays, L = %g (the mirror saw itself)", (double)s, i, j,
+                             (int)(rays[RAY_REFLECTED] - before), (double)L.g);
+            }
+        assert_true(hits > n * n / 2); /* most of the grid is on the sphere */
+        shading_release(view);
+        scene_free(&desc);
+    }
+}
+
+/* ---- whole images ---------------------------------------------------------------------------- */
+
+/* Renders desc at w x h with the glazed shader and knobs. */
+static render_stats render_glazed(const scene *desc, const path_knobs *knobs, image *img, int w, int h)
+{
+    char err[256] = "";
+    const shading_stage stage = {.name = "test", .shade = shade_glazed, .shade_knobs = knobs};
+    shading_view *view = shading_prepare(&stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
+    if (!view)
+        fail_msg("%s", err);
+    if (image_init(img, w, h) != 0)
+        fail_msg("out of memory");
+    render_options opt = {.samples = 1, .threads = 2};
+    render_stats stats = render_image(img, shading_sample, view, &opt);
+    shading_release(view);
+    return stats;
+}
+
+/* The furnace: a mirror sphere (k_m = 1, black diffuse) in a uniform
+ * background, no lights, fills the view's middle: it is invisible, every
+ * pixel within 2/255 of the background, at the default depth.  At depth 0 it
+ * is a black disc (the mirror term is not traced). */
+static void test_furnace_mirror_sphere(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    desc.has_camera = true;
+    desc.camera = (scene_camera){.kind = CAMERA_PERSPECTIVE, .view_point = {30.5, -20.25, 41}, .view_dir = {0, 0, -1},
+                                 .view_up = {0, 1, 0}, .proj_distance = 1, .view_width = 1, .view_height = 1};
+    desc.back_color = color_make((real)0.5, (real)0.5, (real)0.5);
+    int m = add_shader(&desc, SHADER_LAMBERTIAN, color_make(0, 0, 0), color_make(1, 1, 1));
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = m, .center = {30.5, -20.25, 37},
+                                             .radius = 1.5});
+    const int side = 96;
+    path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
+    image img;
+    render_stats stats = render_glazed(&desc, &knobs, &img, side, side);
+    uint8_t back = display_encode(desc.back_color.g, 1);
+    int worst = 0;
+    for (int k = 0; k < side * side; k++) {
+        int diff = abs((int)display_encode(img.pixels[k].g, 1) - back);
+        worst = diff > worst ? diff : worst;
+    }
+    assert_true(worst <= 2);
+    assert_true(stats.by_kind[RAY_REFLECTED] > (uint64_t)side * side / 4); /* the sphere is big in the view */
+    image_free(&img);
+    knobs.depth = 0;
+    stats = render_glazed(&desc, &knobs, &img, side, side);
+    assert_int_equal(0, stats.by_kind[RAY_REFLECTED]);
+    assert_close(0, img.pixels[side / 2 * side + side / 2].g, 0); /* the centre: a black disc */
+    image_free(&img);
+    scene_free(&desc);
+}
+
+/* The built-in scene: the glazed floor and the mirror ball cast mirror rays,
+ * the other shaders none; every pixel finite and non-negative.  The
+ * weight cut-off only ever removes rays. */
+static void test_builtin_scene_rays(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    assert_int_equal(0, mirror_scene(&desc));
+    path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
+    image img;
+    render_stats cut = render_glazed(&desc, &knobs, &img, 32, 32);
+    for (int k = 0; k < 32 * 32; k++)
+        assert_true(img.pixels[k].r >= 0 && isfinite(img.pixels[k].r));
+    image_free(&img);
+    knobs.min_weight = 0;
+    render_stats all = render_glazed(&desc, &knobs, &img, 32, 32);
+    image_free(&img);
+    assert_int_equal(32 * 32, all.by_kind[RAY_EYE]);
+    assert_int_equal(0, all.by_kind[RAY_REFRACTED]);
+    assert_true(all.by_kind[RAY_REFLECTED] > 32 * 32 / 4); /* the floor fills the lower half */
+    assert_true(cut.by_kind[RAY_REFLECTED] <= all.by_kind[RAY_REFLECTED]);
+    scene_free(&desc);
+}
+
+static const graded_test tests[] = {
+    GRADED(test_reflect_known, 3),
+    GRADED(test_reflect_random, 2),
+    GRADED(test_mirror_ray_reaches_probe, 3),
+    GRADED(test_glazed_adds_to_chapter_07, 2),
+    GRADED(test_facing_mirrors_depth_and_weight, 3),
+    GRADED(test_convex_mirror_never_sees_itself, 3),
+    GRADED(test_furnace_mirror_sphere, 2),
+    GRADED(test_builtin_scene_rays, 1),
+};
+
+SUITE_MAIN("08_mirrors", tests)
