@@ -13,7 +13,7 @@
  *                    could add to the pixel is at most w times the radiance it
  *                    finds.  It brings no light either.
  *
- * A coefficient of zero never casts a ray, whatever the knobs (DESIGN.md:
+ * A coefficient of zero never casts a ray, whatever the knobs (docs/design.md:
  * "no mirror rays where the mirror coefficient is zero").
  *
  * The weight travels with the tracer.  trace() hands the shade function the

@@ -5,7 +5,7 @@
  *     L = L_a + L_r + L_m
  *
  * with L_m "evaluated by tracing a new ray".  A shader's <mirrorCoefficient>
- * k_m (SCENES.md, an extension of the course's format; on a Lambertian or a
+ * k_m (docs/scenes.md, an extension of the course's format; on a Lambertian or a
  * Phong shader) says how much of L_m the surface reflects, per colour
  * channel:
  *

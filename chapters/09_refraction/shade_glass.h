@@ -1,7 +1,7 @@
 /* shade_glass.h - chapter 09: the shade function of the refraction stage.
  *
  * The lecture's "Recursive Shading Model" with both of its recursive terms:
- * a Glass shader (SCENES.md: <shader type="Glass"> with <refractiveIndex>
+ * a Glass shader (docs/scenes.md: <shader type="Glass"> with <refractiveIndex>
  * eta, 1.5 by default) reflects and transmits, and nothing else:
  *
  *     L = R L_reflected + (1 - R) L_transmitted

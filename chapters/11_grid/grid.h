@@ -16,7 +16,7 @@
  * hit at exactly the same t: the first in the list wins, as in the linear scan.
  * So a renderer swaps the one for the other in one line.
  *
- * Knobs (docs/design.md, principle 6): the cell density (cells per surface) with
+ * Knobs (docs/design.md, "Knobs"): the cell density (cells per surface) with
  * a cap on the number of cells, mailboxing (a surface already tested along
  * the ray is not tested again), and leaping (a ray in an empty cell whose
  * neighbours up to r cells away are empty too crosses that whole block of
