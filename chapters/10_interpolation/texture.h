@@ -1,7 +1,7 @@
 /* texture.h - chapter 10: a texture's colour at texture coordinates (u, v).
  *
  * A shader's <texture ref> replaces its diffuse colour k_d by the texture's
- * colour at the point's texture coordinates (SCENES.md): interpolated from
+ * colour at the point's texture coordinates (docs/scenes.md): interpolated from
  * the mesh's vt (interpolate.h), or the sphere's own (sphere_uv.h).  The
  * texels were decoded once, when the scene was read (common/texture_image.h):
  * here they are only looked up.
