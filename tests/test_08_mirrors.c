@@ -358,7 +358,7 @@ static void test_convex_mirror_never_sees_itself(void **state)
                              (int)(rays[RAY_REFLECTED] - before), (double)L.g);
             }
         if (!(hits > n * n / 2)) /* most of the grid is on the sphere */
-            fail_msg("scale %g: mirror rays were counted for %d of %d eye rays, expected more than half\n"
+            fail_msg("scale %g: mirror rays were counted for %ld of %d eye rays, expected more than half\n"
                      "    likely mistake: count each mirror ray once: ++rays[RAY_REFLECTED]",
                      (double)s, hits, n * n);
         shading_release(view);
