@@ -11,6 +11,8 @@ void exercise_announce(const char *chapter, const char *file, const char *exerci
     /* One fprintf: stdio locks the stream, so lines from two threads do not interleave. */
     fprintf(stderr,
             "chapter %.*s: %s is still an exercise (TODO %s in chapters/%s/%s); it returns a placeholder, "
-            "so images that need it show only the background (make REFERENCE=%.*s links the reference chapter %.*s instead)\n",
-            number, chapter, function, exercise, chapter, file, number, chapter, number, chapter);
+            "so the images lack what it computes: the background, black or an unlit surface where it is needed, "
+            "as chapters/%s/README.md says under Exercises (make REFERENCE=%.*s links the reference chapter %.*s "
+            "instead)\n",
+            number, chapter, function, exercise, chapter, file, chapter, number, chapter, number, chapter);
 }

@@ -8,7 +8,9 @@
  * The first call prints one line on stderr, for example
  *
  *     chapter 01: camera_ray is still an exercise (TODO perspective in chapters/01_camera_rays/camera.c);
- *     it returns a placeholder, so images that need it show only the background (make REFERENCE=01 links the reference chapter 01 instead)
+ *     it returns a placeholder, so the images lack what it computes: the background, black or an unlit surface
+ *     where it is needed, as chapters/01_camera_rays/README.md says under Exercises (make REFERENCE=01 links
+ *     the reference chapter 01 instead)
  *
  * so that a black image or a failed test is never a mystery.  Later calls,
  * from any thread, print nothing.  Solutions never call it: a finished

@@ -136,6 +136,16 @@ static color trace_one(const scene *desc, const path_knobs *knobs, ray r, uint64
     return c;
 }
 
+/* A count (rays, probe hits, depth) against the expected one, with the
+ * input and the likely mistake in the message. */
+static void check_count(long long expected, long long got, const char *input, const char *what,
+                        const char *mistake)
+{
+    if (got != expected)
+        fail_msg("%s: %s\n    expected %lld\n    got      %lld\n    likely mistake: %s", input, what, expected, got,
+                 mistake);
+}
+
 static int add_shader(scene *desc, shader_kind kind, color diffuse, color k_m)
 {
     scene_shader s = scene_default_shader(kind);
@@ -183,17 +193,27 @@ static void test_mirror_ray_reaches_probe(void **state)
     path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
     uint64_t rays[RAY_KINDS] = {0};
     color L = trace_one(&desc, &knobs, (ray){eye, d}, rays);
-    assert_int_equal(1, probe.n);
-    assert_int_equal(1, probe.depth[0]);
-    assert_int_equal(1, rays[RAY_REFLECTED]);
+    const char *input = "an eye ray onto a tilted mirror (k_m = (0.8, 0.5, 0.25)), a probe sphere in its mirror direction";
+    check_count(1, (long long)rays[RAY_REFLECTED], input, "reflected rays counted",
+                "count each mirror ray once: ++rays[RAY_REFLECTED]");
+    check_count(1, probe.n, input, "rays that reached the probe",
+                probe.n == 0 ? "no mirror ray, or not along reflect(sp->r.d, sp->n), or not traced"
+                             : "the mirror ray was traced more than once");
+    check_count(1, probe.depth[0], input, "depth of the ray that reached the probe",
+                "trace(&next.tr, ray, 0, REAL_INFINITY, depth + 1, rays): one level deeper");
     assert_int_equal(0, rays[RAY_SHADOW]); /* no lights */
     /* from the mirror's point (60 from the origin: the offset is tiny), along r */
     assert_vec3_close(far_point, probe.r[0].p, 1e4 * REAL_EPSILON * 60);
     assert_close(0, vec3_length(vec3_cross(vec3_normalize(probe.r[0].d), vec3_normalize(r))), TOL(8));
     assert_true(vec3_dot(probe.r[0].d, r) > 0);
-    assert_vec3_close(vec3_make(0.8, 0.5, 0.25), vec3_make(probe.weight[0].r, probe.weight[0].g, probe.weight[0].b),
-                      TOL(1));
-    assert_close(0.8 * 0.2, L.r, TOL(1));
+    const suspect_vec3 sw[] = {{{1, 1, 1}, "the path's weight was not carried: trace with next.tr, not tr"}};
+    assert_vec3_why(vec3_make(0.8, 0.5, 0.25), vec3_make(probe.weight[0].r, probe.weight[0].g, probe.weight[0].b),
+                    TOL(1), describe("%s: the weight of the probe's ray", input),
+                    "trace with next.tr, the tracer path_next filled in: it carries the path's weight", sw, 1);
+    const suspect sl[] = {{0.2, "L_m not multiplied by k_m: the glazed term is k_m L_m"},
+                          {0.8 * 0.8 * 0.2, "k_m applied twice"}};
+    assert_close_why(0.8 * 0.2, L.r, TOL(1), describe("%s: the radiance the eye sees, red", input),
+                     "k_m times the probe's colour 0.2 (black diffuse, no lights)", sl, 2);
     assert_close(0.5 * 0.4, L.g, TOL(1));
     assert_close(0.25 * 0.6, L.b, TOL(1));
     scene_free(&desc);
@@ -233,9 +253,16 @@ static void test_glazed_adds_to_chapter_07(void **state)
         color L_07 = trace(&view->tr, (ray){eye, vec3_sub(far_point, eye)}, 0, REAL_INFINITY, 0, rays_07);
         shading_release(view);
         assert_true(L_07.r > 0.01); /* lit: the light is on the viewer's side */
-        assert_int_equal(mirror, rays[RAY_REFLECTED]);
-        assert_int_equal(rays_07[RAY_SHADOW], rays[RAY_SHADOW]);
-        assert_close(L_07.r + k_m.r * 0.3, L.r, TOL(1));
+        const char *input = describe("a glazed Phong plane, k_m = %s, one light, the backColor in the mirror direction",
+                                     mirror ? "(0.5, 0.25, 0.125)" : "0");
+        check_count(mirror, (long long)rays[RAY_REFLECTED], input, "reflected rays",
+                    "one mirror ray when k_m is not 0, counted once");
+        check_count((long long)rays_07[RAY_SHADOW], (long long)rays[RAY_SHADOW], input, "shadow rays",
+                    "the glazed surface is chapter 07's shading plus k_m L_m: the same shadow rays");
+        const suspect sg[] = {{L_07.r + 0.3, "L_m not multiplied by k_m: the glazed term is k_m L_m"},
+                              {k_m.r * 0.3, "chapter 07's L_a + L_r left out: L = L_a + L_r + k_m L_m"}};
+        assert_close_why(L_07.r + k_m.r * 0.3, L.r, TOL(1), describe("%s: red", input),
+                         "L = L_a + L_r (chapter 07) + k_m L_m", sg, 2);
         assert_close(L_07.g + k_m.g * 0.2, L.g, TOL(1));
         assert_close(L_07.b + k_m.b * 0.1, L.b, TOL(1));
         scene_free(&desc);
@@ -266,14 +293,20 @@ static void test_facing_mirrors_depth_and_weight(void **state)
         probe_shader = -1;
         color L = trace_one(&desc, &knobs, eye, rays);
         double sum = (1 - pow(0.5, depths[k] + 1)) / 0.5;
-        assert_int_equal(depths[k], rays[RAY_REFLECTED]);
-        assert_close(0.1 * sum, L.r, TOL(1));
+        const char *input = describe("two facing mirrors (k_m = 0.5), an eye ray between them, --depth %d", depths[k]);
+        check_count(depths[k], (long long)rays[RAY_REFLECTED], input, "reflected rays",
+                    "one mirror ray per level, depth + 1 passed on, path_next asked before each");
+        const suspect sf[] = {{0.1, "no mirror ray traced: only the first surface's ambient"}};
+        assert_close_why(0.1 * sum, L.r, TOL(1), describe("%s: red", input),
+                         "a (1 + k + ... + k^D): each bounce adds k_m times what it sees", sf, 1);
         assert_close(0.4 * sum, L.b, TOL(2));
     }
     path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, (real)0.1);
     uint64_t rays[RAY_KINDS] = {0};
     color L = trace_one(&desc, &knobs, eye, rays);
-    assert_int_equal(3, rays[RAY_REFLECTED]);
+    check_count(3, (long long)rays[RAY_REFLECTED], "two facing mirrors (k_m = 0.5), --min-weight 0.1",
+                "reflected rays", "ask path_next(tr, depth, k_m, &next) and trace with next.tr: it stops a path "
+                                  "whose weight falls below min_weight");
     assert_close(0.1 * 1.875, L.r, TOL(1));
     scene_free(&desc);
 }
@@ -324,7 +357,10 @@ static void test_convex_mirror_never_sees_itself(void **state)
                     fail_msg("scale %g, ray (%d, %d): %d mirror rays, L = %g (the mirror saw itself)", (double)s, i, j,
                              (int)(rays[RAY_REFLECTED] - before), (double)L.g);
             }
-        assert_true(hits > n * n / 2); /* most of the grid is on the sphere */
+        if (!(hits > n * n / 2)) /* most of the grid is on the sphere */
+            fail_msg("scale %g: mirror rays were counted for %ld of %d eye rays, expected more than half\n"
+                     "    likely mistake: count each mirror ray once: ++rays[RAY_REFLECTED]",
+                     (double)s, hits, n * n);
         shading_release(view);
         scene_free(&desc);
     }

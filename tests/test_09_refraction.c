@@ -102,7 +102,13 @@ static void test_snell_law(void **state)
         vec3 n = random_unit(), t = tangent_of(n);
         vec3 d = incoming(n, t, theta_i), T;
         real cos_t;
-        assert_true(refract(d, n, eta_i, eta_t, &T, &cos_t));
+        const char *input = describe("refract at theta_i = %.2f degrees from eta %g into %g", theta_i * 180 / pi,
+                                     (double)eta_i, (double)eta_t);
+        if (!refract(d, n, eta_i, eta_t, &T, &cos_t))
+            fail_msg("%s (below any critical angle)\n    expected true (a transmitted ray)\n    got      false\n"
+                     "    likely mistake: total internal reflection only when |S_t|^2 > 1, with S_t = (eta_i / eta_t) "
+                     "S_i; an upside-down ratio, or a test on |S_i|, reports it here",
+                     input);
         double theta_t = asin(eta_i * sin(theta_i) / eta_t); /* the law, in double */
         vec3 expected = vec3_add(vec3_scale(t, (real)sin(theta_t)), vec3_scale(n, (real)-cos(theta_t)));
         if (k < 8) { /* the first few with the likely mistakes named */
@@ -114,14 +120,17 @@ static void test_snell_law(void **state)
                  "C_t = +cos(theta_t) n: the transmitted ray goes on to the far side, against n"},
                 {d, "T = d: Snell's law bends the ray"},
             };
-            assert_vec3_why(expected, T, TOL(8),
-                            describe("refract at theta_i = %.2f degrees from eta %g into %g", theta_i * 180 / pi,
-                                     (double)eta_i, (double)eta_t),
+            assert_vec3_why(expected, T, TOL(8), input,
                             "S_t = (eta_i / eta_t) S_i, C_t = -cos(theta_t) n, T = C_t + S_t", sT,
                             sizeof sT / sizeof sT[0]);
         }
         assert_close(1, vec3_length(T), TOL(2));
-        assert_close(cos(theta_t), cos_t, TOL(8));
+        const suspect sc[] = {
+            {cos(theta_i), "*cos_t = cos(theta_i): it is the transmitted ray's cosine, sqrt(1 - |S_t|^2)"},
+            {-cos(theta_t), "*cos_t is the cosine of theta_t, positive, not T . n"},
+        };
+        assert_close_why(cos(theta_t), cos_t, TOL(8), describe("%s: cos_t", input),
+                         "*cos_t = cos(theta_t) = sqrt(1 - |S_t|^2)", sc, sizeof sc / sizeof sc[0]);
         assert_close(-cos(theta_t), vec3_dot(T, n), TOL(8)); /* on the far side */
         assert_close(sin(theta_t), vec3_dot(T, t), TOL(8));  /* bent in the plane of d and n */
         assert_close(0, vec3_dot(T, vec3_cross(n, t)), TOL(4));
@@ -161,7 +170,12 @@ static void test_critical_angle(void **state)
             glass_event e = glass_at(&sp, (real)1.5, (fresnel_mode)mode);
             assert_close(1.5, e.eta_i, 0); /* leaving the glass */
             assert_close(1, e.eta_t, 0);
-            assert_true(isfinite(e.R) && e.R >= 0 && e.R <= 1);
+            if (!(isfinite(e.R) && e.R >= 0 && e.R <= 1))
+                fail_msg("glass_at, out of glass (1.5 into 1), sin(theta_i) = 1/1.5 %+d ulps: R\n"
+                         "    expected a number in [0, 1]\n    got      %.17g\n"
+                         "    likely mistake: the total internal reflection test is |S_t|^2 > 1 on the refracted "
+                         "sine; past it sqrt(1 - |S_t|^2) is NaN",
+                         k, (double)e.R);
             if (e.transmits) {
                 /* 64 ulps below theta_c, sin^2(theta_t) is 1 less about 2 x 1.5 x 64 ulps: cos_t is
                  * at most sqrt(1024 REAL_EPSILON), and R falls from 1 by a few times cos_t */
@@ -181,8 +195,15 @@ static void test_critical_angle(void **state)
     double theta_c = asin(1 / 1.5);
     vec3 T;
     real cos_t;
-    assert_true(refract(incoming(n, t, 0.999 * theta_c), n, (real)1.5, 1, &T, &cos_t));
-    assert_false(refract(incoming(n, t, 1.001 * theta_c), n, (real)1.5, 1, &T, &cos_t));
+    const char *tir = "total internal reflection exactly when |S_t|^2 > 1, S_t = (eta_i / eta_t) S_i";
+    if (!refract(incoming(n, t, 0.999 * theta_c), n, (real)1.5, 1, &T, &cos_t))
+        fail_msg("refract out of glass (1.5 into 1) at 0.999 theta_c\n    expected true (transmitted)\n"
+                 "    got      false\n    likely mistake: %s",
+                 tir);
+    if (refract(incoming(n, t, 1.001 * theta_c), n, (real)1.5, 1, &T, &cos_t))
+        fail_msg("refract out of glass (1.5 into 1) at 1.001 theta_c\n    expected false (total internal "
+                 "reflection)\n    got      true\n    likely mistake: %s",
+                 tir);
     /* into glass there is no critical angle: 89.9 degrees still transmits */
     assert_true(refract(incoming(n_out, tangent_of(n_out), 89.9 * pi / 180), n_out, 1, (real)1.5, &T, &cos_t));
 }
@@ -268,7 +289,17 @@ static void test_r_plus_t(void **state)
             real t_s = 2 * eta_i * cos_i / (eta_i * cos_i + eta_t * cos_t);
             real t_p = 2 * eta_i * cos_i / (eta_t * cos_i + eta_i * cos_t);
             real transmitted = eta_t * cos_t / (eta_i * cos_i) * (t_s * t_s + t_p * t_p) / 2;
-            assert_close(1, R + transmitted, TOL(8));
+            if (!isfinite(R) || !isfinite(transmitted))
+                fail_msg("refract and fresnel_exact at theta_i = %d degrees from eta %g into %g\n"
+                         "    expected finite R and cos_t\n    got      R = %g, cos_t = %g\n"
+                         "    likely mistake: refract transmitted past the critical angle (the test is |S_t|^2 > 1)",
+                         k, (double)eta_i, (double)eta_t, (double)R, (double)cos_t);
+            const suspect sr[] = {{1 + R, "R is twice too large: (r_s^2 + r_p^2) / 2"}};
+            assert_close_why(1, R + transmitted, TOL(8),
+                             describe("fresnel_exact at theta_i = %d degrees from eta %g into %g: R + the transmitted "
+                                      "fraction",
+                                      k, (double)eta_i, (double)eta_t),
+                             "energy is conserved: R + T = 1 (r_s, r_p and their average as the lecture's)", sr, 1);
             assert_true(R >= 0 && R <= 1);
             checked++;
         }

@@ -66,7 +66,7 @@ make STUDENT=0        # the reference renderers (build/) and images (out/), to c
 ```
 
 An exercise you have not done yet prints one line the first time it runs, naming its `TODO` and file:
-until then the images that need it show only the background (black, or the scene's colour).  Chapter N's
+until then the images lack what it computes (the chapter's README says how they look, under Exercises).  Chapter N's
 renderer uses your chapters 1 to N, so finish them in order or take the earlier ones from the reference
 with `REFERENCE=`.  `make grade` always links the reference for the other chapters: your points for a
 chapter depend on that chapter's files only.  `make test` runs every suite on all your files at once (it
