@@ -22,7 +22,8 @@
  * neighbours up to r cells away are empty too crosses that whole block of
  * empty cells in one step, as in Cohen and Sheffer's proximity clouds),
  * and culling (a surface of the cell is handed to surface_intersect only
- * when the ray passes through the surface's bounding box within the window).
+ * when the ray passes through the part of the surface's bounding box inside
+ * that cell, within the window).
  */
 #ifndef CH11_GRID_H
 #define CH11_GRID_H
@@ -61,8 +62,10 @@ typedef struct {
     uint8_t *empty;           /* per cell: every cell within empty[c] - 1 cells (in each
                                * axis) of c is empty; 0 for a cell with surfaces.  NULL
                                * when leaping is off */
-    float (*box)[6];          /* per surface: its bounding box, widened by the margin and rounded
-                               * outwards (lo x, y, z, hi x, y, z); NULL when culling is off */
+    uint8_t (*box)[6];        /* per entry of refs: the part of the surface's box (widened by the
+                               * margin) inside the cell, in 255ths of the cell's frame (the cell
+                               * widened by the margin), rounded outwards (lo x, y, z, hi x, y, z);
+                               * NULL when culling is off */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
     long n_cells, n_refs, n_unbinned;
     real margin;              /* every surface's box is widened by this before it is binned */

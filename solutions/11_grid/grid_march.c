@@ -48,37 +48,31 @@ static inline void test_surface(search *s, uint32_t k)
 /* end snippet */
 
 /* snippet: cull */
-/* Whether the ray can meet a surface whose (widened) box is `box` at some t
- * in (t_min, upper): the slabs of the three axes overlap there.  `near[a]`
- * picks the side of the box the ray enters by along axis a (box[a] for
- * d_a > 0, box[3 + a] for d_a < 0) and far[a] the other; each crossing is
- * widened by the axis's rounding slack, and a NaN never culls, so that a
- * surface surface_intersect would report is never culled.  A ray with a
- * zero component (inv_d = 0) takes the slower, general path. */
-static inline bool passes_box(const float box[6], const real p[3], const real inv_d[3], const real slack[3],
-                              const int near[3], const int far[3], bool parallel, real t_min, real upper)
+/* Whether the ray can meet the part of a surface's box inside the cell,
+ * `box` (cull_box: 255ths of the cell's frame), at some t in (t_min, upper):
+ * the slabs of the three axes overlap there.  Along axis a the frame's low
+ * side is crossed at base_a and each 255th adds unit_a, so side q is crossed
+ * at base_a + q unit_a; the side the ray enters by is box[near_a] (box[a]
+ * for d_a > 0, box[3 + a] for d_a < 0) and it leaves by box[far_a].  Each
+ * crossing is widened by the axis's rounding slack: enter[a] = base_a -
+ * slack_a, leave[a] = base_a + slack_a.  A NaN never culls, so that a
+ * surface surface_intersect would report is never culled.  Written out
+ * axis by axis: it runs for every surface of every cell the ray visits. */
+typedef struct {
+    real enter[3], leave[3], unit[3];
+    int near[3], far[3];
+} cull_frame;
+
+static inline bool passes_box(const uint8_t box[6], const cull_frame *f, real t_min, real upper)
 {
-    real t_in = t_min, t_out = upper;
-    if (!parallel) {
-        for (int a = 0; a < 3; a++) {
-            real t0 = ((real)box[near[a]] - p[a]) * inv_d[a] - slack[a];
-            real t1 = ((real)box[far[a]] - p[a]) * inv_d[a] + slack[a];
-            t_in = t0 > t_in ? t0 : t_in;
-            t_out = t1 < t_out ? t1 : t_out;
-        }
-        return !(t_in > t_out);
-    }
-    for (int a = 0; a < 3; a++) {
-        if (inv_d[a] == 0) { /* parallel to the slab: inside it or never */
-            if (p[a] < (real)box[a] || p[a] > (real)box[3 + a])
-                return false;
-            continue;
-        }
-        real t0 = ((real)box[near[a]] - p[a]) * inv_d[a] - slack[a];
-        real t1 = ((real)box[far[a]] - p[a]) * inv_d[a] + slack[a];
-        t_in = t0 > t_in ? t0 : t_in;
-        t_out = t1 < t_out ? t1 : t_out;
-    }
+    real x0 = f->enter[0] + (real)box[f->near[0]] * f->unit[0], x1 = f->leave[0] + (real)box[f->far[0]] * f->unit[0];
+    real y0 = f->enter[1] + (real)box[f->near[1]] * f->unit[1], y1 = f->leave[1] + (real)box[f->far[1]] * f->unit[1];
+    real z0 = f->enter[2] + (real)box[f->near[2]] * f->unit[2], z1 = f->leave[2] + (real)box[f->far[2]] * f->unit[2];
+    real t_in = x0 > t_min ? x0 : t_min, t_out = x1 < upper ? x1 : upper;
+    t_in = y0 > t_in ? y0 : t_in;
+    t_out = y1 < t_out ? y1 : t_out;
+    t_in = z0 > t_in ? z0 : t_in;
+    t_out = z1 < t_out ? z1 : t_out;
     return !(t_in > t_out);
 }
 /* end snippet */
@@ -233,14 +227,12 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
     const real reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
     real inv_d[3], slack[3], t0 = t_min, t1 = t_max;
     int near[3], far[3];
-    bool parallel = false;
     for (int a = 0; a < 3; a++) {
         inv_d[a] = 1 / d[a];
         near[a] = d[a] < 0 ? 3 + a : a;
         far[a] = d[a] < 0 ? a : 3 + a;
         if (!isfinite(inv_d[a])) { /* d_a = +0 or -0, or tiny */
             inv_d[a] = slack[a] = 0;
-            parallel = true;
             if (!(p[a] >= lo[a] && p[a] <= hi[a]))
                 goto done;
             continue;
@@ -277,23 +269,44 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
     uint32_t mailbox[MAILBOX];
     for (int b = 0; b < MAILBOX; b++)
         mailbox[b] = UINT32_MAX;
+    /* culling: the frame of a cell (the cell widened by the margin) along
+     * axis a is crossed at base_a = (its low side - p_a) / d_a, and a 255th
+     * of it adds unit_a; on an axis the ray is parallel to, both are 0 and
+     * an infinite slack lets every box pass */
+    cull_frame f;
+    const real cell[3] = {g->cell.x, g->cell.y, g->cell.z};
+    real cull_slack[3];
+    for (int a = 0; a < 3; a++) {
+        f.unit[a] = (cell[a] + 2 * g->margin) / 255 * inv_d[a];
+        f.near[a] = near[a];
+        f.far[a] = far[a];
+        cull_slack[a] = inv_d[a] != 0 ? slack[a] : REAL_INFINITY;
+    }
+    const uint32_t *const refs = g->refs;
+    uint8_t(*const box)[6] = g->box;
+    const bool use_mailbox = g->mailbox;
     for (;;) {
         /* Every surface of the cell, each tested over the whole window
          * (t_min, best): a hit beyond this cell is kept too, and counts once
          * the march reaches its cell. */
         cells++;
-        const uint32_t *ref = g->refs + g->start[m.cell], *end = g->refs + g->start[m.cell + 1];
-        for (; ref < end; ref++) {
-            uint32_t k = *ref;
-            if (g->mailbox) {
-                if (mailbox[k % MAILBOX] == k)
-                    continue; /* tested already along this ray */
-                mailbox[k % MAILBOX] = k;
+        const uint32_t first = g->start[m.cell], last = g->start[m.cell + 1];
+        if (box && first < last)
+            for (int a = 0; a < 3; a++) {
+                real base = inv_d[a] != 0 ? (lo[a] + (real)m.i[a] * cell[a] - g->margin - p[a]) * inv_d[a] : 0;
+                f.enter[a] = base - cull_slack[a];
+                f.leave[a] = base + cull_slack[a];
             }
-            if (g->box && !passes_box(g->box[k], p, inv_d, slack, near, far, parallel, t_min, s.upper)) {
+        for (uint32_t e = first; e < last; e++) {
+            uint32_t k = refs[e];
+            if (use_mailbox && mailbox[k % MAILBOX] == k)
+                continue; /* tested already along this ray */
+            if (box && !passes_box(box[e], &f, t_min, s.upper)) {
                 culled++;
-                continue; /* the ray passes by its box */
+                continue; /* the ray passes by its box in this cell */
             }
+            if (use_mailbox)
+                mailbox[k % MAILBOX] = k;
             test_surface(&s, k);
         }
         /* The cell ends where the ray crosses its nearest boundary.  A hit no
