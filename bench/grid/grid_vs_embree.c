@@ -280,7 +280,7 @@ int main(int argc, char **argv)
             what = argv[k];
     }
     if (!what || size < 1 || runs < 1) {
-        fprintf(stderr, "usage: grid_vs_embree MESH.obj|sphere:N [--size 512] [--linear-rows 32] [--runs 5] [--knobs 1|0]\n");
+        fprintf(stderr, "usage: grid_vs_embree MESH.obj|sphere:N [--size 512] [--linear-rows 32] [--runs 5] [--knobs 1|2|0]\n");
         return 2;
     }
     float_mesh fm;
@@ -386,7 +386,7 @@ int main(int argc, char **argv)
     static const double densities[] = {1, 2, 4, 8, 16};
     printf("  grid knobs (1 thread): density, mailbox, leap, cull -> Mrays/s, build s, MB;"
            " per ray: cells, tests, culled\n");
-    for (int variant = 0; variant < (knobs ? 4 : 0); variant++)
+    for (int variant = 0; variant < (knobs == 2 ? 1 : knobs ? 4 : 0); variant++)
         for (size_t k = 0; k < sizeof densities / sizeof densities[0]; k++) {
             grid h;
             grid_options opt = {.density = densities[k], .max_cells = GRID_DEFAULT_MAX_CELLS,

@@ -77,6 +77,14 @@ static inline bool passes_box(const uint8_t box[6], const cull_frame *f, real t_
 }
 /* end snippet */
 
+/* The largest |component| of v (a NaN component is passed over), without
+ * the library calls of vec3_max_abs's fmax. */
+static inline real max_abs(vec3 v)
+{
+    real x = real_abs(v.x), y = real_abs(v.y), z = real_abs(v.z), m = x > y ? x : y;
+    return z > m ? z : m;
+}
+
 /* snippet: dda */
 /* The march's state (Amanatides and Woo): the cell the ray is in, the
  * direction of its steps, and the t at which it crosses the next cell
@@ -224,7 +232,7 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
      * errs towards visiting a cell too many, never one too few. */
     const real p[3] = {r.p.x, r.p.y, r.p.z}, d[3] = {r.d.x, r.d.y, r.d.z};
     const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, hi[3] = {g->hi.x, g->hi.y, g->hi.z};
-    const real reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
+    const real reach = 16 * REAL_EPSILON * (max_abs(r.p) + g->scale);
     real inv_d[3], slack[3], t0 = t_min, t1 = t_max;
     int near[3], far[3];
     for (int a = 0; a < 3; a++) {
@@ -244,8 +252,10 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
             near = far;
             far = swap;
         }
-        t0 = real_fmax(t0, near - slack[a]);
-        t1 = real_fmin(t1, far + slack[a]);
+        near -= slack[a];
+        far += slack[a];
+        t0 = near > t0 ? near : t0; /* fmax and fmin, inline; a NaN is passed over as they do */
+        t1 = far < t1 ? far : t1;
     }
     if (!(t0 <= t1)) /* misses the box, or the window ends before it */
         goto done;
@@ -253,7 +263,7 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
     /* The first cell: the one holding p + t0 d, moved back along the ray by
      * the rounding of that point, and clamped to the grid. */
     dda m;
-    const real d_max = vec3_max_abs(r.d);
+    const real d_max = max_abs(r.d);
     const real back = reach + 16 * REAL_EPSILON * real_abs(t0) * d_max;
     const real inv_cell[3] = {g->inv_cell.x, g->inv_cell.y, g->inv_cell.z};
     for (int a = 0; a < 3; a++) {
