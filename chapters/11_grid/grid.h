@@ -48,6 +48,14 @@ typedef struct {
 #define GRID_DEFAULT_MAX_CELLS (1L << 24)
 
 /* snippet: grid */
+/* One entry of a cell's list: 12 bytes, read in order with the cell. */
+typedef struct {
+    uint32_t surface; /* index into the surface list */
+    uint8_t box[6];   /* the part of the surface's box (widened by the margin) inside the cell,
+                       * in 255ths of the cell's frame (the cell widened by the margin),
+                       * rounded outwards (lo x, y, z, hi x, y, z); unset when culling is off */
+} grid_entry;
+
 typedef struct {
     const surface_list *list; /* the surfaces; the grid holds their indices only */
     vec3 lo, hi;              /* the grid's box: the surfaces' bounding box, widened by `margin` */
@@ -58,19 +66,16 @@ typedef struct {
      * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],
      * in increasing index. */
     uint32_t *start;          /* n_x n_y n_z + 1 offsets */
-    uint32_t *refs;           /* surface indices */
+    grid_entry *refs;         /* the entries: surface indices and their boxes in the cell */
     uint8_t *empty;           /* per cell: every cell within empty[c] - 1 cells (in each
                                * axis) of c is empty; 0 for a cell with surfaces.  NULL
                                * when leaping is off */
-    uint8_t (*box)[6];        /* per entry of refs: the part of the surface's box (widened by the
-                               * margin) inside the cell, in 255ths of the cell's frame (the cell
-                               * widened by the margin), rounded outwards (lo x, y, z, hi x, y, z);
-                               * NULL when culling is off */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
     long n_cells, n_refs, n_unbinned;
     real margin;              /* every surface's box is widened by this before it is binned */
     real scale;               /* the largest coordinate of the box, for the rounding bounds */
     bool mailbox;
+    bool cull;                /* refs[].box is filled in */
     size_t peak_bytes;        /* the most memory the build held at once */
 } grid;
 /* end snippet */

@@ -159,9 +159,10 @@ static void bin_surface(grid *g, const surface *s, uint32_t index, uint32_t *cou
                     continue;
                 long c = i + (long)g->n[0] * (j + (long)g->n[1] * k);
                 if (fill) {
-                    if (g->box)
-                        cull_box(g, lo, hi, i, j, k, g->box[fill[c]]);
-                    g->refs[fill[c]++] = index;
+                    grid_entry *entry = &g->refs[fill[c]++];
+                    entry->surface = index;
+                    if (g->cull)
+                        cull_box(g, lo, hi, i, j, k, entry->box);
                 } else
                     count[c]++;
             }
@@ -238,7 +239,7 @@ static void empty_distances(grid *g)
 
 int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, size_t err_size)
 {
-    *g = (grid){.list = list, .mailbox = opt.mailbox};
+    *g = (grid){.list = list, .mailbox = opt.mailbox, .cull = opt.cull};
     if (!(opt.density > 0) || opt.max_cells < 1 || opt.max_cells > (1L << 30)) {
         snprintf(err, err_size, "grid: density must be > 0 and the cell cap 1 .. 2^30 (got %g, %ld)", opt.density,
                  opt.max_cells);
@@ -319,9 +320,7 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
     g->start[g->n_cells] = (uint32_t)total;
     g->n_refs = (long)total;
     g->refs = malloc((total ? (size_t)total : 1) * sizeof *g->refs);
-    if (opt.cull)
-        g->box = malloc((total ? (size_t)total : 1) * sizeof *g->box);
-    if (!g->refs || (opt.cull && !g->box)) {
+    if (!g->refs) {
         free(count);
         goto out_of_memory;
     }
@@ -354,16 +353,15 @@ void grid_free(grid *g)
     free(g->refs);
     free(g->unbinned);
     free(g->empty);
-    free(g->box);
-    g->start = g->refs = g->unbinned = NULL;
+    g->start = g->unbinned = NULL;
+    g->refs = NULL;
     g->empty = NULL;
-    g->box = NULL;
     g->n_cells = g->n_refs = g->n_unbinned = 0;
 }
 
 size_t grid_memory(const grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
-    return sizeof *g + (cells + (size_t)g->n_refs + (size_t)g->n_unbinned) * sizeof(uint32_t) +
-           (g->empty ? (size_t)g->n_cells : 0) + (g->box ? (size_t)g->n_refs * sizeof *g->box : 0);
+    return sizeof *g + (cells + (size_t)g->n_unbinned) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof *g->refs +
+           (g->empty ? (size_t)g->n_cells : 0);
 }

@@ -292,8 +292,8 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
         f.far[a] = far[a];
         cull_slack[a] = inv_d[a] != 0 ? slack[a] : REAL_INFINITY;
     }
-    const uint32_t *const refs = g->refs;
-    uint8_t(*const box)[6] = g->box;
+    const grid_entry *const refs = g->refs;
+    const bool cull = g->cull;
     const bool use_mailbox = g->mailbox;
     for (;;) {
         /* Every surface of the cell, each tested over the whole window
@@ -301,17 +301,17 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
          * the march reaches its cell. */
         cells++;
         const uint32_t first = g->start[m.cell], last = g->start[m.cell + 1];
-        if (box && first < last)
+        if (cull && first < last)
             for (int a = 0; a < 3; a++) {
                 real base = inv_d[a] != 0 ? (lo[a] + (real)m.i[a] * cell[a] - g->margin - p[a]) * inv_d[a] : 0;
                 f.enter[a] = base - cull_slack[a];
                 f.leave[a] = base + cull_slack[a];
             }
         for (uint32_t e = first; e < last; e++) {
-            uint32_t k = refs[e];
+            uint32_t k = refs[e].surface;
             if (use_mailbox && mailbox[k % MAILBOX] == k)
                 continue; /* tested already along this ray */
-            if (box && !passes_box(box[e], &f, t_min, s.upper)) {
+            if (cull && !passes_box(refs[e].box, &f, t_min, s.upper)) {
                 culled++;
                 continue; /* the ray passes by its box in this cell */
             }
