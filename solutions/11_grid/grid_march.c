@@ -77,6 +77,41 @@ static inline bool passes_box(const uint8_t box[6], const cull_frame *f, real t_
 }
 /* end snippet */
 
+/* The cull frame of cell i (its base_a), and the span of the ray in it:
+ * along each axis, the 255ths of the frame that the ray's points at t in
+ * (t_min, upper) inside the frame cover, widened by one 255th and by the
+ * rounding of those points, span[a] .. span[3 + a], clamped to 0 .. 255.
+ * A box that ends before the span or starts after it, along any axis, is
+ * passed by: a cheaper test in integers that settles most boxes before
+ * passes_box.  A NaN leaves the span whole (0 .. 255). */
+static inline void cull_span(cull_frame *f, const grid *g, const int i[3], const real p[3], const real d[3],
+                             const real inv_d[3], const real cull_slack[3], real reach, real d_max, real t_min,
+                             real upper, int span[6])
+{
+    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, cell[3] = {g->cell.x, g->cell.y, g->cell.z};
+    real t_in = t_min, t_out = upper, origin[3];
+    for (int a = 0; a < 3; a++) {
+        origin[a] = lo[a] + (real)i[a] * cell[a] - g->margin;
+        real base = inv_d[a] != 0 ? (origin[a] - p[a]) * inv_d[a] : 0;
+        f->enter[a] = base - cull_slack[a];
+        f->leave[a] = base + cull_slack[a];
+        real t0 = f->enter[a] + (real)(f->near[a] < 3 ? 0 : 255) * f->unit[a];
+        real t1 = f->leave[a] + (real)(f->far[a] < 3 ? 0 : 255) * f->unit[a];
+        t_in = t0 > t_in ? t0 : t_in;
+        t_out = t1 < t_out ? t1 : t_out;
+    }
+    const real t_abs = real_abs(t_in) > real_abs(t_out) ? real_abs(t_in) : real_abs(t_out);
+    const real rounding = reach + 16 * REAL_EPSILON * t_abs * d_max;
+    for (int a = 0; a < 3; a++) {
+        real per_unit = 255 / (cell[a] + 2 * g->margin);
+        real q0 = (p[a] + t_in * d[a] - origin[a]) * per_unit, q1 = (p[a] + t_out * d[a] - origin[a]) * per_unit;
+        real widen = 1 + rounding * per_unit;
+        real q_lo = (q0 < q1 ? q0 : q1) - widen, q_hi = (q0 < q1 ? q1 : q0) + widen;
+        span[a] = q_lo > 0 && q_lo < 255 ? (int)q_lo : q_lo >= 255 ? 255 : 0;     /* NaN: 0 */
+        span[3 + a] = q_hi < 254 && q_hi > 0 ? (int)q_hi + 1 : q_hi <= 0 ? 0 : 255; /* NaN: 255 */
+    }
+}
+
 /* The largest |component| of v (a NaN component is passed over), without
  * the library calls of vec3_max_abs's fmax. */
 static inline real max_abs(vec3 v)
@@ -301,17 +336,20 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
          * the march reaches its cell. */
         cells++;
         const uint32_t first = g->start[m.cell], last = g->start[m.cell + 1];
+        int span[6] = {0, 0, 0, 255, 255, 255};
         if (cull && first < last)
-            for (int a = 0; a < 3; a++) {
-                real base = inv_d[a] != 0 ? (lo[a] + (real)m.i[a] * cell[a] - g->margin - p[a]) * inv_d[a] : 0;
-                f.enter[a] = base - cull_slack[a];
-                f.leave[a] = base + cull_slack[a];
-            }
+            cull_span(&f, g, m.i, p, d, inv_d, cull_slack, reach, d_max, t_min, s.upper, span);
         for (uint32_t e = first; e < last; e++) {
             uint32_t k = refs[e].surface;
             if (use_mailbox && mailbox[k % MAILBOX] == k)
                 continue; /* tested already along this ray */
-            if (cull && !passes_box(refs[e].box, &f, t_min, s.upper)) {
+            const uint8_t *b = refs[e].box;
+            if (cull && ((b[3] < span[0]) | (b[4] < span[1]) | (b[5] < span[2]) | (b[0] > span[3]) |
+                         (b[1] > span[4]) | (b[2] > span[5]))) {
+                culled++;
+                continue; /* the box lies beside the ray's span in this cell */
+            }
+            if (cull && !passes_box(b, &f, t_min, s.upper)) {
                 culled++;
                 continue; /* the ray passes by its box in this cell */
             }
