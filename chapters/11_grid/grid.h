@@ -61,6 +61,7 @@ typedef struct {
     vec3 lo, hi;              /* the grid's box: the surfaces' bounding box, widened by `margin` */
     vec3 cell;                /* the size of one cell along x, y and z */
     vec3 inv_cell;            /* 1 / cell */
+    real lo_a[3], cell_a[3];  /* lo and cell again, as arrays the march indexes by axis */
     int n[3];                 /* cells along x, y and z */
     /* The cells' lists, flat (compressed sparse rows): the surfaces of cell
      * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],

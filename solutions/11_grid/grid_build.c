@@ -292,6 +292,10 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
     vec3 size = vec3_sub(g->hi, g->lo);
     g->cell = vec3_make(size.x / (real)g->n[0], size.y / (real)g->n[1], size.z / (real)g->n[2]);
     g->inv_cell = vec3_make(1 / g->cell.x, 1 / g->cell.y, 1 / g->cell.z);
+    for (int a = 0; a < 3; a++) {
+        g->lo_a[a] = get(g->lo, a);
+        g->cell_a[a] = get(g->cell, a);
+    }
     g->n_cells = (long)g->n[0] * g->n[1] * g->n[2];
 
     /* Two passes over the surfaces: count each cell's surfaces, then, with the

@@ -88,7 +88,7 @@ static inline void cull_span(cull_frame *f, const grid *g, const int i[3], const
                              const real inv_d[3], const real cull_slack[3], real reach, real d_max, real t_min,
                              real upper, int span[6])
 {
-    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, cell[3] = {g->cell.x, g->cell.y, g->cell.z};
+    const real *lo = g->lo_a, *cell = g->cell_a;
     real t_in = t_min, t_out = upper, origin[3];
     for (int a = 0; a < 3; a++) {
         origin[a] = lo[a] + (real)i[a] * cell[a] - g->margin;
@@ -136,8 +136,7 @@ typedef struct {
  * from the grid's low corner) of axis a: lo_a + plane cell_a = p_a + t d_a. */
 static inline real crossing(const grid *g, int a, int plane, const real p[3], const real inv_d[3])
 {
-    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, cell[3] = {g->cell.x, g->cell.y, g->cell.z};
-    return (lo[a] + (real)plane * cell[a] - p[a]) * inv_d[a];
+    return (g->lo_a[a] + (real)plane * g->cell_a[a] - p[a]) * inv_d[a];
 }
 
 /* snippet: dda_step */
