@@ -22,7 +22,8 @@
  * neighbours up to r cells away are empty too crosses that whole block of
  * empty cells in one step, as in Cohen and Sheffer's proximity clouds),
  * and culling (a surface of the cell is handed to surface_intersect only
- * when the ray passes through the surface's bounding box within the window).
+ * when the ray passes through the part of the surface's bounding box inside
+ * that cell, within the window).
  */
 #ifndef CH11_GRID_H
 #define CH11_GRID_H
@@ -47,27 +48,35 @@ typedef struct {
 #define GRID_DEFAULT_MAX_CELLS (1L << 24)
 
 /* snippet: grid */
+/* One entry of a cell's list: 12 bytes, read in order with the cell. */
+typedef struct {
+    uint32_t surface; /* index into the surface list */
+    uint8_t box[6];   /* the part of the surface's box (widened by the margin) inside the cell,
+                       * in 255ths of the cell's frame (the cell widened by the margin),
+                       * rounded outwards (lo x, y, z, hi x, y, z); unset when culling is off */
+} grid_entry;
+
 typedef struct {
     const surface_list *list; /* the surfaces; the grid holds their indices only */
     vec3 lo, hi;              /* the grid's box: the surfaces' bounding box, widened by `margin` */
     vec3 cell;                /* the size of one cell along x, y and z */
     vec3 inv_cell;            /* 1 / cell */
+    real lo_a[3], cell_a[3];  /* lo and cell again, as arrays the march indexes by axis */
     int n[3];                 /* cells along x, y and z */
     /* The cells' lists, flat (compressed sparse rows): the surfaces of cell
      * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],
      * in increasing index. */
     uint32_t *start;          /* n_x n_y n_z + 1 offsets */
-    uint32_t *refs;           /* surface indices */
+    grid_entry *refs;         /* the entries: surface indices and their boxes in the cell */
     uint8_t *empty;           /* per cell: every cell within empty[c] - 1 cells (in each
                                * axis) of c is empty; 0 for a cell with surfaces.  NULL
                                * when leaping is off */
-    float (*box)[6];          /* per surface: its bounding box, widened by the margin and rounded
-                               * outwards (lo x, y, z, hi x, y, z); NULL when culling is off */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
     long n_cells, n_refs, n_unbinned;
     real margin;              /* every surface's box is widened by this before it is binned */
     real scale;               /* the largest coordinate of the box, for the rounding bounds */
     bool mailbox;
+    bool cull;                /* refs[].box is filled in */
     size_t peak_bytes;        /* the most memory the build held at once */
 } grid;
 /* end snippet */

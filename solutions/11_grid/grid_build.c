@@ -118,6 +118,28 @@ static bool triangle_touches_cell(const grid *g, const triangle *tri, int i, int
     return true;
 }
 
+/* snippet: cull_box */
+/* The part of a surface's box [lo, hi] (widened by the margin) inside cell
+ * (i, j, k), for culling: along each axis, in 255ths of the cell's frame,
+ * the cell widened by the margin on both sides, rounded outwards (floor for
+ * the low side, ceil for the high side, each a hundredth of a step further
+ * for the rounding of this arithmetic) and clamped to the frame.  One byte
+ * per side: 6 bytes per entry, read in order with the entries, where a
+ * float box per surface took 24 bytes read from anywhere. */
+static void cull_box(const grid *g, vec3 lo, vec3 hi, int i, int j, int k, uint8_t box[6])
+{
+    const int index[3] = {i, j, k};
+    for (int a = 0; a < 3; a++) {
+        double frame = (double)get(g->cell, a) + 2 * (double)g->margin;
+        double origin = (double)get(g->lo, a) + index[a] * (double)get(g->cell, a) - (double)g->margin;
+        double f_lo = ((double)get(lo, a) - g->margin - origin) / frame * 255 - 0.01;
+        double f_hi = ((double)get(hi, a) + g->margin - origin) / frame * 255 + 0.01;
+        box[a] = (uint8_t)(f_lo <= 0 ? 0 : f_lo >= 255 ? 255 : floor(f_lo));
+        box[3 + a] = (uint8_t)(f_hi <= 0 ? 0 : f_hi >= 255 ? 255 : ceil(f_hi));
+    }
+}
+/* end snippet */
+
 /* Lists surface s in every cell it overlaps: counts it there (fill NULL) or
  * writes its index at fill[cell]++. */
 static void bin_surface(grid *g, const surface *s, uint32_t index, uint32_t *count, uint32_t *fill)
@@ -136,9 +158,12 @@ static void bin_surface(grid *g, const surface *s, uint32_t index, uint32_t *cou
                 if (by_axes && !triangle_touches_cell(g, &s->triangle, i, j, k))
                     continue;
                 long c = i + (long)g->n[0] * (j + (long)g->n[1] * k);
-                if (fill)
-                    g->refs[fill[c]++] = index;
-                else
+                if (fill) {
+                    grid_entry *entry = &g->refs[fill[c]++];
+                    entry->surface = index;
+                    if (g->cull)
+                        cull_box(g, lo, hi, i, j, k, entry->box);
+                } else
                     count[c]++;
             }
 }
@@ -172,21 +197,6 @@ static void resolution(const double extent[3], long surfaces, double density, lo
     }
 }
 /* end snippet */
-
-/* A surface's box for culling: widened by the margin, then rounded outwards
- * to float, so that it holds every point the real-valued box holds. */
-static void cull_box(const grid *g, const surface *s, float box[6])
-{
-    vec3 lo, hi;
-    surface_bounds(s, &lo, &hi);
-    lo = widen(lo, -g->margin);
-    hi = widen(hi, g->margin);
-    for (int a = 0; a < 3; a++) {
-        float l = (float)get(lo, a), h = (float)get(hi, a);
-        box[a] = (real)l > get(lo, a) ? nextafterf(l, -INFINITY) : l;
-        box[3 + a] = (real)h < get(hi, a) ? nextafterf(h, INFINITY) : h;
-    }
-}
 
 /* snippet: empty_distances */
 /* empty[c]: the distance from cell c to the nearest cell with surfaces,
@@ -229,7 +239,7 @@ static void empty_distances(grid *g)
 
 int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, size_t err_size)
 {
-    *g = (grid){.list = list, .mailbox = opt.mailbox};
+    *g = (grid){.list = list, .mailbox = opt.mailbox, .cull = opt.cull};
     if (!(opt.density > 0) || opt.max_cells < 1 || opt.max_cells > (1L << 30)) {
         snprintf(err, err_size, "grid: density must be > 0 and the cell cap 1 .. 2^30 (got %g, %ld)", opt.density,
                  opt.max_cells);
@@ -282,6 +292,10 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
     vec3 size = vec3_sub(g->hi, g->lo);
     g->cell = vec3_make(size.x / (real)g->n[0], size.y / (real)g->n[1], size.z / (real)g->n[2]);
     g->inv_cell = vec3_make(1 / g->cell.x, 1 / g->cell.y, 1 / g->cell.z);
+    for (int a = 0; a < 3; a++) {
+        g->lo_a[a] = get(g->lo, a);
+        g->cell_a[a] = get(g->cell, a);
+    }
     g->n_cells = (long)g->n[0] * g->n[1] * g->n[2];
 
     /* Two passes over the surfaces: count each cell's surfaces, then, with the
@@ -322,14 +336,6 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
     free(fill);
     /* the most the build held at once: the grid and the fill array */
     g->peak_bytes = grid_memory(g) + (size_t)g->n_cells * sizeof *fill;
-    if (opt.cull) {
-        g->box = malloc((size_t)list->n * sizeof *g->box);
-        if (!g->box)
-            goto out_of_memory;
-        for (int k = 0; k < list->n; k++)
-            cull_box(g, &list->items[k], g->box[k]);
-        g->peak_bytes += (size_t)list->n * sizeof *g->box;
-    }
     if (opt.leap) {
         g->empty = malloc((size_t)g->n_cells);
         if (!g->empty)
@@ -351,16 +357,15 @@ void grid_free(grid *g)
     free(g->refs);
     free(g->unbinned);
     free(g->empty);
-    free(g->box);
-    g->start = g->refs = g->unbinned = NULL;
+    g->start = g->unbinned = NULL;
+    g->refs = NULL;
     g->empty = NULL;
-    g->box = NULL;
     g->n_cells = g->n_refs = g->n_unbinned = 0;
 }
 
 size_t grid_memory(const grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
-    return sizeof *g + (cells + (size_t)g->n_refs + (size_t)g->n_unbinned) * sizeof(uint32_t) +
-           (g->empty ? (size_t)g->n_cells : 0) + (g->box ? (size_t)g->list->n * sizeof *g->box : 0);
+    return sizeof *g + (cells + (size_t)g->n_unbinned) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof *g->refs +
+           (g->empty ? (size_t)g->n_cells : 0);
 }

@@ -48,40 +48,77 @@ static inline void test_surface(search *s, uint32_t k)
 /* end snippet */
 
 /* snippet: cull */
-/* Whether the ray can meet a surface whose (widened) box is `box` at some t
- * in (t_min, upper): the slabs of the three axes overlap there.  `near[a]`
- * picks the side of the box the ray enters by along axis a (box[a] for
- * d_a > 0, box[3 + a] for d_a < 0) and far[a] the other; each crossing is
- * widened by the axis's rounding slack, and a NaN never culls, so that a
- * surface surface_intersect would report is never culled.  A ray with a
- * zero component (inv_d = 0) takes the slower, general path. */
-static inline bool passes_box(const float box[6], const real p[3], const real inv_d[3], const real slack[3],
-                              const int near[3], const int far[3], bool parallel, real t_min, real upper)
+/* Whether the ray can meet the part of a surface's box inside the cell,
+ * `box` (cull_box: 255ths of the cell's frame), at some t in (t_min, upper):
+ * the slabs of the three axes overlap there.  Along axis a the frame's low
+ * side is crossed at base_a and each 255th adds unit_a, so side q is crossed
+ * at base_a + q unit_a; the side the ray enters by is box[near_a] (box[a]
+ * for d_a > 0, box[3 + a] for d_a < 0) and it leaves by box[far_a].  Each
+ * crossing is widened by the axis's rounding slack: enter[a] = base_a -
+ * slack_a, leave[a] = base_a + slack_a.  A NaN never culls, so that a
+ * surface surface_intersect would report is never culled.  Written out
+ * axis by axis: it runs for every surface of every cell the ray visits. */
+typedef struct {
+    real enter[3], leave[3], unit[3];
+    int near[3], far[3];
+} cull_frame;
+
+static inline bool passes_box(const uint8_t box[6], const cull_frame *f, real t_min, real upper)
 {
-    real t_in = t_min, t_out = upper;
-    if (!parallel) {
-        for (int a = 0; a < 3; a++) {
-            real t0 = ((real)box[near[a]] - p[a]) * inv_d[a] - slack[a];
-            real t1 = ((real)box[far[a]] - p[a]) * inv_d[a] + slack[a];
-            t_in = t0 > t_in ? t0 : t_in;
-            t_out = t1 < t_out ? t1 : t_out;
-        }
-        return !(t_in > t_out);
-    }
-    for (int a = 0; a < 3; a++) {
-        if (inv_d[a] == 0) { /* parallel to the slab: inside it or never */
-            if (p[a] < (real)box[a] || p[a] > (real)box[3 + a])
-                return false;
-            continue;
-        }
-        real t0 = ((real)box[near[a]] - p[a]) * inv_d[a] - slack[a];
-        real t1 = ((real)box[far[a]] - p[a]) * inv_d[a] + slack[a];
-        t_in = t0 > t_in ? t0 : t_in;
-        t_out = t1 < t_out ? t1 : t_out;
-    }
+    real x0 = f->enter[0] + (real)box[f->near[0]] * f->unit[0], x1 = f->leave[0] + (real)box[f->far[0]] * f->unit[0];
+    real y0 = f->enter[1] + (real)box[f->near[1]] * f->unit[1], y1 = f->leave[1] + (real)box[f->far[1]] * f->unit[1];
+    real z0 = f->enter[2] + (real)box[f->near[2]] * f->unit[2], z1 = f->leave[2] + (real)box[f->far[2]] * f->unit[2];
+    real t_in = x0 > t_min ? x0 : t_min, t_out = x1 < upper ? x1 : upper;
+    t_in = y0 > t_in ? y0 : t_in;
+    t_out = y1 < t_out ? y1 : t_out;
+    t_in = z0 > t_in ? z0 : t_in;
+    t_out = z1 < t_out ? z1 : t_out;
     return !(t_in > t_out);
 }
 /* end snippet */
+
+/* The cull frame of cell i (its base_a), and the span of the ray in it:
+ * along each axis, the 255ths of the frame that the ray's points at t in
+ * (t_min, upper) inside the frame cover, widened by one 255th and by the
+ * rounding of those points, span[a] .. span[3 + a], clamped to 0 .. 255.
+ * A box that ends before the span or starts after it, along any axis, is
+ * passed by: a cheaper test in integers that settles most boxes before
+ * passes_box.  A NaN leaves the span whole (0 .. 255). */
+static inline void cull_span(cull_frame *f, const grid *g, const int i[3], const real p[3], const real d[3],
+                             const real inv_d[3], const real cull_slack[3], real reach, real d_max, real t_min,
+                             real upper, int span[6])
+{
+    const real *lo = g->lo_a, *cell = g->cell_a;
+    real t_in = t_min, t_out = upper, origin[3];
+    for (int a = 0; a < 3; a++) {
+        origin[a] = lo[a] + (real)i[a] * cell[a] - g->margin;
+        real base = inv_d[a] != 0 ? (origin[a] - p[a]) * inv_d[a] : 0;
+        f->enter[a] = base - cull_slack[a];
+        f->leave[a] = base + cull_slack[a];
+        real t0 = f->enter[a] + (real)(f->near[a] < 3 ? 0 : 255) * f->unit[a];
+        real t1 = f->leave[a] + (real)(f->far[a] < 3 ? 0 : 255) * f->unit[a];
+        t_in = t0 > t_in ? t0 : t_in;
+        t_out = t1 < t_out ? t1 : t_out;
+    }
+    const real t_abs = real_abs(t_in) > real_abs(t_out) ? real_abs(t_in) : real_abs(t_out);
+    const real rounding = reach + 16 * REAL_EPSILON * t_abs * d_max;
+    for (int a = 0; a < 3; a++) {
+        real per_unit = 255 / (cell[a] + 2 * g->margin);
+        real q0 = (p[a] + t_in * d[a] - origin[a]) * per_unit, q1 = (p[a] + t_out * d[a] - origin[a]) * per_unit;
+        real widen = 1 + rounding * per_unit;
+        real q_lo = (q0 < q1 ? q0 : q1) - widen, q_hi = (q0 < q1 ? q1 : q0) + widen;
+        span[a] = q_lo > 0 && q_lo < 255 ? (int)q_lo : q_lo >= 255 ? 255 : 0;     /* NaN: 0 */
+        span[3 + a] = q_hi < 254 && q_hi > 0 ? (int)q_hi + 1 : q_hi <= 0 ? 0 : 255; /* NaN: 255 */
+    }
+}
+
+/* The largest |component| of v (a NaN component is passed over), without
+ * the library calls of vec3_max_abs's fmax. */
+static inline real max_abs(vec3 v)
+{
+    real x = real_abs(v.x), y = real_abs(v.y), z = real_abs(v.z), m = x > y ? x : y;
+    return z > m ? z : m;
+}
 
 /* snippet: dda */
 /* The march's state (Amanatides and Woo): the cell the ray is in, the
@@ -99,8 +136,7 @@ typedef struct {
  * from the grid's low corner) of axis a: lo_a + plane cell_a = p_a + t d_a. */
 static inline real crossing(const grid *g, int a, int plane, const real p[3], const real inv_d[3])
 {
-    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, cell[3] = {g->cell.x, g->cell.y, g->cell.z};
-    return (lo[a] + (real)plane * cell[a] - p[a]) * inv_d[a];
+    return (g->lo_a[a] + (real)plane * g->cell_a[a] - p[a]) * inv_d[a];
 }
 
 /* snippet: dda_step */
@@ -230,17 +266,15 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
      * errs towards visiting a cell too many, never one too few. */
     const real p[3] = {r.p.x, r.p.y, r.p.z}, d[3] = {r.d.x, r.d.y, r.d.z};
     const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, hi[3] = {g->hi.x, g->hi.y, g->hi.z};
-    const real reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
+    const real reach = 16 * REAL_EPSILON * (max_abs(r.p) + g->scale);
     real inv_d[3], slack[3], t0 = t_min, t1 = t_max;
     int near[3], far[3];
-    bool parallel = false;
     for (int a = 0; a < 3; a++) {
         inv_d[a] = 1 / d[a];
         near[a] = d[a] < 0 ? 3 + a : a;
         far[a] = d[a] < 0 ? a : 3 + a;
         if (!isfinite(inv_d[a])) { /* d_a = +0 or -0, or tiny */
             inv_d[a] = slack[a] = 0;
-            parallel = true;
             if (!(p[a] >= lo[a] && p[a] <= hi[a]))
                 goto done;
             continue;
@@ -252,8 +286,10 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
             near = far;
             far = swap;
         }
-        t0 = real_fmax(t0, near - slack[a]);
-        t1 = real_fmin(t1, far + slack[a]);
+        near -= slack[a];
+        far += slack[a];
+        t0 = near > t0 ? near : t0; /* fmax and fmin, inline; a NaN is passed over as they do */
+        t1 = far < t1 ? far : t1;
     }
     if (!(t0 <= t1)) /* misses the box, or the window ends before it */
         goto done;
@@ -261,7 +297,7 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
     /* The first cell: the one holding p + t0 d, moved back along the ray by
      * the rounding of that point, and clamped to the grid. */
     dda m;
-    const real d_max = vec3_max_abs(r.d);
+    const real d_max = max_abs(r.d);
     const real back = reach + 16 * REAL_EPSILON * real_abs(t0) * d_max;
     const real inv_cell[3] = {g->inv_cell.x, g->inv_cell.y, g->inv_cell.z};
     for (int a = 0; a < 3; a++) {
@@ -277,23 +313,47 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
     uint32_t mailbox[MAILBOX];
     for (int b = 0; b < MAILBOX; b++)
         mailbox[b] = UINT32_MAX;
+    /* culling: the frame of a cell (the cell widened by the margin) along
+     * axis a is crossed at base_a = (its low side - p_a) / d_a, and a 255th
+     * of it adds unit_a; on an axis the ray is parallel to, both are 0 and
+     * an infinite slack lets every box pass */
+    cull_frame f;
+    const real cell[3] = {g->cell.x, g->cell.y, g->cell.z};
+    real cull_slack[3];
+    for (int a = 0; a < 3; a++) {
+        f.unit[a] = (cell[a] + 2 * g->margin) / 255 * inv_d[a];
+        f.near[a] = near[a];
+        f.far[a] = far[a];
+        cull_slack[a] = inv_d[a] != 0 ? slack[a] : REAL_INFINITY;
+    }
+    const grid_entry *const refs = g->refs;
+    const bool cull = g->cull;
+    const bool use_mailbox = g->mailbox;
     for (;;) {
         /* Every surface of the cell, each tested over the whole window
          * (t_min, best): a hit beyond this cell is kept too, and counts once
          * the march reaches its cell. */
         cells++;
-        const uint32_t *ref = g->refs + g->start[m.cell], *end = g->refs + g->start[m.cell + 1];
-        for (; ref < end; ref++) {
-            uint32_t k = *ref;
-            if (g->mailbox) {
-                if (mailbox[k % MAILBOX] == k)
-                    continue; /* tested already along this ray */
-                mailbox[k % MAILBOX] = k;
-            }
-            if (g->box && !passes_box(g->box[k], p, inv_d, slack, near, far, parallel, t_min, s.upper)) {
+        const uint32_t first = g->start[m.cell], last = g->start[m.cell + 1];
+        int span[6] = {0, 0, 0, 255, 255, 255};
+        if (cull && first < last)
+            cull_span(&f, g, m.i, p, d, inv_d, cull_slack, reach, d_max, t_min, s.upper, span);
+        for (uint32_t e = first; e < last; e++) {
+            uint32_t k = refs[e].surface;
+            if (use_mailbox && mailbox[k % MAILBOX] == k)
+                continue; /* tested already along this ray */
+            const uint8_t *b = refs[e].box;
+            if (cull && ((b[3] < span[0]) | (b[4] < span[1]) | (b[5] < span[2]) | (b[0] > span[3]) |
+                         (b[1] > span[4]) | (b[2] > span[5]))) {
                 culled++;
-                continue; /* the ray passes by its box */
+                continue; /* the box lies beside the ray's span in this cell */
             }
+            if (cull && !passes_box(b, &f, t_min, s.upper)) {
+                culled++;
+                continue; /* the ray passes by its box in this cell */
+            }
+            if (use_mailbox)
+                mailbox[k % MAILBOX] = k;
             test_surface(&s, k);
         }
         /* The cell ends where the ray crosses its nearest boundary.  A hit no
