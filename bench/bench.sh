@@ -270,6 +270,16 @@ for f in 0.25 0.5 1 2; do
 done
 measure sizes "$reps"
 
+# Each chapter's built-in scene at one size, side by side, on 1 and 2 threads: what each stage costs
+# (the chapters' READMEs quote these lines).  At most 3 rounds: eleven renderers in turn.
+chapter_side=${BENCH_CHAPTER_SIZE:-256x256}
+settings_clear
+for c in "${chapters[@]}"; do
+    setting "$c -j1" "$work/img/chap_${c}_1.png" "$build/$c/render" -j 1 -s "$chapter_side"
+    setting "$c -j2" "$work/img/chap_${c}_2.png" "$build/$c/render" -j 2 -s "$chapter_side"
+done
+measure chapters "$([ "$reps" -gt 3 ] && echo 3 || echo "$reps")"
+
 # ---- 5. POV-Ray -------------------------------------------------------------------------
 
 . "$here/povray.sh"

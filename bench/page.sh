@@ -146,6 +146,22 @@ the other users of the machine take their share of its cores).$(awk -v l="${load
 
 ![Time against size, samples and threads](figures/bench_scaling.png)
 
+### Each chapter's built-in scene
+
+Every renderer on its own built-in scene at $chapter_side, one sample per pixel, on 1 and 2 threads,
+side by side ($([ "$reps" -gt 3 ] && echo 3 || echo "$reps") rounds, each running all of them in turn).  The scenes differ from chapter to
+chapter, so a ratio between chapters is the cost of what a chapter adds together with what its scene
+adds; the chapters' READMEs quote these lines.
+
+| line | chapter | rays | 1 thread (s), min-max | 2 threads (s), min-max | 1 thread / 2 threads |
+|---|---|---|---|---|---|
+EOF
+for c in "${chapters[@]}"; do
+    t1=$(field chapters "$c -j1" 2) t2=$(field chapters "$c -j2" 2)
+    echo "| \`chapters.$(num "$c")\` | $(title "$c") | $(field chapters "$c -j1" 5) | $(fmt_t "$t1") ($(fmt_t "$(field chapters "$c -j1" 3)")-$(fmt_t "$(field chapters "$c -j1" 4)")) | $(fmt_t "$t2") ($(fmt_t "$(field chapters "$c -j2" 3)")-$(fmt_t "$(field chapters "$c -j2" 4)")) | $(ratio "$t1" "$t2") |"
+done
+cat <<EOF
+
 ## 4. Float against double
 
 Every chapter's built-in scene and the scene of all stages, rendered by the double build (the default)
