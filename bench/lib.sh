@@ -47,7 +47,7 @@ setting() {
 # adds every command line to $work/commands.txt.  One progress line per setting.
 # A setting that takes more than ten times $target in the first round runs
 # only once (its min and max are then its one time).
-# Past $budget_cut seconds (default 300) every measurement takes at most 3
+# Past $budget_cut seconds (default 150) every measurement takes at most 3
 # rounds, so that the bench keeps within its ten minutes as chapters add
 # knobs; $reduced_at records when that began.
 reduced_at=""
