@@ -13,14 +13,15 @@ note() { printf '[%4ds] %s\n' "$SECONDS" "$*"; }
 # summary_of LOG: "SECONDS RAYS" from a renderer's summary line,
 #   "NAME: WxH, N spp, 262144 rays, 0.050 s, 2 threads -> out.png", or
 #   "NAME: WxH, N spp, 262144 eye + 101003 shadow rays, 0.050 s, ..."
-# (all kinds of rays summed).  Prints nothing when there is no summary.
+# (all kinds of rays summed), with "0 non-finite samples, " before the time
+# since common/render_loop.c counts them.  Prints nothing when there is no summary.
 summary_of() {
-    awk '/ spp, .* rays, [0-9.]+ s, / {
+    awk '/ spp, .* rays, ([0-9]+ non-finite samples?, )?[0-9.]+ s, / {
         s = $0; sub(/^.* spp, /, "", s)
         r = s; sub(/ rays, .*$/, "", r)
         n = split(r, parts, / [+] /); rays = 0
         for (k = 1; k <= n; k++) { split(parts[k], w, " "); rays += w[1] }
-        t = s; sub(/^.* rays, /, "", t); sub(/ s, .*$/, "", t)
+        t = s; sub(/^.* rays, /, "", t); sub(/^[0-9]+ non-finite samples?, /, "", t); sub(/ s, .*$/, "", t)
         line = t " " rays
     } END { if (line != "") print line }' "$1"
 }
@@ -46,7 +47,7 @@ setting() {
 # adds every command line to $work/commands.txt.  One progress line per setting.
 # A setting that takes more than ten times $target in the first round runs
 # only once (its min and max are then its one time).
-# Past $budget_cut seconds (default 300) every measurement takes at most 3
+# Past $budget_cut seconds (default 150) every measurement takes at most 3
 # rounds, so that the bench keeps within its ten minutes as chapters add
 # knobs; $reduced_at records when that began.
 reduced_at=""

@@ -9,6 +9,11 @@ if [ -z "$bunny" ] || [ ! -r "$bunny" ]; then
     echo "bench-grid: the bunny of glmark2-data is not installed (bench/grid/deps.sh installs it)" >&2
     exit 1
 fi
+# BENCH_GRID_QUICK=1 (make bench, within its ten minutes): the bunny only, one run per timing.
+if [ "${BENCH_GRID_QUICK:-0}" = 1 ]; then
+    "$bench" "$bunny" --size 512 --linear-rows 64 --runs 1 || exit 1
+    exit 0
+fi
 "$bench" "$bunny" --size 512 --linear-rows 64 || exit 1
 echo
 "$bench" sphere:1000000 --size 512 --linear-rows 0 || exit 1
