@@ -5,7 +5,8 @@
 # clang with libFuzzer and the sanitizers, and expat; the default build's own
 # packages are left as they are.  Other groups add the needs of one target:
 # bench (make bench: gnuplot-nox for the plots, povray for the comparison
-# with POV-Ray).
+# with POV-Ray) and bench-grid (make bench-grid: libembree-dev, Intel Embree
+# 3, to compare the grid with, and glmark2-data, the Stanford bunny as OBJ).
 #
 # Each need is probed by compiling a one-line program with CC.  What is
 # missing is installed with apt-get (as root) or sudo apt-get (when sudo works
@@ -21,7 +22,11 @@ for group in "$@"; do
             command -v gnuplot >/dev/null 2>&1 || missing="$missing gnuplot-nox"
             command -v povray >/dev/null 2>&1 || missing="$missing povray"
             ;;
-        *) echo "deps.sh: unknown group '$group' (known: fuzz, bench)" >&2; exit 2 ;;
+        bench-grid)
+            dpkg -s libembree-dev >/dev/null 2>&1 || missing="$missing libembree-dev"
+            dpkg -s glmark2-data >/dev/null 2>&1 || missing="$missing glmark2-data"
+            ;;
+        *) echo "deps.sh: unknown group '$group' (known: fuzz, bench, bench-grid)" >&2; exit 2 ;;
     esac
 done
 

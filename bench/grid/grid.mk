@@ -1,7 +1,7 @@
 # bench/grid/grid.mk - `make bench-grid`: chapter 11's grid against chapter 04's
 # linear scan and Intel Embree 3 (included by the Makefile; `make bench` may call it).
 #
-# Gets its own Debian packages (bench/grid/deps.sh: libembree-dev, and
+# Gets its own Debian packages (tools/deps.sh bench-grid: libembree-dev, and
 # glmark2-data for the Stanford bunny), builds bench/grid/grid_vs_embree.c with
 # the solutions' stage files of chapters 01-11, and runs bench/grid/run.sh.
 # Nothing here is built by `make` or `make test`.
@@ -10,7 +10,7 @@ BENCH_GRID := $(BUILD)/bench/grid/grid_vs_embree
 
 .PHONY: bench-grid
 bench-grid:
-	@bench/grid/deps.sh
+	@tools/deps.sh "$(CC)" bench-grid
 	@$(MAKE) --no-print-directory STUDENT=0 SANITIZE=0 $(BENCH_GRID)
 	@bench/grid/run.sh $(BENCH_GRID)
 

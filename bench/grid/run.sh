@@ -6,7 +6,7 @@
 bench=$1
 bunny=$(dpkg -L glmark2-data 2>/dev/null | grep '/bunny\.obj$' | head -n 1)
 if [ -z "$bunny" ] || [ ! -r "$bunny" ]; then
-    echo "bench-grid: the bunny of glmark2-data is not installed (bench/grid/deps.sh installs it)" >&2
+    echo "bench-grid: the bunny of glmark2-data is not installed (make bench-grid installs it through tools/deps.sh)" >&2
     exit 1
 fi
 # BENCH_GRID_QUICK=1 (make bench, within its ten minutes): the bunny only, one run per timing.
