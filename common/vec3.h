@@ -35,7 +35,11 @@ static inline real vec3_length_squared(vec3 a) { return vec3_dot(a, a); }
 /* The largest absolute component: a cheap scale for relative tolerances. */
 static inline real vec3_max_abs(vec3 a)
 {
-    return real_fmax(real_abs(a.x), real_fmax(real_abs(a.y), real_abs(a.z)));
+    /* fmax written out (a NaN component is passed over, as fmax does): it is
+     * called on every hit, and the library call costs more than the test */
+    real x = real_abs(a.x), y = real_abs(a.y), z = real_abs(a.z);
+    real m = x > y || y != y ? x : y;
+    return m > z || z != z ? m : z;
 }
 
 /* a divided by its largest absolute component: that component becomes +-1,

@@ -1,7 +1,7 @@
 /* degenerate.c - chapter 03: determinants against their own rounding error. */
 #include "03_triangle/degenerate.h"
 
-/* e such that 2^(e - 1) <= largest < 2^e (frexp's exponent). */
+/* e such that 2^(e - 1) <= largest < 2^e (frexp's exponent); 0 for 0. */
 static int exponent_of(real largest)
 {
     int e;
@@ -9,14 +9,32 @@ static int exponent_of(real largest)
     return e;
 }
 
-/* v / 2^e in double: exact (only the exponent moves), so that the products
- * below stay far from overflow and underflow for any finite input. */
-static void scaled(vec3 v, int e, double out[3])
+/* 2^-e, when it and 2^e are normal doubles (|e| <= 1022); 0 otherwise. */
+static double power_of_two(int e)
 {
+    return e >= -1022 && e <= 1022 ? ldexp(1.0, -e) : 0;
+}
+
+/* v / 2^e in double: exact (only the exponent moves), so that the products
+ * below stay far from overflow and underflow for any finite input.  The
+ * product with the power of two 2^-e is ldexp's result (exact, or below the
+ * normal doubles rounded once, as ldexp rounds); only exponents whose power
+ * of two is not a normal double take the library call. */
+static void scaled(vec3 v, int e, double scale, double out[3])
+{
+    if (scale != 0) {
+        out[0] = (double)v.x * scale;
+        out[1] = (double)v.y * scale;
+        out[2] = (double)v.z * scale;
+        return;
+    }
     out[0] = ldexp((double)v.x, -e);
     out[1] = ldexp((double)v.y, -e);
     out[2] = ldexp((double)v.z, -e);
 }
+
+/* fmax of two values that are not NaN (the data were checked finite). */
+static inline double larger(double x, double y) { return x > y ? x : y; }
 
 /* snippet: det_certain */
 /* Whether det[e1 e2 w] = e1 . (e2 x w) is larger than the error rounding may
@@ -66,25 +84,26 @@ bool triangle_crossing_certain(const triangle *tri, ray r)
     /* Everything in double, scaled by powers of two.  The float build's data
      * are exact in double, and double arithmetic errs less than the bound
      * assumes for float, so the bound still holds. */
-    real largest = real_fmax(real_fmax(vec3_max_abs(tri->a), vec3_max_abs(tri->b)),
-                             real_fmax(vec3_max_abs(tri->c), vec3_max_abs(r.p)));
+    real largest = (real)larger(larger(vec3_max_abs(tri->a), vec3_max_abs(tri->b)),
+                                larger(vec3_max_abs(tri->c), vec3_max_abs(r.p)));
     int ev = exponent_of(largest), ed = exponent_of(vec3_max_abs(r.d));
+    const double sv = power_of_two(ev), sd = power_of_two(ed);
     double a[3], b[3], c[3], p[3], d[3];
-    scaled(tri->a, ev, a);
-    scaled(tri->b, ev, b);
-    scaled(tri->c, ev, c);
-    scaled(r.p, ev, p);
-    scaled(r.d, ed, d);
+    scaled(tri->a, ev, sv, a);
+    scaled(tri->b, ev, sv, b);
+    scaled(tri->c, ev, sv, c);
+    scaled(r.p, ev, sv, p);
+    scaled(r.d, ed, sd, d);
     double e1[3], e2[3], f[3], s[3], sf[3], edge = 0;
     for (int i = 0; i < 3; i++) {
         e1[i] = a[i] - b[i];
         e2[i] = a[i] - c[i];
         f[i] = a[i] - p[i];
-        edge = fmax(edge, fmax(fabs(e1[i]), fabs(e2[i])));
+        edge = larger(edge, larger(fabs(e1[i]), fabs(e2[i])));
     }
     for (int i = 0; i < 3; i++) {
-        s[i] = fmax(fabs(a[i]), fmax(fabs(b[i]), fabs(c[i]))) + edge;
-        sf[i] = fmax(fabs(a[i]), fabs(p[i])) + edge;
+        s[i] = larger(fabs(a[i]), larger(fabs(b[i]), fabs(c[i]))) + edge;
+        sf[i] = larger(fabs(a[i]), fabs(p[i])) + edge;
     }
     /* snippet: crossing_certain */
     /* M = det[a - b   a - c   d] is 0 for a degenerate triangle and for a
