@@ -62,6 +62,7 @@ typedef struct {
     vec3 cell;                /* the size of one cell along x, y and z */
     vec3 inv_cell;            /* 1 / cell */
     real lo_a[3], cell_a[3];  /* lo and cell again, as arrays the march indexes by axis */
+    real per_unit[3];         /* 255 / (cell_a + 2 margin): 255ths of a cell's frame per unit of length */
     int n[3];                 /* cells along x, y and z */
     /* The cells' lists, flat (compressed sparse rows): the surfaces of cell
      * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],

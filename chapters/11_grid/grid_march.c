@@ -3,6 +3,7 @@
 #include "exercise.h"
 
 #include <math.h>
+#include <string.h>
 
 #ifdef RT_REAL_FLOAT
 #define real_next_up(x) nextafterf((x), INFINITY)
@@ -104,7 +105,7 @@ static inline void cull_span(cull_frame *f, const grid *g, const int i[3], const
     const real t_abs = real_abs(t_in) > real_abs(t_out) ? real_abs(t_in) : real_abs(t_out);
     const real rounding = reach + 16 * REAL_EPSILON * t_abs * d_max;
     for (int a = 0; a < 3; a++) {
-        real per_unit = 255 / (cell[a] + 2 * g->margin);
+        real per_unit = g->per_unit[a];
         real q0 = (p[a] + t_in * d[a] - origin[a]) * per_unit, q1 = (p[a] + t_out * d[a] - origin[a]) * per_unit;
         real widen = 1 + rounding * per_unit;
         real q_lo = (q0 < q1 ? q0 : q1) - widen, q_hi = (q0 < q1 ? q1 : q0) + widen;
@@ -311,6 +312,7 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
      * of it adds unit_a; on an axis the ray is parallel to, both are 0 and
      * an infinite slack lets every box pass */
     cull_frame f;
+    memset(&f, 0, sizeof f); /* every field is set below; this keeps -O3 from doubting it */
     const real cell[3] = {g->cell.x, g->cell.y, g->cell.z};
     real cull_slack[3];
     for (int a = 0; a < 3; a++) {

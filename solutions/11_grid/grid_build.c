@@ -295,6 +295,7 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
     for (int a = 0; a < 3; a++) {
         g->lo_a[a] = get(g->lo, a);
         g->cell_a[a] = get(g->cell, a);
+        g->per_unit[a] = 255 / (g->cell_a[a] + 2 * g->margin);
     }
     g->n_cells = (long)g->n[0] * g->n[1] * g->n[2];
 
