@@ -47,13 +47,19 @@ typedef struct {
 #define GRID_DEFAULT_DENSITY 2.0
 #define GRID_DEFAULT_MAX_CELLS (1L << 24)
 
+/* A surface's box inside a cell is kept in steps of 1/GRID_BOX_STEPS of the
+ * cell's frame, one byte per side; 127 leaves each byte's top bit free, so
+ * that the march compares all six sides at once in one 64-bit word. */
+#define GRID_BOX_STEPS 127
+
 /* snippet: grid */
 /* One entry of a cell's list: 12 bytes, read in order with the cell. */
 typedef struct {
     uint32_t surface; /* index into the surface list */
-    uint8_t box[6];   /* the part of the surface's box (widened by the margin) inside the cell,
-                       * in 255ths of the cell's frame (the cell widened by the margin),
-                       * rounded outwards (lo x, y, z, hi x, y, z); unset when culling is off */
+    uint8_t box[8];   /* the part of the surface's box (widened by the margin) inside the cell,
+                       * in 127ths of the cell's frame (the cell widened by the margin),
+                       * rounded outwards (lo x, y, z, hi x, y, z, then two zeros, so that
+                       * the march reads all eight at once); zeros when culling is off */
 } grid_entry;
 
 typedef struct {
@@ -62,7 +68,8 @@ typedef struct {
     vec3 cell;                /* the size of one cell along x, y and z */
     vec3 inv_cell;            /* 1 / cell */
     real lo_a[3], cell_a[3];  /* lo and cell again, as arrays the march indexes by axis */
-    real per_unit[3];         /* 255 / (cell_a + 2 margin): 255ths of a cell's frame per unit of length */
+    real inv_cell_a[3];       /* inv_cell, as an array */
+    real per_unit[3];         /* GRID_BOX_STEPS / (cell_a + 2 margin): steps of a cell's frame per unit of length */
     int n[3];                 /* cells along x, y and z */
     /* The cells' lists, flat (compressed sparse rows): the surfaces of cell
      * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],

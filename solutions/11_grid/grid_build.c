@@ -120,7 +120,7 @@ static bool triangle_touches_cell(const grid *g, const triangle *tri, int i, int
 
 /* snippet: cull_box */
 /* The part of a surface's box [lo, hi] (widened by the margin) inside cell
- * (i, j, k), for culling: along each axis, in 255ths of the cell's frame,
+ * (i, j, k), for culling: along each axis, in GRID_BOX_STEPS-ths of the cell's frame,
  * the cell widened by the margin on both sides, rounded outwards (floor for
  * the low side, ceil for the high side, each a hundredth of a step further
  * for the rounding of this arithmetic) and clamped to the frame.  One byte
@@ -132,10 +132,10 @@ static void cull_box(const grid *g, vec3 lo, vec3 hi, int i, int j, int k, uint8
     for (int a = 0; a < 3; a++) {
         double frame = (double)get(g->cell, a) + 2 * (double)g->margin;
         double origin = (double)get(g->lo, a) + index[a] * (double)get(g->cell, a) - (double)g->margin;
-        double f_lo = ((double)get(lo, a) - g->margin - origin) / frame * 255 - 0.01;
-        double f_hi = ((double)get(hi, a) + g->margin - origin) / frame * 255 + 0.01;
-        box[a] = (uint8_t)(f_lo <= 0 ? 0 : f_lo >= 255 ? 255 : floor(f_lo));
-        box[3 + a] = (uint8_t)(f_hi <= 0 ? 0 : f_hi >= 255 ? 255 : ceil(f_hi));
+        double f_lo = ((double)get(lo, a) - g->margin - origin) / frame * GRID_BOX_STEPS - 0.01;
+        double f_hi = ((double)get(hi, a) + g->margin - origin) / frame * GRID_BOX_STEPS + 0.01;
+        box[a] = (uint8_t)(f_lo <= 0 ? 0 : f_lo >= GRID_BOX_STEPS ? GRID_BOX_STEPS : floor(f_lo));
+        box[3 + a] = (uint8_t)(f_hi <= 0 ? 0 : f_hi >= GRID_BOX_STEPS ? GRID_BOX_STEPS : ceil(f_hi));
     }
 }
 /* end snippet */
@@ -160,7 +160,7 @@ static void bin_surface(grid *g, const surface *s, uint32_t index, uint32_t *cou
                 long c = i + (long)g->n[0] * (j + (long)g->n[1] * k);
                 if (fill) {
                     grid_entry *entry = &g->refs[fill[c]++];
-                    entry->surface = index;
+                    *entry = (grid_entry){.surface = index};
                     if (g->cull)
                         cull_box(g, lo, hi, i, j, k, entry->box);
                 } else
@@ -295,7 +295,8 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
     for (int a = 0; a < 3; a++) {
         g->lo_a[a] = get(g->lo, a);
         g->cell_a[a] = get(g->cell, a);
-        g->per_unit[a] = 255 / (g->cell_a[a] + 2 * g->margin);
+        g->inv_cell_a[a] = get(g->inv_cell, a);
+        g->per_unit[a] = GRID_BOX_STEPS / (g->cell_a[a] + 2 * g->margin);
     }
     g->n_cells = (long)g->n[0] * g->n[1] * g->n[2];
 

@@ -2,7 +2,6 @@
 #include "11_grid/grid.h"
 
 #include <math.h>
-#include <string.h>
 
 #ifdef RT_REAL_FLOAT
 #define real_next_up(x) nextafterf((x), INFINITY)
@@ -50,9 +49,9 @@ static inline void test_surface(search *s, uint32_t k)
 
 /* snippet: cull */
 /* Whether the ray can meet the part of a surface's box inside the cell,
- * `box` (cull_box: 255ths of the cell's frame), at some t in (t_min, upper):
+ * `box` (cull_box: steps of the cell's frame), at some t in (t_min, upper):
  * the slabs of the three axes overlap there.  Along axis a the frame's low
- * side is crossed at base_a and each 255th adds unit_a, so side q is crossed
+ * side is crossed at base_a and each step adds unit_a, so side q is crossed
  * at base_a + q unit_a; the side the ray enters by is box[near_a] (box[a]
  * for d_a > 0, box[3 + a] for d_a < 0) and it leaves by box[far_a].  Each
  * crossing is widened by the axis's rounding slack: enter[a] = base_a -
@@ -79,38 +78,64 @@ static inline bool passes_box(const uint8_t box[6], const cull_frame *f, real t_
 /* end snippet */
 
 /* The cull frame of cell i (its base_a), and the span of the ray in it:
- * along each axis, the 255ths of the frame that the ray's points at t in
- * (t_min, upper) inside the frame cover, widened by one 255th and by the
- * rounding of those points, span[a] .. span[3 + a], clamped to 0 .. 255.
+ * along each axis, the steps of the frame that the ray's points at t in
+ * (t_min, upper) inside the frame cover, widened by one step and by the
+ * rounding of those points, lo_a .. hi_a, clamped to 0 .. GRID_BOX_STEPS.
  * A box that ends before the span or starts after it, along any axis, is
  * passed by: a cheaper test in integers that settles most boxes before
- * passes_box.  A NaN leaves the span whole (0 .. 255). */
+ * passes_box.  A NaN leaves the span whole.  The span is returned packed
+ * for box_beside_span: hi_a in byte a of *span_hi, lo_a in byte 3 + a of
+ * *span_lo. */
 static inline void cull_span(cull_frame *f, const grid *g, const int i[3], const real p[3], const real d[3],
                              const real inv_d[3], const real cull_slack[3], real reach, real d_max, real t_min,
-                             real upper, int span[6])
+                             real upper, uint64_t *span_lo, uint64_t *span_hi)
 {
     const real *lo = g->lo_a, *cell = g->cell_a;
+    const real top = GRID_BOX_STEPS;
     real t_in = t_min, t_out = upper, origin[3];
     for (int a = 0; a < 3; a++) {
         origin[a] = lo[a] + (real)i[a] * cell[a] - g->margin;
         real base = inv_d[a] != 0 ? (origin[a] - p[a]) * inv_d[a] : 0;
         f->enter[a] = base - cull_slack[a];
         f->leave[a] = base + cull_slack[a];
-        real t0 = f->enter[a] + (real)(f->near[a] < 3 ? 0 : 255) * f->unit[a];
-        real t1 = f->leave[a] + (real)(f->far[a] < 3 ? 0 : 255) * f->unit[a];
+        real t0 = f->enter[a] + (f->near[a] < 3 ? 0 : top) * f->unit[a];
+        real t1 = f->leave[a] + (f->far[a] < 3 ? 0 : top) * f->unit[a];
         t_in = t0 > t_in ? t0 : t_in;
         t_out = t1 < t_out ? t1 : t_out;
     }
     const real t_abs = real_abs(t_in) > real_abs(t_out) ? real_abs(t_in) : real_abs(t_out);
     const real rounding = reach + 16 * REAL_EPSILON * t_abs * d_max;
+    uint64_t packed_lo = 0, packed_hi = 0;
     for (int a = 0; a < 3; a++) {
         real per_unit = g->per_unit[a];
         real q0 = (p[a] + t_in * d[a] - origin[a]) * per_unit, q1 = (p[a] + t_out * d[a] - origin[a]) * per_unit;
         real widen = 1 + rounding * per_unit;
         real q_lo = (q0 < q1 ? q0 : q1) - widen, q_hi = (q0 < q1 ? q1 : q0) + widen;
-        span[a] = q_lo > 0 && q_lo < 255 ? (int)q_lo : q_lo >= 255 ? 255 : 0;     /* NaN: 0 */
-        span[3 + a] = q_hi < 254 && q_hi > 0 ? (int)q_hi + 1 : q_hi <= 0 ? 0 : 255; /* NaN: 255 */
+        int span_a_lo = q_lo > 0 && q_lo < top ? (int)q_lo : q_lo >= top ? GRID_BOX_STEPS : 0; /* NaN: 0 */
+        int span_a_hi = q_hi < top - 1 && q_hi > 0 ? (int)q_hi + 1 : q_hi <= 0 ? 0 : GRID_BOX_STEPS; /* NaN: top */
+        packed_lo |= (uint64_t)span_a_lo << (8 * (3 + a));
+        packed_hi |= (uint64_t)span_a_hi << (8 * a);
     }
+    *span_lo = packed_lo;
+    *span_hi = packed_hi;
+}
+
+/* Whether the box of an entry lies beside the span along some axis: its
+ * high side below the span's low end (hi_a < lo_a), or its low side above
+ * the span's high end (box lo_a > span hi_a).  All six comparisons at once,
+ * bytewise in one 64-bit word ("SIMD within a register"): with x and y
+ * bytes of 0 .. 127, byte (x | 128) - y has its top bit set exactly when
+ * x >= y, and never borrows from the next byte.  The box's bytes are lo_x,
+ * lo_y, lo_z, hi_x, hi_y, hi_z: bytes 0-2 compare span hi >= box lo, bytes
+ * 3-5 box hi >= span lo. */
+static inline bool box_beside_span(const uint8_t box[8], uint64_t span_lo, uint64_t span_hi)
+{
+    const uint64_t low3 = 0xFFFFFFull, high3 = 0xFFFFFF000000ull, tops = 0x808080808080ull;
+    /* byte k of the box in byte k of b: compilers make this one load */
+    uint64_t b = (uint64_t)box[0] | (uint64_t)box[1] << 8 | (uint64_t)box[2] << 16 | (uint64_t)box[3] << 24 |
+                 (uint64_t)box[4] << 32 | (uint64_t)box[5] << 40 | (uint64_t)box[6] << 48 | (uint64_t)box[7] << 56;
+    uint64_t x = (b & high3) | span_hi, y = (b & low3) | span_lo;
+    return (((x | tops) - y) & tops) != tops;
 }
 
 /* The largest |component| of v (a NaN component is passed over), without
@@ -209,39 +234,31 @@ static inline int first_cell(const grid *g, int a, real f) { return index_in(f, 
 static inline bool dda_leap(const grid *g, dda *m, int r, const real p[3], const real d[3], const real inv_d[3],
                             real reach, real d_max)
 {
-    real t_exit = REAL_INFINITY;
-    int axis = -1;
-    for (int a = 0; a < 3; a++) {
-        if (!m->step[a])
-            continue;
-        real t = crossing(g, a, m->step[a] > 0 ? m->i[a] + r + 1 : m->i[a] - r, p, inv_d);
-        if (t < t_exit) {
-            t_exit = t;
-            axis = a;
-        }
-    }
-    if (axis < 0)
+    /* The t at which the ray crosses the block's far face along each axis
+     * (infinity on an axis it never crosses); the first of them is the exit. */
+    real t_face[3];
+    for (int a = 0; a < 3; a++)
+        t_face[a] = m->step[a] ? crossing(g, a, m->i[a] + (m->step[a] > 0 ? r + 1 : -r), p, inv_d) : REAL_INFINITY;
+    const int axis = t_face[0] <= t_face[1] ? (t_face[0] <= t_face[2] ? 0 : 2) : (t_face[1] <= t_face[2] ? 1 : 2);
+    const real t_exit = t_face[axis];
+    if (!(t_exit < REAL_INFINITY)) /* no face ahead (or NaN): nothing to leap to */
         return false;
-    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, inv_cell[3] = {g->inv_cell.x, g->inv_cell.y, g->inv_cell.z};
+    const int beyond = m->i[axis] + m->step[axis] * (r + 1);
+    if (beyond < 0 || beyond >= g->n[axis])
+        return false; /* the block's face is beyond the grid's */
     const real back = reach + 16 * REAL_EPSILON * real_abs(t_exit) * d_max;
-    int next[3];
     for (int a = 0; a < 3; a++) {
         if (a == axis) {
-            next[a] = m->i[a] + m->step[a] * (r + 1);
-            if (next[a] < 0 || next[a] >= g->n[a])
-                return false; /* the block's face is beyond the grid's */
+            m->i[a] = beyond;
         } else if (m->step[a]) { /* in the block and in the grid */
-            real f = (p[a] + t_exit * d[a] - lo[a] - (real)m->step[a] * back) * inv_cell[a];
+            real f = (p[a] + t_exit * d[a] - g->lo_a[a] - (real)m->step[a] * back) * g->inv_cell_a[a];
             int lowest = m->i[a] - r > 0 ? m->i[a] - r : 0;
             int highest = m->i[a] + r < g->n[a] - 1 ? m->i[a] + r : g->n[a] - 1;
-            next[a] = index_in(f, lowest, highest);
+            m->i[a] = index_in(f, lowest, highest);
         } else {
-            next[a] = m->i[a];
+            continue; /* the ray stays in its slab of cells along a */
         }
-    }
-    for (int a = 0; a < 3; a++) {
-        m->i[a] = next[a];
-        m->next[a] = m->step[a] ? crossing(g, a, m->i[a] + (m->step[a] > 0), p, inv_d) : REAL_INFINITY;
+        m->next[a] = crossing(g, a, m->i[a] + (m->step[a] > 0), p, inv_d);
     }
     m->cell = m->i[0] + (long)g->n[0] * (m->i[1] + (long)g->n[1] * m->i[2]);
     return true;
@@ -315,15 +332,14 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
     for (int b = 0; b < MAILBOX; b++)
         mailbox[b] = UINT32_MAX;
     /* culling: the frame of a cell (the cell widened by the margin) along
-     * axis a is crossed at base_a = (its low side - p_a) / d_a, and a 255th
+     * axis a is crossed at base_a = (its low side - p_a) / d_a, and a step
      * of it adds unit_a; on an axis the ray is parallel to, both are 0 and
      * an infinite slack lets every box pass */
-    cull_frame f;
-    memset(&f, 0, sizeof f); /* every field is set below; this keeps -O3 from doubting it */
+    cull_frame f = {.unit = {0}}; /* the rest is set before use */
     const real cell[3] = {g->cell.x, g->cell.y, g->cell.z};
     real cull_slack[3];
     for (int a = 0; a < 3; a++) {
-        f.unit[a] = (cell[a] + 2 * g->margin) / 255 * inv_d[a];
+        f.unit[a] = (cell[a] + 2 * g->margin) / GRID_BOX_STEPS * inv_d[a];
         f.near[a] = near[a];
         f.far[a] = far[a];
         cull_slack[a] = inv_d[a] != 0 ? slack[a] : REAL_INFINITY;
@@ -337,19 +353,18 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
          * the march reaches its cell. */
         cells++;
         const uint32_t first = g->start[m.cell], last = g->start[m.cell + 1];
-        int span[6] = {0, 0, 0, 255, 255, 255};
+        uint64_t span_lo = 0, span_hi = 0;
         if (cull && first < last)
-            cull_span(&f, g, m.i, p, d, inv_d, cull_slack, reach, d_max, t_min, s.upper, span);
+            cull_span(&f, g, m.i, p, d, inv_d, cull_slack, reach, d_max, t_min, s.upper, &span_lo, &span_hi);
         for (uint32_t e = first; e < last; e++) {
-            uint32_t k = refs[e].surface;
-            if (use_mailbox && mailbox[k % MAILBOX] == k)
-                continue; /* tested already along this ray */
             const uint8_t *b = refs[e].box;
-            if (cull && ((b[3] < span[0]) | (b[4] < span[1]) | (b[5] < span[2]) | (b[0] > span[3]) |
-                         (b[1] > span[4]) | (b[2] > span[5]))) {
+            if (cull && box_beside_span(b, span_lo, span_hi)) {
                 culled++;
                 continue; /* the box lies beside the ray's span in this cell */
             }
+            uint32_t k = refs[e].surface;
+            if (use_mailbox && mailbox[k % MAILBOX] == k)
+                continue; /* tested already along this ray */
             if (cull && !passes_box(b, &f, t_min, s.upper)) {
                 culled++;
                 continue; /* the ray passes by its box in this cell */
