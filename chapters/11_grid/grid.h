@@ -19,8 +19,9 @@
  * Knobs (docs/design.md, "Knobs"): the cell density (cells per surface) with
  * a cap on the number of cells, mailboxing (a surface already tested along
  * the ray is not tested again), and leaping (a ray in an empty cell whose
- * neighbours up to r cells away are empty too crosses that whole block of
- * empty cells in one step, as in Cohen and Sheffer's proximity clouds),
+ * neighbours ahead of it, up to s - 1 cells away along each axis, are empty too
+ * crosses that whole block of empty cells in one step, as in Cohen and
+ * Sheffer's proximity clouds, with a block per octant of directions),
  * and culling (a surface of the cell is handed to surface_intersect only
  * when the ray passes through the part of the surface's bounding box inside
  * that cell, within the window).
@@ -76,9 +77,10 @@ typedef struct {
      * in increasing index. */
     uint32_t *start;          /* n_x n_y n_z + 1 offsets */
     grid_entry *refs;         /* the entries: surface indices and their boxes in the cell */
-    uint8_t *empty;           /* per cell: every cell within empty[c] - 1 cells (in each
-                               * axis) of c is empty; 0 for a cell with surfaces.  NULL
-                               * when leaping is off */
+    uint8_t *empty;           /* per cell c and octant o (bit 0: x decreasing, 1: y, 2: z),
+                               * empty[8 c + o]: the cube of cells from c up to empty[8 c + o] - 1
+                               * cells ahead in octant o holds nothing; 0 for a cell with
+                               * surfaces.  NULL when leaping is off */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
     long n_cells, n_refs, n_unbinned;
     real margin;              /* every surface's box is widened by this before it is binned */

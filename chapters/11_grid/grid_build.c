@@ -194,40 +194,41 @@ static void resolution(const double extent[3], long surfaces, double density, lo
 /* end snippet */
 
 /* snippet: empty_distances */
-/* empty[c]: the distance from cell c to the nearest cell with surfaces,
- * counted as the largest of the index differences along x, y and z (the
- * chessboard distance), at most 255; 0 for a cell with surfaces.  Two
- * sweeps of the 26 neighbours (Rosenfeld and Pfaltz's chamfer transform with
- * every step weighing 1, which is exact for this distance): the first in
- * increasing cell order takes the neighbours before the cell, the second in
- * decreasing order those after it. */
+/* empty[8 c + o]: for a ray in cell c heading into octant o (bit 0: x
+ * decreasing, bit 1: y, bit 2: z), the side s of the largest cube of empty
+ * cells that has c as its corner and lies ahead of c in that octant: cells
+ * i .. i + (s - 1) sgn_x along x, and so along y and z.  0 for a cell with
+ * surfaces; at most 255; cells beyond the grid count as empty (a ray that
+ * leaves the grid is done).  The classic "largest empty square" recurrence in
+ * 3D: s = 1 + the least s of the 7 neighbours one step ahead, filled in the
+ * order in which those neighbours come first. */
 static void empty_distances(grid *g)
 {
-    const int nx = g->n[0], ny = g->n[1], nz = g->n[2];
-    for (long c = 0; c < g->n_cells; c++)
-        g->empty[c] = g->start[c + 1] > g->start[c] ? 0 : 255;
-    for (int sweep = 0; sweep < 2; sweep++) {
-        const int sign = sweep == 0 ? 1 : -1;
-        for (long q = 0; q < g->n_cells; q++) {
-            long c = sweep == 0 ? q : g->n_cells - 1 - q;
-            int i = (int)(c % nx), j = (int)(c / nx % ny), k = (int)(c / ((long)nx * ny));
-            int best = g->empty[c];
-            /* the 13 neighbours that come before c in this sweep's order: offsets
-             * (di, dj, dk) that are negative in the order of k, then j, then i */
-            for (int dk = -1; dk <= 0; dk++)
-                for (int dj = -1; dj <= 1; dj++)
-                    for (int di = -1; di <= 1; di++) {
-                        if (!(dk < 0 || dj < 0 || (dj == 0 && di < 0)))
-                            continue;
-                        int ii = i + sign * di, jj = j + sign * dj, kk = k + sign * dk;
-                        if (ii < 0 || ii >= nx || jj < 0 || jj >= ny || kk < 0 || kk >= nz)
-                            continue;
-                        int d = g->empty[ii + (long)nx * (jj + (long)ny * kk)] + 1;
-                        if (d < best)
-                            best = d;
+    const int n[3] = {g->n[0], g->n[1], g->n[2]};
+    for (int o = 0; o < 8; o++) {
+        const int sx = o & 1 ? -1 : 1, sy = o & 2 ? -1 : 1, sz = o & 4 ? -1 : 1;
+        for (int kq = 0; kq < n[2]; kq++)
+            for (int jq = 0; jq < n[1]; jq++)
+                for (int iq = 0; iq < n[0]; iq++) {
+                    /* the cells ahead of (i, j, k) come first: walk against the octant */
+                    const int i = sx > 0 ? n[0] - 1 - iq : iq, j = sy > 0 ? n[1] - 1 - jq : jq,
+                              k = sz > 0 ? n[2] - 1 - kq : kq;
+                    const long c = i + (long)n[0] * (j + (long)n[1] * k);
+                    int side = 0;
+                    if (g->start[c + 1] == g->start[c]) {
+                        int least = 254;
+                        for (int corner = 1; corner < 8; corner++) {
+                            int ii = i + (corner & 1 ? sx : 0), jj = j + (corner & 2 ? sy : 0),
+                                kk = k + (corner & 4 ? sz : 0);
+                            if (ii < 0 || ii >= n[0] || jj < 0 || jj >= n[1] || kk < 0 || kk >= n[2])
+                                continue; /* beyond the grid: empty */
+                            int ahead = g->empty[8 * (ii + (long)n[0] * (jj + (long)n[1] * kk)) + o];
+                            least = ahead < least ? ahead : least;
+                        }
+                        side = 1 + least;
                     }
-            g->empty[c] = (uint8_t)best;
-        }
+                    g->empty[8 * c + o] = (uint8_t)side;
+                }
     }
 }
 /* end snippet */
@@ -334,11 +335,12 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
     /* the most the build held at once: the grid and the fill array */
     g->peak_bytes = grid_memory(g) + (size_t)g->n_cells * sizeof *fill;
     if (opt.leap) {
-        g->empty = malloc((size_t)g->n_cells);
+        g->empty = malloc(8 * (size_t)g->n_cells);
         if (!g->empty)
             goto out_of_memory;
         empty_distances(g);
-        g->peak_bytes += (size_t)g->n_cells;
+        size_t now = grid_memory(g); /* the fill array is gone by now */
+        g->peak_bytes = now > g->peak_bytes ? now : g->peak_bytes;
     }
     return 0;
 
@@ -364,5 +366,5 @@ size_t grid_memory(const grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
     return sizeof *g + (cells + (size_t)g->n_unbinned) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof *g->refs +
-           (g->empty ? (size_t)g->n_cells : 0);
+           (g->empty ? 8 * (size_t)g->n_cells : 0);
 }

@@ -222,38 +222,39 @@ static inline int index_in(real f, int lowest, int highest)
 static inline int first_cell(const grid *g, int a, real f) { return index_in(f, 0, g->n[a] - 1); }
 
 /* snippet: leap */
-/* The ray is in an empty cell whose neighbours up to r cells away along
- * every axis are empty too: the block of (2r + 1)^3 cells around it holds
- * nothing.  Leave the block in one step: along the axis whose block face the
- * ray crosses first, the new index is just past that face, exactly; along the
- * others it is the cell of the exit point, moved back along the ray by the
- * rounding of that point (`back`, in units of length) and kept inside the
- * block and the grid, so that rounding can only land the ray a cell short
- * (in the empty block), never a cell too far.  False when the ray leaves the
- * grid through the block's face. */
-static inline bool dda_leap(const grid *g, dda *m, int r, const real p[3], const real d[3], const real inv_d[3],
+/* The ray is in an empty cell c, and the cube of side `side` >= 2 that has c
+ * as its corner and lies ahead of the ray (in the octant of its direction)
+ * holds nothing.  Leave the cube in one step: along the axis whose far face
+ * of the cube the ray crosses first, the new index is just past that face,
+ * exactly; along the others it is the cell of the exit point, moved back
+ * along the ray by the rounding of that point (`back`, in units of length)
+ * and kept inside the cube and the grid, so that rounding can only land the
+ * ray a cell short (in the empty cube), never a cell too far.  False when
+ * the ray leaves the grid through the cube's face. */
+static inline bool dda_leap(const grid *g, dda *m, int side, const real p[3], const real d[3], const real inv_d[3],
                             real reach, real d_max)
 {
-    /* The t at which the ray crosses the block's far face along each axis
+    /* The t at which the ray crosses the cube's far face along each axis
      * (infinity on an axis it never crosses); the first of them is the exit. */
     real t_face[3];
     for (int a = 0; a < 3; a++)
-        t_face[a] = m->step[a] ? crossing(g, a, m->i[a] + (m->step[a] > 0 ? r + 1 : -r), p, inv_d) : REAL_INFINITY;
+        t_face[a] = m->step[a] ? crossing(g, a, m->i[a] + (m->step[a] > 0 ? side : 1 - side), p, inv_d) : REAL_INFINITY;
     const int axis = t_face[0] <= t_face[1] ? (t_face[0] <= t_face[2] ? 0 : 2) : (t_face[1] <= t_face[2] ? 1 : 2);
     const real t_exit = t_face[axis];
     if (!(t_exit < REAL_INFINITY)) /* no face ahead (or NaN): nothing to leap to */
         return false;
-    const int beyond = m->i[axis] + m->step[axis] * (r + 1);
+    const int beyond = m->i[axis] + m->step[axis] * side;
     if (beyond < 0 || beyond >= g->n[axis])
-        return false; /* the block's face is beyond the grid's */
+        return false; /* the cube's face is beyond the grid's */
     const real back = reach + 16 * REAL_EPSILON * real_abs(t_exit) * d_max;
     for (int a = 0; a < 3; a++) {
         if (a == axis) {
             m->i[a] = beyond;
-        } else if (m->step[a]) { /* in the block and in the grid */
+        } else if (m->step[a]) { /* in the cube and in the grid */
             real f = (p[a] + t_exit * d[a] - g->lo_a[a] - (real)m->step[a] * back) * g->inv_cell_a[a];
-            int lowest = m->i[a] - r > 0 ? m->i[a] - r : 0;
-            int highest = m->i[a] + r < g->n[a] - 1 ? m->i[a] + r : g->n[a] - 1;
+            int far_end = m->i[a] + m->step[a] * (side - 1);
+            int lowest = m->step[a] > 0 ? m->i[a] : far_end > 0 ? far_end : 0;
+            int highest = m->step[a] < 0 ? m->i[a] : far_end < g->n[a] - 1 ? far_end : g->n[a] - 1;
             m->i[a] = index_in(f, lowest, highest);
         } else {
             continue; /* the ray stays in its slab of cells along a */
@@ -325,6 +326,8 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
         m.next[a] = m.step[a] ? crossing(g, a, m.i[a] + (m.step[a] > 0), p, inv_d) : REAL_INFINITY;
     }
     m.cell = m.i[0] + (long)g->n[0] * (m.i[1] + (long)g->n[1] * m.i[2]);
+    /* the octant of d, as g->empty counts it (an axis the ray never crosses may take either) */
+    const long octant = (m.step[0] < 0) | (m.step[1] < 0) << 1 | (m.step[2] < 0) << 2;
     /* end snippet */
 
     /* snippet: march */
@@ -380,8 +383,8 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
         int a = nearest_axis(&m);
         if (s.best_t <= m.next[a] - slack[a])
             break;
-        if (g->empty && g->empty[m.cell] >= 2) { /* a block of empty cells: leap over it */
-            if (!dda_leap(g, &m, g->empty[m.cell] - 1, p, d, inv_d, reach, d_max))
+        if (g->empty && g->empty[8 * m.cell + octant] >= 2) { /* a cube of empty cells ahead: leap over it */
+            if (!dda_leap(g, &m, g->empty[8 * m.cell + octant], p, d, inv_d, reach, d_max))
                 break;
             continue;
         }
