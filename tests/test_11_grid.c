@@ -574,6 +574,64 @@ static void test_empty_and_single(void **state)
     surface_list_free(&list);
 }
 
+/* The leap's cubes: for every cell and octant, empty[8 c + o] is the side of
+ * the largest cube of empty cells with c as its corner and lying ahead of c
+ * in octant o (cells beyond the grid count as empty, capped at 255), found
+ * here by growing the cube one cell at a time. */
+static bool cube_empty(const grid *g, int i, int j, int k, int o, int side)
+{
+    const int sign[3] = {o & 1 ? -1 : 1, o & 2 ? -1 : 1, o & 4 ? -1 : 1};
+    for (int c = 0; c < side; c++)
+        for (int b = 0; b < side; b++)
+            for (int a = 0; a < side; a++) {
+                int ii = i + sign[0] * a, jj = j + sign[1] * b, kk = k + sign[2] * c;
+                if (ii < 0 || ii >= g->n[0] || jj < 0 || jj >= g->n[1] || kk < 0 || kk >= g->n[2])
+                    continue;
+                long cell = ii + (long)g->n[0] * (jj + (long)g->n[1] * kk);
+                if (g->start[cell + 1] > g->start[cell])
+                    return false;
+            }
+    return true;
+}
+
+static void test_empty_cubes(void **state)
+{
+    (void)state;
+    rng_state = 11;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    for (int k = 0; k < 12; k++) /* small spheres in a box far from the origin */
+        surface_list_add_sphere(&list, (sphere){uniform_vec(vec3_make(1000, -50, 3), vec3_make(1010, -42, 9)),
+                                                uniform((real)0.05, (real)0.4)},
+                                0, k);
+    grid g;
+    char err[256];
+    grid_options opt = grid_default_options();
+    opt.density = 40;
+    assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+    assert_non_null(g.empty);
+    const int largest = g.n[0] > g.n[1] ? (g.n[0] > g.n[2] ? g.n[0] : g.n[2]) : (g.n[1] > g.n[2] ? g.n[1] : g.n[2]);
+    long leaps = 0;
+    for (int k = 0; k < g.n[2]; k++)
+        for (int j = 0; j < g.n[1]; j++)
+            for (int i = 0; i < g.n[0]; i++)
+                for (int o = 0; o < 8; o++) {
+                    int side = 0;
+                    while (side <= largest && cube_empty(&g, i, j, k, o, side + 1))
+                        side++;
+                    if (side > largest) /* reaches past the grid on every axis */
+                        side = 255;
+                    long c = i + (long)g.n[0] * (j + (long)g.n[1] * k);
+                    if (g.empty[8 * c + o] != side)
+                        fail_msg("cell (%d, %d, %d), octant %d: empty cube of side %d expected, the grid says %d", i,
+                                 j, k, o, side, g.empty[8 * c + o]);
+                    leaps += side >= 2;
+                }
+    assert_true(leaps > 0); /* the scene leaves room to leap */
+    grid_free(&g);
+    surface_list_free(&list);
+}
+
 /* ---- the exercises ----------------------------------------------------------------------- */
 
 /* A grid laid out by hand: low corner (-1, 2, 0.5), cells 0.25 x 0.5 x 1
@@ -828,6 +886,7 @@ static const graded_test tests[] = {
     GRADED(test_resolution, 1),
     GRADED(test_mailbox_counts, 1),
     GRADED(test_empty_and_single, 1),
+    GRADED(test_empty_cubes, 1),
     GRADED(test_cornell_scenes, 0),
     GRADED(test_builtin_scenes_as_chapter_10, 0),
 };
