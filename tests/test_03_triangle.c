@@ -740,6 +740,52 @@ static void test_crossing_certain_quick_is_exact(void **state)
             assert_true(outcomes[kind][0] > 0 && outcomes[kind][1] > 0);
     }
     assert_int_equal(outcomes[7][1], 0);
+
+    /* Where the quick bound is tight: every |component| of e1 = a - b,
+     * e2 = a - c and d is 1, 1 + delta or 1 + gamma, so that the quick bound
+     * exceeds the full one 8 eps P + 2 eps Q (R = 0 for M) only by a factor
+     * 1 + (delta + gamma) / 2 or less (< 1 + 2^-21 in double), and
+     * M = -delta gamma, with gamma chosen to put |M| within 2^-5 of the full
+     * bound.  The computed M then often equals the computed bound exactly
+     * (false), and only the margin of the quick test keeps it from answering
+     * true: without its factor 1 + 2^-20 this fails.  (The second
+     * determinant, with f = a - p = (1, 0, 0), is clearly certain.)  Axes
+     * permuted and flipped, so the roundings differ. */
+    const real delta = (real)ldexp(1, ilogb(REAL_EPSILON) / 2 + 3); /* 2^-23 in double, 2^-8 in float */
+    long tight[2] = {0, 0};
+    for (int n = 0; n < 1 << 17; n++) {
+        real rho = (real)ldexp(symmetric(), -5), edge = 1 + delta, gamma = 0;
+        const real e1[3] = {1, 1, 1}, e2[3] = {1, -1, 1 + delta}, s_i[3] = {1 + edge, 1 + edge, 1 + delta + edge};
+        for (int iteration = 0; iteration < 3; iteration++) { /* gamma from the bound, which depends on gamma */
+            const real w[3] = {1, 1 + gamma, 1};
+            real p = 0, q = 0; /* P and Q of det[e1 e2 w], over the six orders i, j, k */
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    if (j != i) {
+                        int k = 3 - i - j;
+                        p += real_abs(e1[i] * e2[j] * w[k]);
+                        q += s_i[i] * (real_abs(e1[j]) + real_abs(e2[j])) * real_abs(w[k]);
+                    }
+            gamma = (8 * REAL_EPSILON * p + 2 * REAL_EPSILON * q) * (1 + rho) / delta;
+        }
+        const real points[5][3] = {{0, 0, 0}, {-1, -1, -1}, {-1, 1, -1 - delta}, {-1, 0, 0}, {1, 1 + gamma, 1}};
+        int shift = below(3);
+        real flip[3] = {any_sign(1), any_sign(1), any_sign(1)};
+        vec3 v[5];
+        for (int i = 0; i < 5; i++)
+            v[i] = vec3_make(flip[0] * points[i][shift], flip[1] * points[i][(shift + 1) % 3],
+                             flip[2] * points[i][(shift + 2) % 3]);
+        vec3 a = v[0], b = v[1], c = v[2], o = v[3], d = v[4];
+        triangle tri = {a, b, c};
+        ray r = {o, d};
+        bool quick = triangle_crossing_certain(&tri, r), exact = triangle_crossing_certain_exact(&tri, r);
+        if (quick != exact)
+            fail_msg("tight input %d: triangle_crossing_certain says %d, the full computation %d for rho %a, shift %d",
+                     n, quick, exact, (double)rho, shift);
+        tight[exact]++;
+    }
+    print_message("tight: %ld certain, %ld not\n", tight[1], tight[0]);
+    assert_true(tight[0] > 0 && tight[1] > 0);
 }
 
 static const graded_test tests[] = {
