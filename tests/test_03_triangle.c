@@ -22,6 +22,7 @@
 #include "suite.h"
 
 #include "03_triangle/cracks.h"
+#include "03_triangle/degenerate.h"
 #include "03_triangle/icosahedron.h"
 #include "03_triangle/triangle.h"
 
@@ -651,6 +652,142 @@ static void test_near_edge(void **state)
     assert_vec3_close(flat.c, e1, 0);
 }
 
+/* triangle_crossing_certain takes a quick sufficient test before the full
+ * one (degenerate.c); it must decide exactly as the full one,
+ * triangle_crossing_certain_exact, for every input.  Random triangles and
+ * rays in rotated frames, at scales from the smallest subnormal to the
+ * largest real and far from the origin, of the kinds where the two could
+ * part: nearly collinear or coincident vertices, rays nearly in the plane,
+ * origins (nearly) in the plane, each perturbed by 2^-k of its size for k up
+ * to 80 so that the determinants fall on both sides of their bounds; axis
+ * parallel directions with +0 and -0 components; subnormal, huge, infinite
+ * and NaN coordinates. */
+static int below(int n) /* uniform in 0 .. n - 1 */
+{
+    (void)uniform();
+    return (int)(rng_state % (uint64_t)n);
+}
+static real power_of_two(int lo, int hi) { return (real)ldexp(1, lo + below(hi - lo + 1)); }
+static real any_sign(real x) { return below(2) ? x : -x; }
+
+static void test_crossing_certain_quick_is_exact(void **state)
+{
+    (void)state;
+    rng_state = 0x853c49e6748fea9bu;
+    const int top = ilogb(REAL_MAX), bottom = ilogb(REAL_MIN) + ilogb(REAL_EPSILON); /* 2^bottom: smallest subnormal */
+    const int span = top - 64; /* sizes 2^-span .. 2^span, and distances up to 2^60 sizes, are finite */
+    enum { KINDS = 10, N = 1 << 22 };
+    long outcomes[KINDS][2] = {{0}};
+    for (int n = 0; n < N; n++) {
+        int kind = n % KINDS;
+        /* A size for the triangle, and the distance of its frame from the origin. */
+        int e = kind == 6 ? bottom + below(3 * -ilogb(REAL_EPSILON))  /* subnormal data */
+              : kind == 8 ? top - below(20)                          /* near overflow */
+                          : -span + below(2 * span);
+        real size = power_of_two(e, e) * (1 + uniform());
+        real distance = below(3) ? (kind == 9 ? power_of_two(-span, span) : size * power_of_two(0, 60)) * uniform() : 0;
+        frame f = random_frame(size, distance);
+        vec3 a = place(&f, symmetric(), symmetric(), 0), b = place(&f, symmetric(), symmetric(), 0);
+        vec3 c = place(&f, symmetric(), symmetric(), 0);
+        real tiny = power_of_two(-80, 0);
+        if (kind == 1) /* c nearly on the line ab */
+            c = vec3_add(vec3_add(a, vec3_scale(vec3_sub(b, a), 2 * uniform() - (real)0.5)),
+                         vec3_scale(vec3_make(symmetric(), symmetric(), symmetric()), size * tiny));
+        if (kind == 2) /* c (nearly) at a or b */
+            c = vec3_add(below(2) ? a : b, below(4) ? vec3_scale(vec3_make(symmetric(), symmetric(), symmetric()), size * tiny)
+                                                    : vec3_make(0, 0, 0));
+        /* Local coordinates of the origin; z = 0 is the triangle's plane. */
+        real pz = kind == 4 ? (below(3) ? any_sign(tiny) * uniform() : 0) : any_sign(1 + 2 * uniform());
+        vec3 p = place(&f, 3 * symmetric(), 3 * symmetric(), pz);
+        vec3 target = place(&f, symmetric(), symmetric(), kind == 3 ? pz + any_sign(tiny) * uniform() : 0);
+        vec3 d = vec3_sub(target, p);
+        if (kind == 3 && below(2))
+            d = vec3_sub(place(&f, symmetric(), symmetric(), 0), place(&f, symmetric(), symmetric(), 0)); /* in the plane */
+        if (kind == 9) /* a direction of its own size, anywhere in the range */
+            d = vec3_scale(d, power_of_two(-span, span) / (size + distance));
+        if (kind == 5) { /* along an axis, with signed zeros elsewhere; sometimes an axis-aligned triangle */
+            real along[3] = {any_sign(0), any_sign(0), any_sign(0)};
+            along[below(3)] = any_sign(size * (1 + uniform()));
+            d = vec3_make(along[0], along[1], along[2]);
+            if (below(2))
+                a.z = b.z = c.z = below(2) ? p.z : any_sign(size * uniform());
+            if (below(4) == 0)
+                p = below(2) ? a : vec3_make(0, 0, 0);
+        }
+        triangle tri = {a, b, c};
+        ray r = {p, d};
+        if (kind == 7) { /* one coordinate infinite or NaN */
+            real bad = below(3) == 0 ? (real)NAN : any_sign(REAL_INFINITY);
+            real *all[15] = {&tri.a.x, &tri.a.y, &tri.a.z, &tri.b.x, &tri.b.y, &tri.b.z, &tri.c.x, &tri.c.y,
+                             &tri.c.z, &r.p.x, &r.p.y, &r.p.z, &r.d.x, &r.d.y, &r.d.z};
+            *all[below(15)] = bad;
+        }
+        bool quick = triangle_crossing_certain(&tri, r), exact = triangle_crossing_certain_exact(&tri, r);
+        if (quick != exact) {
+            fail_msg("kind %d, input %d: triangle_crossing_certain says %d, the full computation %d for a = (%a, %a, "
+                     "%a), b = (%a, %a, %a), c = (%a, %a, %a), p = (%a, %a, %a), d = (%a, %a, %a)",
+                     kind, n, quick, exact, (double)tri.a.x, (double)tri.a.y, (double)tri.a.z, (double)tri.b.x,
+                     (double)tri.b.y, (double)tri.b.z, (double)tri.c.x, (double)tri.c.y, (double)tri.c.z,
+                     (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z);
+        }
+        outcomes[kind][exact]++;
+    }
+    /* The inputs reach both answers where the quick test could go wrong:
+     * every kind but the non-finite one (always false) gives some of each. */
+    for (int kind = 0; kind < KINDS; kind++) {
+        print_message("kind %d: %ld certain, %ld not\n", kind, outcomes[kind][1], outcomes[kind][0]);
+        if (kind != 7)
+            assert_true(outcomes[kind][0] > 0 && outcomes[kind][1] > 0);
+    }
+    assert_int_equal(outcomes[7][1], 0);
+
+    /* Where the quick bound is tight: every |component| of e1 = a - b,
+     * e2 = a - c and d is 1, 1 + delta or 1 + gamma, so that the quick bound
+     * exceeds the full one 8 eps P + 2 eps Q (R = 0 for M) only by a factor
+     * 1 + (delta + gamma) / 2 or less (< 1 + 2^-21 in double), and
+     * M = -delta gamma, with gamma chosen to put |M| within 2^-5 of the full
+     * bound.  The computed M then often equals the computed bound exactly
+     * (false), and only the margin of the quick test keeps it from answering
+     * true: without its factor 1 + 2^-20 this fails.  (The second
+     * determinant, with f = a - p = (1, 0, 0), is clearly certain.)  Axes
+     * permuted and flipped, so the roundings differ. */
+    const real delta = (real)ldexp(1, ilogb(REAL_EPSILON) / 2 + 3); /* 2^-23 in double, 2^-8 in float */
+    long tight[2] = {0, 0};
+    for (int n = 0; n < 1 << 17; n++) {
+        real rho = (real)ldexp(symmetric(), -5), edge = 1 + delta, gamma = 0;
+        const real e1[3] = {1, 1, 1}, e2[3] = {1, -1, 1 + delta}, s_i[3] = {1 + edge, 1 + edge, 1 + delta + edge};
+        for (int iteration = 0; iteration < 3; iteration++) { /* gamma from the bound, which depends on gamma */
+            const real w[3] = {1, 1 + gamma, 1};
+            real p = 0, q = 0; /* P and Q of det[e1 e2 w], over the six orders i, j, k */
+            for (int i = 0; i < 3; i++)
+                for (int j = 0; j < 3; j++)
+                    if (j != i) {
+                        int k = 3 - i - j;
+                        p += real_abs(e1[i] * e2[j] * w[k]);
+                        q += s_i[i] * (real_abs(e1[j]) + real_abs(e2[j])) * real_abs(w[k]);
+                    }
+            gamma = (8 * REAL_EPSILON * p + 2 * REAL_EPSILON * q) * (1 + rho) / delta;
+        }
+        const real points[5][3] = {{0, 0, 0}, {-1, -1, -1}, {-1, 1, -1 - delta}, {-1, 0, 0}, {1, 1 + gamma, 1}};
+        int shift = below(3);
+        real flip[3] = {any_sign(1), any_sign(1), any_sign(1)};
+        vec3 v[5];
+        for (int i = 0; i < 5; i++)
+            v[i] = vec3_make(flip[0] * points[i][shift], flip[1] * points[i][(shift + 1) % 3],
+                             flip[2] * points[i][(shift + 2) % 3]);
+        vec3 a = v[0], b = v[1], c = v[2], o = v[3], d = v[4];
+        triangle tri = {a, b, c};
+        ray r = {o, d};
+        bool quick = triangle_crossing_certain(&tri, r), exact = triangle_crossing_certain_exact(&tri, r);
+        if (quick != exact)
+            fail_msg("tight input %d: triangle_crossing_certain says %d, the full computation %d for rho %a, shift %d",
+                     n, quick, exact, (double)rho, shift);
+        tight[exact]++;
+    }
+    print_message("tight: %ld certain, %ld not\n", tight[1], tight[0]);
+    assert_true(tight[0] > 0 && tight[1] > 0);
+}
+
 static const graded_test tests[] = {
     GRADED(test_det3, 0), /* handed out complete: no points */
     GRADED(test_centroid, 3),
@@ -672,6 +809,7 @@ static const graded_test tests[] = {
     GRADED(test_icosahedron_from_inside, 2),
     GRADED(test_watertight_has_no_cracks, 0), /* handed out complete: no points */
     GRADED(test_near_edge, 0), /* handed out complete: no points */
+    GRADED(test_crossing_certain_quick_is_exact, 0), /* handed out complete: no points */
 };
 
 SUITE_MAIN("03_triangle", tests)

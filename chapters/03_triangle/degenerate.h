@@ -27,4 +27,9 @@
  * non-finite data. */
 bool triangle_crossing_certain(const triangle *tri, ray r);
 
+/* The same answer, always computed in full: triangle_crossing_certain first
+ * tries a cheaper sufficient test and calls this one only where that test
+ * cannot decide.  (The tests compare the two.) */
+bool triangle_crossing_certain_exact(const triangle *tri, ray r);
+
 #endif
