@@ -585,6 +585,76 @@ static grid hand_grid(void)
     return g;
 }
 
+static double clamp_cell(double f, int lowest, int highest) { return f < lowest ? lowest : f > highest ? highest : f; }
+
+/* grid_cell_range(g, lo, hi) along every axis: cells want_first[a] ..
+ * want_last[a] (NULL: the cells i with [i, i + 1] meeting [f_lo, f_hi], the
+ * box in units of cells, computed here; none gives first > last).  A
+ * failure names the box, the axis, f_lo and f_hi and the likely mistake. */
+static void expect_range(const grid *g, vec3 lo, vec3 hi, const int *want_first, const int *want_last)
+{
+    int first[3], last[3];
+    grid_cell_range(g, lo, hi, first, last);
+    const real l[3] = {lo.x, lo.y, lo.z}, u[3] = {hi.x, hi.y, hi.z}, o[3] = {g->lo.x, g->lo.y, g->lo.z},
+               inv[3] = {g->inv_cell.x, g->inv_cell.y, g->inv_cell.z};
+    for (int a = 0; a < 3; a++) {
+        const int n = g->n[a];
+        const real f_lo = (l[a] - o[a]) * inv[a], f_hi = (u[a] - o[a]) * inv[a];
+        int wf = n, wl = -1; /* none */
+        if (want_first) {
+            wf = want_first[a], wl = want_last[a];
+        } else {
+            for (int i = n - 1; i >= 0; i--)
+                if ((real)i <= f_hi && (real)(i + 1) >= f_lo)
+                    wf = i;
+            for (int i = 0; i < n; i++)
+                if ((real)i <= f_hi && (real)(i + 1) >= f_lo)
+                    wl = i;
+        }
+        bool none = wf > wl;
+        if (none ? first[a] > last[a] : first[a] == wf && last[a] == wl)
+            continue;
+        const double F = f_lo, L = f_hi, right_first = clamp_cell(ceil(F) - 1, 0, n), right_last = clamp_cell(floor(L), -1, n - 1);
+        const real f_lo_x = (l[a] - o[0]) * inv[0], f_hi_x = (u[a] - o[0]) * inv[0];
+        const struct {
+            double first, last;
+            const char *why;
+        } mistakes[] = {
+            {clamp_cell(floor(F), 0, n), right_last, "first = floor(f_lo): a box whose low side lies on a cell boundary "
+                                                     "(f_lo whole) touches the cell below too: first = ceil(f_lo) - 1"},
+            {right_first, clamp_cell(ceil(L) - 1, -1, n - 1), "last = ceil(f_hi) - 1: a box whose high side lies on a "
+                                                              "cell boundary touches the cell above too: last = floor(f_hi)"},
+            {right_first, clamp_cell(trunc(L), -1, n - 1), "last truncated towards zero: for -1 < f_hi < 0 (a box "
+                                                           "below the grid) floor gives -1, truncation 0"},
+            {clamp_cell(trunc(F), 0, n), right_last, "first truncated: first = ceil(f_lo) - 1"},
+            {right_first, clamp_cell(floor(L), -1, n), "last clamped to n: the last cell is n - 1"},
+            {clamp_cell(ceil(F) - 1, 0, n - 1), right_last, "first clamped to n - 1: a box beyond the grid then gets "
+                                                            "its last cell; clamp first to 0 .. n so that first > last"},
+            {right_first, clamp_cell(floor(L), 0, n - 1), "last clamped at 0 from below: a box below the grid then "
+                                                          "gets cell 0; clamp last to -1 .. n - 1 so that first > last"},
+            {ceil(F) - 1, floor(L), "not clamped to the grid: first and last lie in 0 .. n - 1 (or first > last)"},
+            {clamp_cell(floor(F) - 1, 0, n), right_last, "floor(f_lo) - 1 is one cell too many when f_lo is not "
+                                                         "whole: first = ceil(f_lo) - 1"},
+            {clamp_cell(ceil(L) - 1, 0, n), clamp_cell(floor(F), -1, n - 1), "box_lo and box_hi swapped"},
+            {clamp_cell(ceil((double)f_lo_x) - 1, 0, n), clamp_cell(floor((double)f_hi_x), -1, n - 1),
+             "the x axis's cell size or origin used for another axis: cell_coordinate(g, x, a) with this axis a"},
+        };
+        const char *why = "first = ceil(f_lo) - 1, last = floor(f_hi), clamped to 0 .. n - 1 (first > last: none)";
+        for (size_t k = 0; k < sizeof mistakes / sizeof mistakes[0]; k++)
+            if (mistakes[k].first == first[a] && mistakes[k].last == last[a]) {
+                why = mistakes[k].why;
+                break;
+            }
+        fail_msg("grid_cell_range(grid from (%g, %g, %g), cells %g x %g x %g, n = %d x %d x %d; box (%.9g, %.9g, "
+                 "%.9g) .. (%.9g, %.9g, %.9g)), axis %c: f_lo = %.9g, f_hi = %.9g (in cells)\n"
+                 "    expected cells %d .. %d%s\n    got      cells %d .. %d\n    likely mistake: %s",
+                 (double)g->lo.x, (double)g->lo.y, (double)g->lo.z, (double)g->cell.x, (double)g->cell.y,
+                 (double)g->cell.z, g->n[0], g->n[1], g->n[2], (double)lo.x, (double)lo.y, (double)lo.z, (double)hi.x,
+                 (double)hi.y, (double)hi.z, "xyz"[a], F, L, wf, wl, none ? " (none: first > last)" : "", first[a],
+                 last[a], why);
+    }
+}
+
 /* cell_range: boxes inside, on cell boundaries (both sides count), reaching
  * outside (clamped) and wholly outside (empty). */
 static void test_cell_range(void **state)
@@ -607,27 +677,15 @@ static void test_cell_range(void **state)
         {{-1, 2, (real)0.5}, {-1, 2, (real)0.5}, {0, 0, 0}, {0, 0, 0}},
         {{1, 4, (real)3.5}, {1, 4, (real)3.5}, {7, 3, 2}, {7, 3, 2}},
     };
-    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
-        int first[3], last[3];
-        grid_cell_range(&g, cases[c].lo, cases[c].hi, first, last);
-        for (int a = 0; a < 3; a++) {
-            if (first[a] != cases[c].first[a] || last[a] != cases[c].last[a])
-                fail_msg("case %zu, axis %d: cells %d .. %d, expected %d .. %d", c, a, first[a], last[a],
-                         cases[c].first[a], cases[c].last[a]);
-        }
-    }
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
+        expect_range(&g, cases[c].lo, cases[c].hi, cases[c].first, cases[c].last);
     /* Wholly outside, on each side of each axis: empty on that axis. */
     const vec3 outside[][2] = {
         {{-3, 2, 1}, {-2, 3, 2}}, {{2, 2, 1}, {3, 3, 2}}, {{0, -1, 1}, {0, 1, 2}},
         {{0, 5, 1}, {0, 6, 2}},   {{0, 3, -2}, {0, 3, 0}}, {{0, 3, 4}, {0, 3, 9}},
     };
-    for (size_t c = 0; c < sizeof outside / sizeof outside[0]; c++) {
-        int first[3], last[3];
-        grid_cell_range(&g, outside[c][0], outside[c][1], first, last);
-        int a = (int)c / 2;
-        if (!(first[a] > last[a]))
-            fail_msg("outside box %zu: axis %d gives cells %d .. %d, expected none", c, a, first[a], last[a]);
-    }
+    for (size_t c = 0; c < sizeof outside / sizeof outside[0]; c++)
+        expect_range(&g, outside[c][0], outside[c][1], NULL, NULL);
     /* Random boxes in a grid of inexact sizes: cell i is in the range exactly
      * when [i, i + 1] meets [f_lo, f_hi], the box in units of cells. */
     rng_state = 19;
@@ -639,20 +697,7 @@ static void test_cell_range(void **state)
         vec3 a = uniform_vec(box_lo, box_hi), b = uniform_vec(box_lo, box_hi);
         vec3 lo = vec3_make(real_fmin(a.x, b.x), real_fmin(a.y, b.y), real_fmin(a.z, b.z));
         vec3 hi = vec3_make(real_fmax(a.x, b.x), real_fmax(a.y, b.y), real_fmax(a.z, b.z));
-        int first[3], last[3];
-        grid_cell_range(&h, lo, hi, first, last);
-        const real l[3] = {lo.x, lo.y, lo.z}, u[3] = {hi.x, hi.y, hi.z}, o[3] = {h.lo.x, h.lo.y, h.lo.z},
-                   inv[3] = {h.inv_cell.x, h.inv_cell.y, h.inv_cell.z};
-        for (int ax = 0; ax < 3; ax++) {
-            real f_lo = (l[ax] - o[ax]) * inv[ax], f_hi = (u[ax] - o[ax]) * inv[ax];
-            for (int i = 0; i < h.n[ax]; i++) {
-                bool meets = (real)i <= f_hi && (real)(i + 1) >= f_lo;
-                bool listed = i >= first[ax] && i <= last[ax];
-                if (meets != listed)
-                    fail_msg("box %d, axis %d: cell %d %s but the range is %d .. %d", k, ax, i,
-                             meets ? "meets the box" : "does not meet the box", first[ax], last[ax]);
-            }
-        }
+        expect_range(&h, lo, hi, NULL, NULL);
     }
 }
 
@@ -708,8 +753,18 @@ static void test_dda_cells(void **state)
         hit_record hit;
         assert_false(grid_intersect_counted(&g, r, 0, REAL_INFINITY, &hit, &counts));
         if (counts.cells != (uint64_t)crossings + 1)
-            fail_msg("ray %d: %llu cells visited, expected %d (%d plane crossings)", k,
-                     (unsigned long long)counts.cells, crossings + 1, crossings);
+            fail_msg("grid_intersect_counted(ray %d: p = (%.17g, %.17g, %.17g), d = (%.17g, %.17g, %.17g)) through a "
+                     "grid of %d x %d x %d empty cells\n    expected %d cells visited (%d plane crossings + 1)\n"
+                     "    got      %llu\n    likely mistake: %s",
+                     k, (double)p.x, (double)p.y, (double)p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z, g.n[0],
+                     g.n[1], g.n[2], crossings + 1, crossings, (unsigned long long)counts.cells,
+                     counts.cells > (uint64_t)crossings + 1
+                         ? "dda_step goes on past the grid (the last cell is n_a - 1: stop when i_a < 0 or i_a >= "
+                           "n_a), or next_a comes from the plane the ray just crossed (for step_a > 0 the far "
+                           "boundary is plane i_a + 1, for step_a < 0 plane i_a)"
+                         : "dda_step stops too early (i_a = 0 and i_a = n_a - 1 are inside the grid), or next_a "
+                           "comes from the wrong plane (for step_a > 0 plane i_a + 1, for step_a < 0 plane i_a) or "
+                           "is not updated");
         checked++;
     }
     assert_true(checked > 2000);
