@@ -51,8 +51,8 @@ static void expect_interpolate(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gam
         {MIX(gamma, alpha, beta), wrong_vertex},
         {MIX(beta, gamma, alpha), wrong_vertex},
         {MIX(1 - beta, beta, gamma), "alpha = 1 - beta: the weight of vertex a is 1 - beta - gamma"},
-        {MIX(1 - gamma, beta, gamma), "alpha = 1 - gamma: the weight of vertex a is 1 - beta - gamma"},
         {MIX(1, beta, gamma), "vertex a's weight left out: A_a is scaled by alpha = 1 - beta - gamma"},
+        {MIX(1 - gamma, beta, gamma), "alpha = 1 - gamma: the weight of vertex a is 1 - beta - gamma"},
         {MIX(beta + gamma, beta, gamma), "alpha = beta + gamma: it is 1 - beta - gamma"},
         {MIX(0, beta, gamma), "vertex a left out: A = alpha A_a + beta A_b + gamma A_c"},
         {vec3_scale(MIX(alpha, beta, gamma), (real)(1.0 / 3)),
@@ -159,7 +159,7 @@ static void expect_index(texture_kind kind, long long i, int n, long long expect
         {(double)wrapped(TEXTURE_CLAMP, i, n), "clamped: a RepeatTexture wraps (i mod n)"},
     };
     const suspect clamp_mistakes[] = {
-        {(double)n, "clamped to n: the last texel is n - 1 (i >= n reads n - 1)"},
+        {(double)n, "clamped to n (or only i > n clamped): the last texel is n - 1, and every i >= n reads it"},
         {(double)i, i < 0 ? "a negative i is not clamped: it reads texel 0"
                           : "i >= n is not clamped (i > n lets i = n through): it reads texel n - 1"},
         {(double)wrapped(TEXTURE_REPEAT, i, n), "wrapped: a ClampTexture clamps to [0, n - 1] (tex->kind decides)"},
@@ -276,7 +276,10 @@ static void expect_nearest(const scene_texture *tex, mesh_uv uv, int x, int y)
         {numbered_colour(wrapped(k, cx, TH), row), "the column wrapped by the height: columns wrap by the width"},
         {numbered_colour(wrapped(other, cx, TW), wrapped(other, cy, TH)),
          "wrapped the other way: tex->kind says repeat or clamp (texel_index)"},
-        {numbered_colour(0, 0), "texel (0, 0) whatever (u, v): the exercise is still to do"},
+        {numbered_colour(0, 0), fabs(X) > 2147483647.0 || fabs(Y) > 2147483647.0
+                                    ? "texel (0, 0) for a coordinate beyond an int's range: the index converted to "
+                                      "int overflowed; keep it a long long"
+                                    : "texel (0, 0) whatever (u, v): the exercise is still to do"},
     };
     assert_vec3_why(numbered_colour(x, y), vec3_make(c.r, c.g, c.b), TOL(1),
                     describe("texture_nearest(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = %.9g; "
@@ -349,12 +352,17 @@ typedef enum {
     BILINEAR_MINUS_HALF, /* centres at x + 1/2: x0 = floor(x - 1/2) */
     BILINEAR_PLUS_HALF,  /* nearest's + 1/2: x0 = floor(x + 1/2) */
     BILINEAR_S_SWAPPED,  /* T(x0) weighs s, T(x0 + 1) weighs 1 - s */
+    BILINEAR_S_SWAPPED_TOP,
+    BILINEAR_S_SWAPPED_BOTTOM,
     BILINEAR_T_SWAPPED,
     BILINEAR_T_IS_S,     /* t = x - x0 */
     BILINEAR_BOTTOM_T,   /* the bottom row blended with t instead of s */
     BILINEAR_TRUNCATE,   /* x0 = (long long)x: towards zero */
     BILINEAR_ROW_ABOVE,  /* the second row is y0 - 1 */
     BILINEAR_NO_WRAP,    /* x0 + 1 and y0 + 1 not wrapped: the edge texel again */
+    BILINEAR_NO_WRAP_X,
+    BILINEAR_NO_WRAP_Y,
+    BILINEAR_UV_SWAPPED, /* texel (row, column) */
     BILINEAR_NEAREST,    /* the nearest texel */
     BILINEAR_VARIANTS
 } bilinear_variant;
@@ -363,6 +371,14 @@ static vec3 texel_vec3(const scene_texture *tex, long long x, long long y)
 {
     color c = texture_image_texel(&tex->image, (int)wrapped(tex->kind, x, tex->image.width),
                                   (int)wrapped(tex->kind, y, tex->image.height));
+    return vec3_make(c.r, c.g, c.b);
+}
+
+/* The texel at (x, y) read with the column and the row swapped, each kept in range. */
+static vec3 texel_swapped(const scene_texture *tex, long long x, long long y)
+{
+    int W = tex->image.width, H = tex->image.height;
+    color c = texture_image_texel(&tex->image, (int)(wrapped(tex->kind, y, H) % W), (int)(wrapped(tex->kind, x, W) % H));
     return vec3_make(c.r, c.g, c.b);
 }
 
@@ -376,15 +392,16 @@ static vec3 bilinear_as(const scene_texture *tex, double x, double y, bilinear_v
     double fx = v == BILINEAR_TRUNCATE ? trunc(x) : floor(x), fy = v == BILINEAR_TRUNCATE ? trunc(y) : floor(y);
     double s = x - fx, t = v == BILINEAR_T_IS_S ? s : y - fy;
     long long x0 = (long long)fx, y0 = (long long)fy, x1 = x0 + 1, y1 = v == BILINEAR_ROW_ABOVE ? y0 - 1 : y0 + 1;
-    if (v == BILINEAR_NO_WRAP) {
+    if (v == BILINEAR_NO_WRAP || v == BILINEAR_NO_WRAP_X)
         x1 = x1 >= 0 && x1 < W ? x1 : wrapped(tex->kind, x0, W);
+    if (v == BILINEAR_NO_WRAP || v == BILINEAR_NO_WRAP_Y)
         y1 = y1 >= 0 && y1 < H ? y1 : wrapped(tex->kind, y0, H);
-    }
-    double ws = v == BILINEAR_S_SWAPPED ? 1 - s : s, wt = v == BILINEAR_T_SWAPPED ? 1 - t : t;
-    double wb = v == BILINEAR_BOTTOM_T ? t : ws;
-    vec3 top = vec3_add(vec3_scale(texel_vec3(tex, x0, y0), (real)(1 - ws)), vec3_scale(texel_vec3(tex, x1, y0), (real)ws));
-    vec3 bottom =
-        vec3_add(vec3_scale(texel_vec3(tex, x0, y1), (real)(1 - wb)), vec3_scale(texel_vec3(tex, x1, y1), (real)wb));
+    double ws = v == BILINEAR_S_SWAPPED || v == BILINEAR_S_SWAPPED_TOP ? 1 - s : s;
+    double wb = v == BILINEAR_BOTTOM_T ? t : v == BILINEAR_S_SWAPPED || v == BILINEAR_S_SWAPPED_BOTTOM ? 1 - s : s;
+    double wt = v == BILINEAR_T_SWAPPED ? 1 - t : t;
+    vec3 (*T)(const scene_texture *, long long, long long) = v == BILINEAR_UV_SWAPPED ? texel_swapped : texel_vec3;
+    vec3 top = vec3_add(vec3_scale(T(tex, x0, y0), (real)(1 - ws)), vec3_scale(T(tex, x1, y0), (real)ws));
+    vec3 bottom = vec3_add(vec3_scale(T(tex, x0, y1), (real)(1 - wb)), vec3_scale(T(tex, x1, y1), (real)wb));
     return vec3_add(vec3_scale(top, (real)(1 - wt)), vec3_scale(bottom, (real)wt));
 }
 
@@ -401,6 +418,10 @@ static void expect_bilinear(const scene_texture *tex, mesh_uv uv)
                                 "so x0 = floor(x) with x = u W",
         [BILINEAR_PLUS_HALF] = "nearest's + 1/2 carried over: the left column is x0 = floor(x), not floor(x + 1/2)",
         [BILINEAR_S_SWAPPED] = "the weights along x swapped: T(x0) weighs 1 - s and T(x0 + 1) weighs s",
+        [BILINEAR_S_SWAPPED_TOP] = "the weights along x swapped in the top row: T(x0, y0) weighs 1 - s and T(x0 + 1, "
+                                   "y0) weighs s",
+        [BILINEAR_S_SWAPPED_BOTTOM] = "the weights along x swapped in the bottom row: T(x0, y0 + 1) weighs 1 - s "
+                                      "and T(x0 + 1, y0 + 1) weighs s",
         [BILINEAR_T_SWAPPED] = "the weights along y swapped: the top row (y0) weighs 1 - t, the bottom one t",
         [BILINEAR_T_IS_S] = "t = x - x0: t is the fraction along y, y - y0",
         [BILINEAR_BOTTOM_T] = "the bottom row blended with t: both rows blend along x with s",
@@ -408,6 +429,12 @@ static void expect_bilinear(const scene_texture *tex, mesh_uv uv)
         [BILINEAR_ROW_ABOVE] = "the second row is y0 - 1: the rows are y0 = floor(y) and y0 + 1",
         [BILINEAR_NO_WRAP] = "x0 + 1 or y0 + 1 not wrapped by texel_index: across the edge a RepeatTexture blends in "
                              "the first column (row)",
+        [BILINEAR_NO_WRAP_X] = "x0 + 1 not wrapped by texel_index: across the right edge a RepeatTexture blends "
+                               "in the first column",
+        [BILINEAR_NO_WRAP_Y] = "y0 + 1 not wrapped by texel_index: across the bottom edge a RepeatTexture blends "
+                               "in the first row",
+        [BILINEAR_UV_SWAPPED] = "u and v swapped: columns come from x = u W, rows from y = (1 - v) H "
+                                "(texture_image_texel(img, column, row))",
         [BILINEAR_NEAREST] = "the nearest texel: blend the four texels around (x, y)",
     };
     double x = coordinate(uv.u, tex->image.width), y = coordinate(1 - uv.v, tex->image.height);
