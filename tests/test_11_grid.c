@@ -97,15 +97,21 @@ static bool same_hit(bool found_list, const hit_record *a, bool found_grid, cons
            a->normal.z == b->normal.z;
 }
 
+/* The grid of `list` with the knobs `opt`; fails with the build's message. */
+static void build_grid(grid *g, const surface_list *list, grid_options opt)
+{
+    char err[256];
+    if (grid_build(g, list, opt, err, sizeof err) != 0)
+        fail_msg("grid_build: %s", err);
+}
+
 /* The grid of `list` with the given knobs answers every ray as the linear
  * scan did (`expected`, `found`); fails naming the first ray that differs. */
 static void compare_grid(const surface_list *list, grid_options opt, const ray *rays, const real *t_min,
                          const real *t_max, long n, const hit_record *expected, const bool *found)
 {
     grid g;
-    char err[256];
-    if (grid_build(&g, list, opt, err, sizeof err) != 0)
-        fail_msg("%s", err);
+    build_grid(&g, list, opt);
     for (long k = 0; k < n; k++) {
         hit_record b = {0};
         bool fb = grid_intersect(&g, rays[k], t_min[k], t_max[k], &b);
@@ -187,6 +193,28 @@ static void rays_free(ray_set *s)
     free(s->t_max);
 }
 
+/* Ray k of the set: p + t d for t in (0, infinity), as eye rays are. */
+static void set_ray(ray_set *s, long k, vec3 p, vec3 d)
+{
+    s->r[k] = (ray){p, d};
+    s->t_min[k] = 0;
+    s->t_max[k] = REAL_INFINITY;
+}
+
+/* The grid answers every ray of the set as the linear scan does, with every
+ * knob (compare_all_knobs); more than min_hits of the rays must hit
+ * something, so that hits were compared and not only misses.  Frees the
+ * rays and the list. */
+static void expect_as_linear(surface_list *list, ray_set *rays, long min_hits)
+{
+    long hits = compare_all_knobs(list, rays->r, rays->t_min, rays->t_max, rays->n);
+    if (hits <= min_hits)
+        fail_msg("only %ld of %ld rays hit something (more than %ld expected): too few hits were compared", hits,
+                 rays->n, min_hits);
+    rays_free(rays);
+    surface_list_free(list);
+}
+
 /* Random scenes of spheres and triangles, far from the origin, with both
  * sphere formulas and both triangle tests: rays from outside the scene, from
  * inside it, with t_min > 0 (rays that start part-way) and finite t_max
@@ -262,14 +290,9 @@ static void test_zero_components(void **state)
         c[first] = zeros[next_u64() % 2];
         if (k % 2)
             c[(first + 1) % 3] = zeros[next_u64() % 2];
-        rays.r[k] = (ray){p, vec3_make(c[0], c[1], c[2])};
-        rays.t_min[k] = 0;
-        rays.t_max[k] = REAL_INFINITY;
+        set_ray(&rays, k, p, vec3_make(c[0], c[1], c[2]));
     }
-    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
-    assert_true(hits > n / 10);
-    rays_free(&rays);
-    surface_list_free(&list);
+    expect_as_linear(&list, &rays, n / 10);
 }
 
 /* Origins outside the grid, on its faces, edges and corners, looking in,
@@ -283,8 +306,7 @@ static void test_origins_on_the_grid(void **state)
     const vec3 centre = {(real)17.3, (real)-4.1, (real)9.7};
     random_scene(&list, 300, centre, 3);
     grid g;
-    char err[256];
-    assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+    build_grid(&g, &list, grid_default_options());
     const vec3 lo = g.lo, hi = g.hi;
     grid_free(&g);
     const long n = 30000;
@@ -306,14 +328,9 @@ static void test_origins_on_the_grid(void **state)
         vec3 d = k % 2 ? vec3_sub(vec3_add(centre, vec3_scale(random_direction(), 3)), p) : random_direction();
         if (k % 5 == 0) /* along a face: one component zero */
             d = vec3_make(d.x, 0, d.z);
-        rays.r[k] = (ray){p, d};
-        rays.t_min[k] = 0;
-        rays.t_max[k] = REAL_INFINITY;
+        set_ray(&rays, k, p, d);
     }
-    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
-    assert_true(hits > n / 10);
-    rays_free(&rays);
-    surface_list_free(&list);
+    expect_as_linear(&list, &rays, n / 10);
 }
 
 /* Scenes flat in one axis (zero extent): triangles in the plane z = 2.7, and
@@ -337,8 +354,7 @@ static void test_flat_scenes(void **state)
             surface_list_add_triangle(&list, (triangle){v[0], v[1], v[2]}, k % 3, k);
         }
         grid g;
-        char err[256];
-        assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+        build_grid(&g, &list, grid_default_options());
         /* The flat axis has one cell, the others share the rest. */
         assert_int_equal(1, g.n[axis == 0 ? 2 : 0]);
         assert_true(g.n[1] > 4);
@@ -355,14 +371,9 @@ static void test_flat_scenes(void **state)
                 off = axis == 0 ? vec3_make(off.x, off.y, off.z * (real)1e-3)
                                 : vec3_make(off.x * (real)1e-3, off.y, off.z);
             vec3 p = vec3_add(target, vec3_scale(off, 8));
-            rays.r[k] = (ray){p, vec3_sub(target, p)};
-            rays.t_min[k] = 0;
-            rays.t_max[k] = REAL_INFINITY;
+            set_ray(&rays, k, p, vec3_sub(target, p));
         }
-        long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
-        assert_true(hits > n / 10);
-        rays_free(&rays);
-        surface_list_free(&list);
+        expect_as_linear(&list, &rays, n / 10);
     }
 }
 
@@ -383,14 +394,9 @@ static void test_huge_among_tiny(void **state)
     for (long k = 0; k < n; k++) {
         vec3 p = k % 2 ? uniform_vec(vec3_make(-8, -8, -8), vec3_make(8, 8, 8)) /* inside the big sphere */
                        : vec3_scale(random_direction(), 200);                  /* outside everything */
-        rays.r[k] = (ray){p, vec3_sub(uniform_vec(vec3_make(-6, -6, -6), vec3_make(6, 6, 6)), p)};
-        rays.t_min[k] = 0;
-        rays.t_max[k] = REAL_INFINITY;
+        set_ray(&rays, k, p, vec3_sub(uniform_vec(vec3_make(-6, -6, -6), vec3_make(6, 6, 6)), p));
     }
-    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
-    assert_true(hits > n / 2);
-    rays_free(&rays);
-    surface_list_free(&list);
+    expect_as_linear(&list, &rays, n / 2);
 }
 
 /* Rays that start inside a cell of a surface spanning many cells: inside
@@ -422,10 +428,7 @@ static void test_start_inside_spanning_cells(void **state)
         rays.t_min[k] = k % 4 < 2 ? 0 : (real)1e-6;
         rays.t_max[k] = k % 3 ? REAL_INFINITY : uniform(0, 3);
     }
-    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
-    assert_true(hits > n / 2);
-    rays_free(&rays);
-    surface_list_free(&list);
+    expect_as_linear(&list, &rays, n / 2);
 }
 
 /* Ties: two triangles in the plane z = 0 with whole-number corners, met by
@@ -449,8 +452,7 @@ static void test_ties_first_in_list(void **state)
                                                     (real)0.01},
                                     3, 2 + k);
         grid g;
-        char err[256];
-        assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+        build_grid(&g, &list, grid_default_options());
         assert_true(g.n[0] > 4 && g.n[2] > 1);
         /* From (-4, y, 1) across to (4.5, y', 0): through many cells of the big triangle first. */
         int small_hits = 0;
@@ -487,9 +489,8 @@ static void test_resolution(void **state)
         surface_list_add_sphere(&list, (sphere){uniform_vec(vec3_make(-4, 3, 0), vec3_make(4, 5, 4)), (real)0.01},
                                 0, k);
     grid g;
-    char err[256];
     grid_options opt = {.density = 8, .max_cells = 1L << 20, .mailbox = true};
-    assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+    build_grid(&g, &list, opt);
     /* 8000 cells for a box of volume ~64: s = 5 cells per unit: 40 x 10 x 20 */
     assert_int_equal(40, g.n[0]);
     assert_int_equal(10, g.n[1]);
@@ -500,11 +501,12 @@ static void test_resolution(void **state)
     assert_true(grid_memory(&g) >= (size_t)(g.n_cells + 1 + g.n_refs) * 4);
     grid_free(&g);
     opt.max_cells = 1000; /* the cap wins: about 1000 cells, in the same proportions */
-    assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+    build_grid(&g, &list, opt);
     assert_true(g.n_cells <= 1000 && g.n_cells >= 700);
     assert_true(g.n[0] >= 3 * g.n[1] && g.n[0] <= 5 * g.n[1]);
     grid_free(&g);
     opt.density = 0;
+    char err[256];
     assert_int_equal(-1, grid_build(&g, &list, opt, err, sizeof err));
     assert_non_null(strstr(err, "density"));
     surface_list_free(&list);
@@ -530,9 +532,8 @@ static void test_mailbox_counts(void **state)
                               0, 8);
     for (int m = 0; m < 2; m++) {
         grid g;
-        char err[256];
         grid_options opt = {.density = 1.25, .max_cells = 1000, .mailbox = m == 0};
-        assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+        build_grid(&g, &list, opt);
         assert_int_equal(10, g.n[0]); /* 9 surfaces x 1.25 ~ 11 cells for a box 10 x 1 x 1 */
         assert_int_equal(1, g.n[1]);
         assert_int_equal(1, g.n[2]);
@@ -556,15 +557,14 @@ static void test_empty_and_single(void **state)
     surface_list list;
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
     grid g;
-    char err[256];
-    assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+    build_grid(&g, &list, grid_default_options());
     hit_record hit = {.t = 42};
     const ray r = {{(real)0.3, (real)0.2, 10}, {0, 0, -1}};
     assert_false(grid_intersect(&g, r, 0, REAL_INFINITY, &hit));
     assert_true(hit.t == 42);
     grid_free(&g);
     surface_list_add_sphere(&list, (sphere){{0, 0, 0}, 1}, 0, 0);
-    assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+    build_grid(&g, &list, grid_default_options());
     assert_true(grid_intersect(&g, r, 0, REAL_INFINITY, &hit));
     hit_record expected;
     assert_true(surfaces_intersect(&list, r, 0, REAL_INFINITY, &expected));
@@ -714,9 +714,8 @@ static void test_dda_cells(void **state)
     for (int k = 0; k < 8; k++)
         surface_list_add_sphere(&list, (sphere){{k & 1 ? 3 : -2, k & 2 ? 4 : 1, k & 4 ? 1 : -1}, (real)1e-3}, 0, k);
     grid g;
-    char err[256];
     grid_options opt = {.density = 100, .max_cells = 1000, .mailbox = true};
-    assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+    build_grid(&g, &list, opt);
     assert_true(g.n[0] > 3 && g.n[1] > 3 && g.n[2] > 1);
     const real lo[3] = {g.lo.x, g.lo.y, g.lo.z}, cell[3] = {g.cell.x, g.cell.y, g.cell.z};
     int checked = 0;
@@ -770,6 +769,142 @@ static void test_dda_cells(void **state)
     assert_true(checked > 2000);
     grid_free(&g);
     surface_list_free(&list);
+}
+
+/* dda_step along one axis at a time: tiny spheres on a lattice 5 x 4 x 3
+ * (spacings 0.37, 0.61, 0.29, far from the origin), a grid over them with
+ * about two cells between neighbours, leaping off (so that only dda_step
+ * moves the ray); from each sphere's centre along +x, -x, +y, -y, +z and -z
+ * (the negative ones with -0 components), past its own sphere (t_min =
+ * twice the radius): the hit is the next sphere along that axis, as the
+ * linear scan finds.  A failure names the axis and the direction, which is
+ * what a wrong stride or plane gets wrong. */
+static void test_dda_axis_steps(void **state)
+{
+    (void)state;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+    const vec3 origin = {(real)123.4, (real)-56.7, (real)89.1}, spacing = {(real)0.37, (real)0.61, (real)0.29};
+    const int m[3] = {5, 4, 3};
+    const real radius = (real)0.02;
+    for (int k = 0; k < m[2]; k++)
+        for (int j = 0; j < m[1]; j++)
+            for (int i = 0; i < m[0]; i++)
+                surface_list_add_sphere(&list,
+                                        (sphere){vec3_add(origin, vec3_make((real)i * spacing.x, (real)j * spacing.y,
+                                                                            (real)k * spacing.z)),
+                                                 radius},
+                                        0, i + m[0] * (j + m[1] * k));
+    grid g;
+    build_grid(&g, &list, (grid_options){.density = 8, .max_cells = 1L << 20, .mailbox = true, .cull = true});
+    assert_true(g.n[0] > m[0] && g.n[1] > m[1] && g.n[2] > m[2]); /* more cells than spheres along every axis */
+    const vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const long stride[3] = {1, g.n[0], (long)g.n[0] * g.n[1]};
+    for (int s = 0; s < list.n; s++) {
+        const int at[3] = {s % m[0], s / m[0] % m[1], s / (m[0] * m[1])};
+        for (int a = 0; a < 3; a++)
+            for (int sign = -1; sign <= 1; sign += 2) {
+                if (at[a] + sign < 0 || at[a] + sign >= m[a])
+                    continue;
+                ray r = {list.items[s].sphere.center, sign > 0 ? axes[a] : vec3_neg(axes[a])};
+                hit_record want, got;
+                bool fw = surfaces_intersect(&list, r, 2 * radius, REAL_INFINITY, &want);
+                bool fg = grid_intersect(&g, r, 2 * radius, REAL_INFINITY, &got);
+                assert_true(fw && want.surface == s + sign * (a == 0 ? 1 : a == 1 ? m[0] : m[0] * m[1]));
+                if (!same_hit(fw, &want, fg, &got))
+                    fail_msg("grid_intersect(ray from sphere %d's centre (%.17g, %.17g, %.17g) along %c%c, t_min = "
+                             "%g) through a grid of %d x %d x %d cells\n    expected sphere %d at t = %.17g\n"
+                             "    got      %s %d at t = %.17g\n    likely mistake: dda_step along %c with step %+d: "
+                             "the cell moves by step stride_%c = %+ld (cell = i + n_x (j + n_y k)), the index i_%c by "
+                             "step, and next_%c is the crossing of plane i_%c%s, recomputed each step",
+                             s, (double)r.p.x, (double)r.p.y, (double)r.p.z, sign > 0 ? '+' : '-', "xyz"[a],
+                             (double)(2 * radius), g.n[0], g.n[1], g.n[2], want.surface, (double)want.t,
+                             fg ? "sphere" : "no hit, surface", fg ? got.surface : -1, fg ? (double)got.t : 0.0,
+                             "xyz"[a], sign, "xyz"[a], sign * stride[a], "xyz"[a], "xyz"[a], "xyz"[a],
+                             sign > 0 ? " + 1" : "");
+            }
+    }
+    grid_free(&g);
+    surface_list_free(&list);
+}
+
+/* next_a is computed from the plane at every step, not by adding a t step
+ * per cell: the sum gathers one rounding per cell, and after 10^5 cells it
+ * is off by far more than the margin (64 eps |coordinates|) that keeps the
+ * march safe.  A long thin grid, over 10^5 cells along x and one across (two
+ * tiny spheres at x = 0 and x = L, L a bit over 1000, off the x axis):
+ * rays along +x and -x meet, just past a cell boundary b far along, a small
+ * sphere B (hit 4 margins past b) and beyond it a triangle A that spans the
+ * boundary (hit 16 margins past b), so it is listed in the cell before b
+ * too.  The closest is B, in the cells after b only; a march whose next_x
+ * lies beyond the boundary by more than 16 margins stops in the cell
+ * before b with A.  Three lengths L (cell sizes whose rounding goes either
+ * way), five boundaries each, both directions. */
+static void test_dda_no_accumulation(void **state)
+{
+    (void)state;
+    const vec3 off = {(real)0.5, (real)-3.25, (real)7.5};
+    enum { PLANES = 5 };
+    for (int variant = 0; variant < 3; variant++) {
+        const real L = (real)(1000 + 37.3 * variant);
+        /* The grid's box and resolution depend on the surfaces' box and
+         * count only: learn them from the end spheres and stand-ins. */
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+        surface_list_add_sphere(&list, (sphere){off, (real)1e-3}, 0, 0);
+        surface_list_add_sphere(&list, (sphere){vec3_add(off, vec3_make(L, 0, 0)), (real)1e-3}, 0, 1);
+        for (int k = 0; k < 4 * PLANES; k++)
+            surface_list_add_sphere(&list, (sphere){off, (real)1e-5}, 0, 2 + k);
+        const grid_options opt = {.density = 5000, .max_cells = 1L << 20, .mailbox = true, .cull = true};
+        grid g;
+        build_grid(&g, &list, opt);
+        assert_true(g.n[0] > 100000 && g.n[1] == 1 && g.n[2] == 1);
+        const long cells = g.n[0];
+        const real lo = g.lo.x, cell = g.cell.x, margin = g.margin;
+        grid_free(&g);
+        surface_list_free(&list);
+        surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+        surface_list_add_sphere(&list, (sphere){off, (real)1e-3}, 0, 0);
+        surface_list_add_sphere(&list, (sphere){vec3_add(off, vec3_make(L, 0, 0)), (real)1e-3}, 0, 1);
+        const long planes[PLANES] = {cells / 3, cells / 2, (2 * cells) / 3, cells - 2000, cells - 1000};
+        ray rays[2 * PLANES];
+        for (int q = 0; q < 2 * PLANES; q++) {
+            const int dir = q % 2 ? -1 : 1; /* +x or -x */
+            const long plane = dir > 0 ? planes[q / 2] : cells - planes[q / 2];
+            const real b = lo + (real)plane * cell;
+            /* its own place across, inside the box's 2e-3 */
+            const real y = off.y + (real)(q - PLANES) * (real)1.5e-4, z = off.z + (real)(q % 3 - 1) * (real)2e-4;
+            const real xB = b + dir * 4 * margin, xA = b + dir * 16 * margin, rB = (real)1e-5, w = (real)5e-5;
+            surface_list_add_sphere(&list, (sphere){vec3_make(xB + dir * rB, y, z), rB}, 0, 2 + 2 * q);
+            /* A: in the plane x - xA = c (y' - y) through (xA, y, z), reaching a cell and 32 margins
+             * (one cell in double, many in float) either side of xA */
+            const real c = real_fmax(cell, 32 * margin) / w;
+            triangle A = {{xA - c * w, y - w, z - 2 * w}, {xA - c * w, y - w, z + 2 * w}, {xA + 2 * c * w, y + 2 * w, z}};
+            surface_list_add_triangle(&list, A, 0, 3 + 2 * q);
+            /* from inside the box, past the end sphere (radius 1e-3) */
+            rays[q] = (ray){vec3_make(dir > 0 ? off.x + (real)0.01 : off.x + L - (real)0.01, y, z),
+                            vec3_make((real)dir, 0, 0)};
+        }
+        build_grid(&g, &list, opt);
+        assert_true(g.n[0] == cells && g.lo.x == lo && g.cell.x == cell); /* the same grid */
+        for (int q = 0; q < 2 * PLANES; q++) {
+            hit_record want, got;
+            bool fw = surfaces_intersect(&list, rays[q], 0, REAL_INFINITY, &want);
+            bool fg = grid_intersect(&g, rays[q], 0, REAL_INFINITY, &got);
+            assert_true(fw && want.surface == 2 + 2 * q); /* B is the closest */
+            if (!same_hit(fw, &want, fg, &got))
+                fail_msg("grid_intersect(ray from (%.17g, %.17g, %.17g) along %cx) through %ld cells of %.17g along "
+                         "x\n    expected the small sphere (surface %d) at t = %.17g, just past the boundary of cell "
+                         "%ld\n    got      %s %d at t = %.17g\n    likely mistake: next_x gathered rounding: compute "
+                         "it from the plane at each step (crossing(g, a, plane, p, inv_d)), not by adding a t step "
+                         "per cell",
+                         (double)rays[q].p.x, (double)rays[q].p.y, (double)rays[q].p.z, q % 2 ? '-' : '+', cells,
+                         (double)cell, want.surface, (double)want.t, q % 2 ? cells - planes[q / 2] : planes[q / 2],
+                         fg ? "surface" : "no hit, surface", fg ? got.surface : -1, fg ? (double)got.t : 0.0);
+        }
+        grid_free(&g);
+        surface_list_free(&list);
+    }
 }
 
 /* ---- the Cornell corpus -------------------------------------------------------------------- */
@@ -873,6 +1008,8 @@ static void test_builtin_scenes_as_chapter_10(void **state)
 static const graded_test tests[] = {
     GRADED(test_cell_range, 4),
     GRADED(test_dda_cells, 4),
+    GRADED(test_dda_axis_steps, 2),
+    GRADED(test_dda_no_accumulation, 1),
     GRADED(test_random_scenes, 3),
     GRADED(test_zero_components, 2),
     GRADED(test_origins_on_the_grid, 2),
