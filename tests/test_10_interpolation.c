@@ -36,21 +36,58 @@ static vec3 random_vec3(double size)
 
 /* ---- barycentric interpolation ---------------------------------------------------------------- */
 
+/* interpolate_vec3(A_a, A_b, A_c, beta, gamma) is `expected` within
+ * `tolerance`; a failure names the input and the mistake whose value was got. */
+static void expect_interpolate(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma, vec3 expected, double tolerance)
+{
+    vec3 got = interpolate_vec3(A_a, A_b, A_c, beta, gamma);
+    real alpha = 1 - beta - gamma;
+#define MIX(wa, wb, wc) vec3_add(vec3_add(vec3_scale(A_a, (wa)), vec3_scale(A_b, (wb))), vec3_scale(A_c, (wc)))
+    const char *wrong_vertex = "the weights belong to the wrong vertices: alpha A_a + beta A_b + gamma A_c";
+    const suspect_vec3 mistakes[] = {
+        {MIX(alpha, gamma, beta), "beta and gamma swapped: beta weighs vertex b, gamma vertex c"},
+        {MIX(beta, alpha, gamma), "alpha and beta swapped: alpha = 1 - beta - gamma weighs vertex a"},
+        {MIX(gamma, beta, alpha), "alpha and gamma swapped: alpha = 1 - beta - gamma weighs vertex a"},
+        {MIX(gamma, alpha, beta), wrong_vertex},
+        {MIX(beta, gamma, alpha), wrong_vertex},
+        {MIX(1 - beta, beta, gamma), "alpha = 1 - beta: the weight of vertex a is 1 - beta - gamma"},
+        {MIX(1, beta, gamma), "vertex a's weight left out: A_a is scaled by alpha = 1 - beta - gamma"},
+        {MIX(1 - gamma, beta, gamma), "alpha = 1 - gamma: the weight of vertex a is 1 - beta - gamma"},
+        {MIX(beta + gamma, beta, gamma), "alpha = beta + gamma: it is 1 - beta - gamma"},
+        {MIX(0, beta, gamma), "vertex a left out: A = alpha A_a + beta A_b + gamma A_c"},
+        {vec3_scale(MIX(alpha, beta, gamma), (real)(1.0 / 3)),
+         "divided by 3: the weights already sum to 1 (alpha + beta + gamma = 1)"},
+        {A_a, "A_a whatever beta and gamma: the exercise is still to do"},
+    };
+#undef MIX
+    assert_vec3_why(expected, got, tolerance,
+                    describe("interpolate_vec3(A_a = (%.9g, %.9g, %.9g), A_b = (%.9g, %.9g, %.9g), A_c = (%.9g, %.9g, "
+                             "%.9g), beta = %.17g, gamma = %.17g)",
+                             (double)A_a.x, (double)A_a.y, (double)A_a.z, (double)A_b.x, (double)A_b.y, (double)A_b.z,
+                             (double)A_c.x, (double)A_c.y, (double)A_c.z, (double)beta, (double)gamma),
+                    "A = (1 - beta - gamma) A_a + beta A_b + gamma A_c", mistakes, sizeof mistakes / sizeof mistakes[0]);
+}
+
 /* At the vertices the attribute is the vertex's own, exactly (weights 1, 0,
  * 0); at an edge's midpoint the mean of its two ends; at the centroid the
- * mean of all three. */
+ * mean of all three; at an inexact point inside, the blend. */
 static void test_interpolate_vertices_edges(void **state)
 {
     (void)state;
     vec3 A_a = {37.25, -12.5, 53.125}, A_b = {-3.75, 8.5, 0.625}, A_c = {1e3, -7e2, 2.5e2};
-    assert_vec3_close(A_a, interpolate_vec3(A_a, A_b, A_c, 0, 0), 0);
-    assert_vec3_close(A_b, interpolate_vec3(A_a, A_b, A_c, 1, 0), 0);
-    assert_vec3_close(A_c, interpolate_vec3(A_a, A_b, A_c, 0, 1), 0);
+    expect_interpolate(A_a, A_b, A_c, 0, 0, A_a, 0);
+    expect_interpolate(A_a, A_b, A_c, 1, 0, A_b, 0);
+    expect_interpolate(A_a, A_b, A_c, 0, 1, A_c, 0);
     vec3 mid_ab = vec3_scale(vec3_add(A_a, A_b), (real)0.5), mid_bc = vec3_scale(vec3_add(A_b, A_c), (real)0.5);
-    assert_vec3_close(mid_ab, interpolate_vec3(A_a, A_b, A_c, 0.5, 0), TOL(60));
-    assert_vec3_close(mid_bc, interpolate_vec3(A_a, A_b, A_c, 0.5, 0.5), TOL(1000));
+    expect_interpolate(A_a, A_b, A_c, 0.5, 0, mid_ab, TOL(60));
+    expect_interpolate(A_a, A_b, A_c, 0.5, 0.5, mid_bc, TOL(1000));
     vec3 centroid = vec3_scale(vec3_add(vec3_add(A_a, A_b), A_c), (real)(1.0 / 3));
-    assert_vec3_close(centroid, interpolate_vec3(A_a, A_b, A_c, (real)(1.0 / 3), (real)(1.0 / 3)), TOL(1000));
+    expect_interpolate(A_a, A_b, A_c, (real)(1.0 / 3), (real)(1.0 / 3), centroid, TOL(1000));
+    /* beta = 0.2, gamma = 0.7, alpha = 0.1 (inexact in binary), in double:
+     * three products and two sums of terms up to 700, a few roundings of 1000 */
+    vec3 blend = vec3_make((real)(0.1 * 37.25 + 0.2 * -3.75 + 0.7 * 1e3), (real)(0.1 * -12.5 + 0.2 * 8.5 + 0.7 * -7e2),
+                           (real)(0.1 * 53.125 + 0.2 * 0.625 + 0.7 * 2.5e2));
+    expect_interpolate(A_a, A_b, A_c, (real)0.2, (real)0.7, blend, TOL(1000));
 }
 
 /* Interpolating the vertex POSITIONS gives back the point itself: chapter
@@ -67,7 +104,7 @@ static void test_interpolate_random(void **state)
         real beta = between(0, 1), gamma = between(0, 1 - beta);
         vec3 point = vec3_add(a, vec3_add(vec3_scale(vec3_sub(b, a), beta), vec3_scale(vec3_sub(c, a), gamma)));
         /* each term rounds relative to |offset| + 3 <= ~176 */
-        assert_vec3_close(point, interpolate_vec3(a, b, c, beta, gamma), TOL(200));
+        expect_interpolate(a, b, c, beta, gamma, point, TOL(200));
         vec3 A[3] = {random_vec3(1), random_vec3(1), random_vec3(1)};
         vec3 B[3] = {random_vec3(1), random_vec3(1), random_vec3(1)};
         vec3 sum = vec3_add(interpolate_vec3(A[0], A[1], A[2], beta, gamma),
@@ -95,37 +132,87 @@ static void test_interpolate_uv(void **state)
 
 /* ---- texel indices: repeat and clamp ------------------------------------------------------------- */
 
+static const char *kind_name(texture_kind kind) { return kind == TEXTURE_REPEAT ? "RepeatTexture" : "ClampTexture"; }
+
+/* The texel index i reads, computed another way than the exercise: the
+ * floor of i / n, and min / max. */
+static long long wrapped(texture_kind kind, long long i, int n)
+{
+    if (kind == TEXTURE_REPEAT)
+        return i - n * (i >= 0 ? i / n : -((-i + n - 1) / n));
+    return i < 0 ? 0 : i > n - 1 ? n - 1 : i;
+}
+
+/* texel_index(kind, i, n) is `expected`; a failure names the mistake. */
+static void expect_index(texture_kind kind, long long i, int n, long long expected)
+{
+    int got = texel_index(kind, i, n);
+    long long r = i % n;                                                           /* C's remainder */
+    long long as_int = (long long)(int32_t)(uint32_t)(unsigned long long)i % n; /* i converted to int first */
+    const suspect repeat_mistakes[] = {
+        {(double)r, "C's % keeps the sign of i (-1 % n is -1): add n to a negative remainder"},
+        {(double)(r < 0 ? -r : r), "the remainder's absolute value mirrors the texture: add n to a negative remainder"},
+        {(double)(r + n), "i % n + n is n too many for i >= 0: take it mod n again, or add n only when negative"},
+        {(double)(r < 0 ? r + n - 1 : r), "a negative remainder plus n - 1: -1 must become n - 1, so add n"},
+        {(double)(as_int < 0 ? as_int + n : as_int), "i converted to int before the %: i is a long long and may be "
+                                                      "far beyond an int's range"},
+        {(double)wrapped(TEXTURE_CLAMP, i, n), "clamped: a RepeatTexture wraps (i mod n)"},
+    };
+    const suspect clamp_mistakes[] = {
+        {(double)n, "clamped to n (or only i > n clamped): the last texel is n - 1, and every i >= n reads it"},
+        {(double)i, i < 0 ? "a negative i is not clamped: it reads texel 0"
+                          : "i >= n is not clamped (i > n lets i = n through): it reads texel n - 1"},
+        {(double)wrapped(TEXTURE_REPEAT, i, n), "wrapped: a ClampTexture clamps to [0, n - 1] (tex->kind decides)"},
+        {(double)(n > 1 ? n - 2 : 0), "clamped to n - 2: the last texel is n - 1"},
+    };
+    if (kind == TEXTURE_REPEAT)
+        assert_close_why(expected, got, 0, describe("texel_index(%s, i = %lld, n = %d)", kind_name(kind), i, n),
+                         "RepeatTexture: i mod n in [0, n), also for negative i", repeat_mistakes,
+                         sizeof repeat_mistakes / sizeof repeat_mistakes[0]);
+    else
+        assert_close_why(expected, got, 0, describe("texel_index(%s, i = %lld, n = %d)", kind_name(kind), i, n),
+                         "ClampTexture: i clamped to [0, n - 1]", clamp_mistakes,
+                         sizeof clamp_mistakes / sizeof clamp_mistakes[0]);
+}
+
 /* RepeatTexture: i mod n in [0, n), negative i included (-1 is the last
- * column), far beyond the image too; against i - n floor(i / n). */
+ * column), far beyond the image too, beyond an int's range (2^40 converted
+ * to int is 0, but 2^40 mod 7 is 2); against i - n floor(i / n). */
 static void test_texel_index_repeat(void **state)
 {
     (void)state;
-    assert_int_equal(0, texel_index(TEXTURE_REPEAT, 0, 7));
-    assert_int_equal(6, texel_index(TEXTURE_REPEAT, 6, 7));
-    assert_int_equal(0, texel_index(TEXTURE_REPEAT, 7, 7));
-    assert_int_equal(6, texel_index(TEXTURE_REPEAT, -1, 7));
-    assert_int_equal(0, texel_index(TEXTURE_REPEAT, -7, 7));
-    assert_int_equal(0, texel_index(TEXTURE_REPEAT, 12345, 1));
+    expect_index(TEXTURE_REPEAT, 0, 7, 0);
+    expect_index(TEXTURE_REPEAT, 6, 7, 6);
+    expect_index(TEXTURE_REPEAT, 7, 7, 0);
+    expect_index(TEXTURE_REPEAT, -1, 7, 6);
+    expect_index(TEXTURE_REPEAT, -7, 7, 0);
+    expect_index(TEXTURE_REPEAT, -9, 7, 5);
+    expect_index(TEXTURE_REPEAT, 12345, 1, 0);
     for (long long i = -1000; i <= 1000; i += 37)
         for (int n = 1; n < 300; n += 41) {
             long long expected = i - n * (long long)floor((double)i / n);
-            assert_int_equal(expected, texel_index(TEXTURE_REPEAT, i, n));
+            expect_index(TEXTURE_REPEAT, i, n, expected);
         }
-    assert_int_equal(1099511627776LL % 256, texel_index(TEXTURE_REPEAT, 1099511627776LL, 256));
-    assert_int_equal(256 - 1099511627777LL % 256, texel_index(TEXTURE_REPEAT, -1099511627777LL, 256));
+    expect_index(TEXTURE_REPEAT, 1099511627776LL, 256, 1099511627776LL % 256);
+    expect_index(TEXTURE_REPEAT, -1099511627777LL, 256, 256 - 1099511627777LL % 256);
+    expect_index(TEXTURE_REPEAT, 1099511627776LL, 7, 2);             /* 2^40 = 8^13 2 = 2 mod 7 */
+    expect_index(TEXTURE_REPEAT, 3 * 1099511627776LL + 5, 300, 233);  /* 2^40 = 76 mod 300: 3 76 + 5 */
+    expect_index(TEXTURE_REPEAT, -3 * 1099511627776LL - 5, 300, 67); /* 300 - 233 */
 }
 
 /* ClampTexture: indices before the image read its first texel, beyond it its last. */
 static void test_texel_index_clamp(void **state)
 {
     (void)state;
-    assert_int_equal(0, texel_index(TEXTURE_CLAMP, -1, 7));
-    assert_int_equal(0, texel_index(TEXTURE_CLAMP, -1099511627776LL, 7));
-    assert_int_equal(3, texel_index(TEXTURE_CLAMP, 3, 7));
-    assert_int_equal(6, texel_index(TEXTURE_CLAMP, 6, 7));
-    assert_int_equal(6, texel_index(TEXTURE_CLAMP, 7, 7));
-    assert_int_equal(6, texel_index(TEXTURE_CLAMP, 1099511627776LL, 7));
-    assert_int_equal(0, texel_index(TEXTURE_CLAMP, 5, 1));
+    expect_index(TEXTURE_CLAMP, -1, 7, 0);
+    expect_index(TEXTURE_CLAMP, -1099511627776LL, 7, 0);
+    expect_index(TEXTURE_CLAMP, 3, 7, 3);
+    expect_index(TEXTURE_CLAMP, 6, 7, 6);
+    expect_index(TEXTURE_CLAMP, 7, 7, 6);
+    expect_index(TEXTURE_CLAMP, 8, 7, 6);
+    expect_index(TEXTURE_CLAMP, 1099511627776LL, 7, 6);
+    expect_index(TEXTURE_CLAMP, 5, 1, 0);
+    expect_index(TEXTURE_CLAMP, -1, 1, 0);
 }
 
 /* ---- texture lookups -------------------------------------------------------------------------- */
@@ -146,12 +233,60 @@ static scene_texture numbered(texture_kind kind)
     return (scene_texture){.kind = kind, .image = {.width = TW, .height = TH, .rgb = texels}};
 }
 
-/* Which texel a colour of `numbered` is: column and row. */
-static void assert_texel(int x, int y, color c)
+/* The colour of texel (x, y) of `numbered`. */
+static vec3 numbered_colour(long long x, long long y)
 {
-    assert_close(10 * x / 255.0, c.r, TOL(1));
-    assert_close(10 * y / 255.0, c.g, TOL(1));
-    assert_close(7 / 255.0, c.b, TOL(1));
+    return vec3_make((real)(10 * x) / 255, (real)(10 * y) / 255, (real)7 / 255);
+}
+
+/* The continuous texel coordinate s n as texture.c computes it (in real),
+ * held within +-2^40, NaN as 0: the rounding is then the same. */
+static double coordinate(real s, int n)
+{
+    real x = s * (real)n;
+    double limit = 1099511627776.0;
+    return x != x ? 0 : fmax(-limit, fmin(limit, (double)x));
+}
+
+/* texture_nearest(tex, uv) on a `numbered` texture reads texel (x, y); a
+ * failure names the texel read (its colour says which) and the mistake. */
+static void expect_nearest(const scene_texture *tex, mesh_uv uv, int x, int y)
+{
+    color c = texture_nearest(tex, uv);
+    texture_kind k = tex->kind, other = k == TEXTURE_REPEAT ? TEXTURE_CLAMP : TEXTURE_REPEAT;
+    double X = coordinate(uv.u, TW), Y = coordinate(1 - uv.v, TH);
+    long long cx = (long long)(X + 0.5), cy = (long long)(Y + 0.5); /* the course's rounding */
+    long long col = wrapped(k, cx, TW), row = wrapped(k, cy, TH);
+    const char *half = "dropped the fraction without adding 1/2 first: the nearest texel is (long long)(x + 1/2)";
+    const suspect_vec3 mistakes[] = {
+        {numbered_colour(row, col), "u and v swapped: the column comes from x = u W, the row from y = (1 - v) H "
+                                    "(texture_image_texel(img, column, row))"},
+        {numbered_colour(wrapped(k, (long long)X, TW), wrapped(k, (long long)Y, TH)), half},
+        {numbered_colour(wrapped(k, (long long)X, TW), row), half},
+        {numbered_colour(col, wrapped(k, (long long)Y, TH)), half},
+        {numbered_colour(col, TH - 1 - row), "v flipped twice: y = (1 - v) H counts rows from the top already"},
+        {numbered_colour(col, wrapped(k, (long long)(coordinate(uv.v, TH) + 0.5), TH)),
+         "v not flipped: rows count down from the top, y = (1 - v) H"},
+        {numbered_colour(wrapped(k, (long long)floor(X + 0.5), TW), wrapped(k, (long long)floor(Y + 0.5), TH)),
+         "floor(x + 1/2): the course's solution drops the fraction, (long long)(x + 1/2), which rounds towards zero "
+         "and differs for x < -1/2"},
+        {numbered_colour(wrapped(k, (long long)(X - 0.5), TW), wrapped(k, (long long)(Y - 0.5), TH)),
+         "x - 1/2: the nearest texel is (long long)(x + 1/2)"},
+        {numbered_colour(col, wrapped(k, cy, TW)), "the row wrapped by the width: rows wrap by the height"},
+        {numbered_colour(wrapped(k, cx, TH), row), "the column wrapped by the height: columns wrap by the width"},
+        {numbered_colour(wrapped(other, cx, TW), wrapped(other, cy, TH)),
+         "wrapped the other way: tex->kind says repeat or clamp (texel_index)"},
+        {numbered_colour(0, 0), fabs(X) > 2147483647.0 || fabs(Y) > 2147483647.0
+                                    ? "texel (0, 0) for a coordinate beyond an int's range: the index converted to "
+                                      "int overflowed; keep it a long long"
+                                    : "texel (0, 0) whatever (u, v): the exercise is still to do"},
+    };
+    assert_vec3_why(numbered_colour(x, y), vec3_make(c.r, c.g, c.b), TOL(1),
+                    describe("texture_nearest(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = %.9g; "
+                             "texel (i, j) is (10 i, 10 j, 7) / 255: expected texel (%d, %d)",
+                             kind_name(k), TW, TH, (double)uv.u, (double)uv.v, X, Y, x, y),
+                    "column (long long)(x + 1/2), row (long long)(y + 1/2), each wrapped by texel_index", mistakes,
+                    sizeof mistakes / sizeof mistakes[0]);
 }
 
 /* Nearest: texel (x, y) is centred on u = x / W, v = 1 - y / H (v up, rows
@@ -168,21 +303,19 @@ static void test_nearest(void **state)
                     if (x + du < 0 || y - du < 0)
                         continue; /* (before the first centre: see test_nearest_quirk) */
                     mesh_uv uv = {(real)((x + du) / TW), (real)(1 - (y - du) / TH)};
-                    assert_texel(x, y, texture_nearest(&tex, uv));
+                    expect_nearest(&tex, uv, x, y);
                 }
             }
         /* v = 1 is the top row, v just above 0 the bottom row */
-        assert_texel(0, 0, texture_nearest(&tex, (mesh_uv){0, 1}));
-        assert_texel(2, TH - 1, texture_nearest(&tex, (mesh_uv){(real)(2.0 / TW), (real)0.2}));
+        expect_nearest(&tex, (mesh_uv){0, 1}, 0, 0);
+        expect_nearest(&tex, (mesh_uv){(real)(2.0 / TW), (real)0.2}, 2, TH - 1);
         /* beyond the right edge: column 0 again, or the last column */
-        assert_texel(kind == TEXTURE_REPEAT ? 1 : TW - 1, 1,
-                     texture_nearest(&tex, (mesh_uv){(real)(1 + 1.1 / TW), (real)(1 - 1.0 / TH)}));
+        expect_nearest(&tex, (mesh_uv){(real)(1 + 1.1 / TW), (real)(1 - 1.0 / TH)}, kind == TEXTURE_REPEAT ? 1 : TW - 1, 1);
         /* u + 3, v - 2 read what u, v read when repeated */
         if (kind == TEXTURE_REPEAT)
-            assert_texel(3, 2, texture_nearest(&tex, (mesh_uv){(real)(3 + 3.2 / TW), (real)(-2 + 1 - 2.1 / TH)}));
+            expect_nearest(&tex, (mesh_uv){(real)(3 + 3.2 / TW), (real)(-2 + 1 - 2.1 / TH)}, 3, 2);
         else
-            assert_texel(TW - 1, TH - 1,
-                         texture_nearest(&tex, (mesh_uv){(real)(3 + 3.2 / TW), (real)(-2 + 1 - 2.1 / TH)}));
+            expect_nearest(&tex, (mesh_uv){(real)(3 + 3.2 / TW), (real)(-2 + 1 - 2.1 / TH)}, TW - 1, TH - 1);
     }
 }
 
@@ -197,20 +330,127 @@ static void test_nearest_quirk(void **state)
     (void)state;
     scene_texture tex = numbered(TEXTURE_REPEAT);
     real v = (real)(1 - 1.0 / TH); /* row 1 */
-    assert_texel(0, 1, texture_nearest(&tex, (mesh_uv){(real)(-0.3 / TW), v}));
-    assert_texel(0, 1, texture_nearest(&tex, (mesh_uv){(real)(-0.8 / TW), v}));
-    assert_texel(0, 1, texture_nearest(&tex, (mesh_uv){(real)(-1.4 / TW), v}));
-    assert_texel(TW - 1, 1, texture_nearest(&tex, (mesh_uv){(real)(-1.7 / TW), v}));
-    assert_texel(TW - 1, 1, texture_nearest(&tex, (mesh_uv){(real)(-2.4 / TW), v}));
-    assert_texel(TW - 2, 1, texture_nearest(&tex, (mesh_uv){(real)(-2.6 / TW), v}));
+    expect_nearest(&tex, (mesh_uv){(real)(-0.3 / TW), v}, 0, 1);
+    expect_nearest(&tex, (mesh_uv){(real)(-0.8 / TW), v}, 0, 1);
+    expect_nearest(&tex, (mesh_uv){(real)(-1.4 / TW), v}, 0, 1);
+    expect_nearest(&tex, (mesh_uv){(real)(-1.7 / TW), v}, TW - 1, 1);
+    expect_nearest(&tex, (mesh_uv){(real)(-2.4 / TW), v}, TW - 1, 1);
+    expect_nearest(&tex, (mesh_uv){(real)(-2.6 / TW), v}, TW - 2, 1);
     /* rows the same way: v above 1 + 1/(2H) */
-    assert_texel(2, 0, texture_nearest(&tex, (mesh_uv){(real)(2.0 / TW), (real)(1 + 1.2 / TH)}));
-    assert_texel(2, TH - 1, texture_nearest(&tex, (mesh_uv){(real)(2.0 / TW), (real)(1 + 1.7 / TH)}));
+    expect_nearest(&tex, (mesh_uv){(real)(2.0 / TW), (real)(1 + 1.2 / TH)}, 2, 0);
+    expect_nearest(&tex, (mesh_uv){(real)(2.0 / TW), (real)(1 + 1.7 / TH)}, 2, TH - 1);
     /* NaN and huge coordinates read something, without undefined behaviour */
-    assert_texel(0, 0, texture_nearest(&tex, (mesh_uv){(real)NAN, (real)1}));
+    expect_nearest(&tex, (mesh_uv){(real)NAN, (real)1}, 0, 0);
     scene_texture clamp = numbered(TEXTURE_CLAMP);
-    assert_texel(TW - 1, 0, texture_nearest(&clamp, (mesh_uv){(real)1e30, (real)1e30}));
-    assert_texel(0, TH - 1, texture_nearest(&clamp, (mesh_uv){(real)-1e30, (real)-1e30}));
+    expect_nearest(&clamp, (mesh_uv){(real)1e30, (real)1e30}, TW - 1, 0);
+    expect_nearest(&clamp, (mesh_uv){(real)-1e30, (real)-1e30}, 0, TH - 1);
+}
+
+/* What a bilinear lookup gives, and what some mistakes give instead. */
+typedef enum {
+    BILINEAR_RIGHT,
+    BILINEAR_MINUS_HALF, /* centres at x + 1/2: x0 = floor(x - 1/2) */
+    BILINEAR_PLUS_HALF,  /* nearest's + 1/2: x0 = floor(x + 1/2) */
+    BILINEAR_S_SWAPPED,  /* T(x0) weighs s, T(x0 + 1) weighs 1 - s */
+    BILINEAR_S_SWAPPED_TOP,
+    BILINEAR_S_SWAPPED_BOTTOM,
+    BILINEAR_T_SWAPPED,
+    BILINEAR_T_IS_S,     /* t = x - x0 */
+    BILINEAR_BOTTOM_T,   /* the bottom row blended with t instead of s */
+    BILINEAR_TRUNCATE,   /* x0 = (long long)x: towards zero */
+    BILINEAR_ROW_ABOVE,  /* the second row is y0 - 1 */
+    BILINEAR_NO_WRAP,    /* x0 + 1 and y0 + 1 not wrapped: the edge texel again */
+    BILINEAR_NO_WRAP_X,
+    BILINEAR_NO_WRAP_Y,
+    BILINEAR_UV_SWAPPED, /* texel (row, column) */
+    BILINEAR_NEAREST,    /* the nearest texel */
+    BILINEAR_VARIANTS
+} bilinear_variant;
+
+static vec3 texel_vec3(const scene_texture *tex, long long x, long long y)
+{
+    color c = texture_image_texel(&tex->image, (int)wrapped(tex->kind, x, tex->image.width),
+                                  (int)wrapped(tex->kind, y, tex->image.height));
+    return vec3_make(c.r, c.g, c.b);
+}
+
+/* The texel at (x, y) read with the column and the row swapped, each kept in range. */
+static vec3 texel_swapped(const scene_texture *tex, long long x, long long y)
+{
+    int W = tex->image.width, H = tex->image.height;
+    color c = texture_image_texel(&tex->image, (int)(wrapped(tex->kind, y, H) % W), (int)(wrapped(tex->kind, x, W) % H));
+    return vec3_make(c.r, c.g, c.b);
+}
+
+static vec3 bilinear_as(const scene_texture *tex, double x, double y, bilinear_variant v)
+{
+    int W = tex->image.width, H = tex->image.height;
+    if (v == BILINEAR_NEAREST)
+        return texel_vec3(tex, (long long)(x + 0.5), (long long)(y + 0.5));
+    double shift = v == BILINEAR_MINUS_HALF ? -0.5 : v == BILINEAR_PLUS_HALF ? 0.5 : 0;
+    x += shift, y += shift;
+    double fx = v == BILINEAR_TRUNCATE ? trunc(x) : floor(x), fy = v == BILINEAR_TRUNCATE ? trunc(y) : floor(y);
+    double s = x - fx, t = v == BILINEAR_T_IS_S ? s : y - fy;
+    long long x0 = (long long)fx, y0 = (long long)fy, x1 = x0 + 1, y1 = v == BILINEAR_ROW_ABOVE ? y0 - 1 : y0 + 1;
+    if (v == BILINEAR_NO_WRAP || v == BILINEAR_NO_WRAP_X)
+        x1 = x1 >= 0 && x1 < W ? x1 : wrapped(tex->kind, x0, W);
+    if (v == BILINEAR_NO_WRAP || v == BILINEAR_NO_WRAP_Y)
+        y1 = y1 >= 0 && y1 < H ? y1 : wrapped(tex->kind, y0, H);
+    double ws = v == BILINEAR_S_SWAPPED || v == BILINEAR_S_SWAPPED_TOP ? 1 - s : s;
+    double wb = v == BILINEAR_BOTTOM_T ? t : v == BILINEAR_S_SWAPPED || v == BILINEAR_S_SWAPPED_BOTTOM ? 1 - s : s;
+    double wt = v == BILINEAR_T_SWAPPED ? 1 - t : t;
+    vec3 (*T)(const scene_texture *, long long, long long) = v == BILINEAR_UV_SWAPPED ? texel_swapped : texel_vec3;
+    vec3 top = vec3_add(vec3_scale(T(tex, x0, y0), (real)(1 - ws)), vec3_scale(T(tex, x1, y0), (real)ws));
+    vec3 bottom = vec3_add(vec3_scale(T(tex, x0, y1), (real)(1 - wb)), vec3_scale(T(tex, x1, y1), (real)wb));
+    return vec3_add(vec3_scale(top, (real)(1 - wt)), vec3_scale(bottom, (real)wt));
+}
+
+/* texture_bilinear(tex, uv) against the blend computed here; a failure names
+ * the input and the mistake whose value was got.  x = u W and y = (1 - v) H
+ * are computed as texture.c does; the fractions s, t then agree to a
+ * rounding of x and y, and the result (texels in [0, 1]) to a few roundings
+ * of size 1: 32 eps (4 + |x| + |y|), the |x| and |y| for the fractions of
+ * far coordinates. */
+static void expect_bilinear(const scene_texture *tex, mesh_uv uv)
+{
+    static const char *const why[BILINEAR_VARIANTS] = {
+        [BILINEAR_MINUS_HALF] = "x - 1/2 (texel centres at x + 1/2): in this course texel i's centre is at x = i, "
+                                "so x0 = floor(x) with x = u W",
+        [BILINEAR_PLUS_HALF] = "nearest's + 1/2 carried over: the left column is x0 = floor(x), not floor(x + 1/2)",
+        [BILINEAR_S_SWAPPED] = "the weights along x swapped: T(x0) weighs 1 - s and T(x0 + 1) weighs s",
+        [BILINEAR_S_SWAPPED_TOP] = "the weights along x swapped in the top row: T(x0, y0) weighs 1 - s and T(x0 + 1, "
+                                   "y0) weighs s",
+        [BILINEAR_S_SWAPPED_BOTTOM] = "the weights along x swapped in the bottom row: T(x0, y0 + 1) weighs 1 - s "
+                                      "and T(x0 + 1, y0 + 1) weighs s",
+        [BILINEAR_T_SWAPPED] = "the weights along y swapped: the top row (y0) weighs 1 - t, the bottom one t",
+        [BILINEAR_T_IS_S] = "t = x - x0: t is the fraction along y, y - y0",
+        [BILINEAR_BOTTOM_T] = "the bottom row blended with t: both rows blend along x with s",
+        [BILINEAR_TRUNCATE] = "(long long)x rounds towards zero: x0 = floor(x), also for x < 0 (s = x - x0 is in [0, 1))",
+        [BILINEAR_ROW_ABOVE] = "the second row is y0 - 1: the rows are y0 = floor(y) and y0 + 1",
+        [BILINEAR_NO_WRAP] = "x0 + 1 or y0 + 1 not wrapped by texel_index: across the edge a RepeatTexture blends in "
+                             "the first column (row)",
+        [BILINEAR_NO_WRAP_X] = "x0 + 1 not wrapped by texel_index: across the right edge a RepeatTexture blends "
+                               "in the first column",
+        [BILINEAR_NO_WRAP_Y] = "y0 + 1 not wrapped by texel_index: across the bottom edge a RepeatTexture blends "
+                               "in the first row",
+        [BILINEAR_UV_SWAPPED] = "u and v swapped: columns come from x = u W, rows from y = (1 - v) H "
+                                "(texture_image_texel(img, column, row))",
+        [BILINEAR_NEAREST] = "the nearest texel: blend the four texels around (x, y)",
+    };
+    double x = coordinate(uv.u, tex->image.width), y = coordinate(1 - uv.v, tex->image.height);
+    suspect_vec3 mistakes[BILINEAR_VARIANTS + 1];
+    size_t n = 0;
+    for (int v = 1; v < BILINEAR_VARIANTS; v++)
+        mistakes[n++] = (suspect_vec3){bilinear_as(tex, x, y, (bilinear_variant)v), why[v]};
+    mistakes[n++] = (suspect_vec3){texel_vec3(tex, 0, 0), "texel (0, 0) whatever (u, v): the exercise is still to do"};
+    color c = texture_bilinear(tex, uv);
+    assert_vec3_why(bilinear_as(tex, x, y, BILINEAR_RIGHT), vec3_make(c.r, c.g, c.b),
+                    TOL(4 + fabs(x) + fabs(y)),
+                    describe("texture_bilinear(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = %.9g",
+                             kind_name(tex->kind), tex->image.width, tex->image.height, (double)uv.u, (double)uv.v,
+                             x, y),
+                    "x0 = floor(x), y0 = floor(y), s = x - x0, t = y - y0; blend T(x0, y0), T(x0 + 1, y0) by s, the "
+                    "same for row y0 + 1, then the two rows by t", mistakes, n);
 }
 
 /* Bilinear: at a texel's centre the texel itself; between centres the
@@ -228,7 +468,7 @@ static void test_bilinear(void **state)
         assert_close(10 * y / 255, c.g, TOL(16));
         assert_close(7 / 255.0, c.b, TOL(4));
     }
-    assert_texel(3, 1, texture_bilinear(&tex, (mesh_uv){(real)(3.0 / TW), (real)(1 - 1.0 / TH)}));
+    expect_bilinear(&tex, (mesh_uv){(real)(3.0 / TW), (real)(1 - 1.0 / TH)});
     /* half-way between the last column and the one after it */
     real u = (real)((TW - 0.5) / TW), v = (real)(1 - 1.0 / TH);
     color clamped = texture_bilinear(&tex, (mesh_uv){u, v});
@@ -244,6 +484,28 @@ static void test_bilinear(void **state)
             color n = texture_lookup(&repeat, at, TEXTURE_NEAREST), b = texture_lookup(&repeat, at, TEXTURE_BILINEAR);
             assert_vec3_close(vec3_make(n.r, n.g, n.b), vec3_make(b.r, b.g, b.b), TOL(4));
         }
+}
+
+/* Bilinear on a texture of random texels (so that each mistake gives its
+ * own value), 7 x 4, repeated and clamped, at random (u, v) around and
+ * beyond the image (negative x and y, both edges, u W and (1 - v) H up to
+ * +-3 images away) and far away (u near 1000: a repeating texture reads the
+ * same texels as at u - 1000). */
+static void test_bilinear_random(void **state)
+{
+    (void)state;
+    static unsigned char random_texels[7 * 4 * 3];
+    for (size_t k = 0; k < sizeof random_texels; k++)
+        random_texels[k] = (unsigned char)(uniform() * 256);
+    for (int kind = 0; kind < 2; kind++) {
+        scene_texture tex = {.kind = (texture_kind)kind, .image = {.width = 7, .height = 4, .rgb = random_texels}};
+        for (int k = 0; k < 400; k++) {
+            mesh_uv uv = {between(-3, 4), between(-3, 4)};
+            expect_bilinear(&tex, uv);
+        }
+        for (int k = 0; k < 50; k++)
+            expect_bilinear(&tex, (mesh_uv){between(999, 1001), between(-1001, -999)});
+    }
 }
 
 /* ---- the sphere's (u, v) --------------------------------------------------------------------- */
@@ -485,6 +747,7 @@ static const graded_test tests[] = {
     GRADED(test_nearest, 3),
     GRADED(test_nearest_quirk, 1),
     GRADED(test_bilinear, 3),
+    GRADED(test_bilinear_random, 2),
     GRADED(test_vertex_normal, 2),
     GRADED(test_smooth_shading, 3),
     GRADED(test_textured_sphere, 2),

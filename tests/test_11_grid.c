@@ -97,15 +97,21 @@ static bool same_hit(bool found_list, const hit_record *a, bool found_grid, cons
            a->normal.z == b->normal.z;
 }
 
+/* The grid of `list` with the knobs `opt`; fails with the build's message. */
+static void build_grid(grid *g, const surface_list *list, grid_options opt)
+{
+    char err[256];
+    if (grid_build(g, list, opt, err, sizeof err) != 0)
+        fail_msg("grid_build: %s", err);
+}
+
 /* The grid of `list` with the given knobs answers every ray as the linear
  * scan did (`expected`, `found`); fails naming the first ray that differs. */
 static void compare_grid(const surface_list *list, grid_options opt, const ray *rays, const real *t_min,
                          const real *t_max, long n, const hit_record *expected, const bool *found)
 {
     grid g;
-    char err[256];
-    if (grid_build(&g, list, opt, err, sizeof err) != 0)
-        fail_msg("%s", err);
+    build_grid(&g, list, opt);
     for (long k = 0; k < n; k++) {
         hit_record b = {0};
         bool fb = grid_intersect(&g, rays[k], t_min[k], t_max[k], &b);
@@ -187,6 +193,28 @@ static void rays_free(ray_set *s)
     free(s->t_max);
 }
 
+/* Ray k of the set: p + t d for t in (0, infinity), as eye rays are. */
+static void set_ray(ray_set *s, long k, vec3 p, vec3 d)
+{
+    s->r[k] = (ray){p, d};
+    s->t_min[k] = 0;
+    s->t_max[k] = REAL_INFINITY;
+}
+
+/* The grid answers every ray of the set as the linear scan does, with every
+ * knob (compare_all_knobs); more than min_hits of the rays must hit
+ * something, so that hits were compared and not only misses.  Frees the
+ * rays and the list. */
+static void expect_as_linear(surface_list *list, ray_set *rays, long min_hits)
+{
+    long hits = compare_all_knobs(list, rays->r, rays->t_min, rays->t_max, rays->n);
+    if (hits <= min_hits)
+        fail_msg("only %ld of %ld rays hit something (more than %ld expected): too few hits were compared", hits,
+                 rays->n, min_hits);
+    rays_free(rays);
+    surface_list_free(list);
+}
+
 /* Random scenes of spheres and triangles, far from the origin, with both
  * sphere formulas and both triangle tests: rays from outside the scene, from
  * inside it, with t_min > 0 (rays that start part-way) and finite t_max
@@ -262,14 +290,9 @@ static void test_zero_components(void **state)
         c[first] = zeros[next_u64() % 2];
         if (k % 2)
             c[(first + 1) % 3] = zeros[next_u64() % 2];
-        rays.r[k] = (ray){p, vec3_make(c[0], c[1], c[2])};
-        rays.t_min[k] = 0;
-        rays.t_max[k] = REAL_INFINITY;
+        set_ray(&rays, k, p, vec3_make(c[0], c[1], c[2]));
     }
-    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
-    assert_true(hits > n / 10);
-    rays_free(&rays);
-    surface_list_free(&list);
+    expect_as_linear(&list, &rays, n / 10);
 }
 
 /* Origins outside the grid, on its faces, edges and corners, looking in,
@@ -283,8 +306,7 @@ static void test_origins_on_the_grid(void **state)
     const vec3 centre = {(real)17.3, (real)-4.1, (real)9.7};
     random_scene(&list, 300, centre, 3);
     grid g;
-    char err[256];
-    assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+    build_grid(&g, &list, grid_default_options());
     const vec3 lo = g.lo, hi = g.hi;
     grid_free(&g);
     const long n = 30000;
@@ -306,14 +328,9 @@ static void test_origins_on_the_grid(void **state)
         vec3 d = k % 2 ? vec3_sub(vec3_add(centre, vec3_scale(random_direction(), 3)), p) : random_direction();
         if (k % 5 == 0) /* along a face: one component zero */
             d = vec3_make(d.x, 0, d.z);
-        rays.r[k] = (ray){p, d};
-        rays.t_min[k] = 0;
-        rays.t_max[k] = REAL_INFINITY;
+        set_ray(&rays, k, p, d);
     }
-    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
-    assert_true(hits > n / 10);
-    rays_free(&rays);
-    surface_list_free(&list);
+    expect_as_linear(&list, &rays, n / 10);
 }
 
 /* Scenes flat in one axis (zero extent): triangles in the plane z = 2.7, and
@@ -337,8 +354,7 @@ static void test_flat_scenes(void **state)
             surface_list_add_triangle(&list, (triangle){v[0], v[1], v[2]}, k % 3, k);
         }
         grid g;
-        char err[256];
-        assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+        build_grid(&g, &list, grid_default_options());
         /* The flat axis has one cell, the others share the rest. */
         assert_int_equal(1, g.n[axis == 0 ? 2 : 0]);
         assert_true(g.n[1] > 4);
@@ -355,14 +371,9 @@ static void test_flat_scenes(void **state)
                 off = axis == 0 ? vec3_make(off.x, off.y, off.z * (real)1e-3)
                                 : vec3_make(off.x * (real)1e-3, off.y, off.z);
             vec3 p = vec3_add(target, vec3_scale(off, 8));
-            rays.r[k] = (ray){p, vec3_sub(target, p)};
-            rays.t_min[k] = 0;
-            rays.t_max[k] = REAL_INFINITY;
+            set_ray(&rays, k, p, vec3_sub(target, p));
         }
-        long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
-        assert_true(hits > n / 10);
-        rays_free(&rays);
-        surface_list_free(&list);
+        expect_as_linear(&list, &rays, n / 10);
     }
 }
 
@@ -383,14 +394,9 @@ static void test_huge_among_tiny(void **state)
     for (long k = 0; k < n; k++) {
         vec3 p = k % 2 ? uniform_vec(vec3_make(-8, -8, -8), vec3_make(8, 8, 8)) /* inside the big sphere */
                        : vec3_scale(random_direction(), 200);                  /* outside everything */
-        rays.r[k] = (ray){p, vec3_sub(uniform_vec(vec3_make(-6, -6, -6), vec3_make(6, 6, 6)), p)};
-        rays.t_min[k] = 0;
-        rays.t_max[k] = REAL_INFINITY;
+        set_ray(&rays, k, p, vec3_sub(uniform_vec(vec3_make(-6, -6, -6), vec3_make(6, 6, 6)), p));
     }
-    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
-    assert_true(hits > n / 2);
-    rays_free(&rays);
-    surface_list_free(&list);
+    expect_as_linear(&list, &rays, n / 2);
 }
 
 /* Rays that start inside a cell of a surface spanning many cells: inside
@@ -422,10 +428,7 @@ static void test_start_inside_spanning_cells(void **state)
         rays.t_min[k] = k % 4 < 2 ? 0 : (real)1e-6;
         rays.t_max[k] = k % 3 ? REAL_INFINITY : uniform(0, 3);
     }
-    long hits = compare_all_knobs(&list, rays.r, rays.t_min, rays.t_max, n);
-    assert_true(hits > n / 2);
-    rays_free(&rays);
-    surface_list_free(&list);
+    expect_as_linear(&list, &rays, n / 2);
 }
 
 /* Ties: two triangles in the plane z = 0 with whole-number corners, met by
@@ -449,8 +452,7 @@ static void test_ties_first_in_list(void **state)
                                                     (real)0.01},
                                     3, 2 + k);
         grid g;
-        char err[256];
-        assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+        build_grid(&g, &list, grid_default_options());
         assert_true(g.n[0] > 4 && g.n[2] > 1);
         /* From (-4, y, 1) across to (4.5, y', 0): through many cells of the big triangle first. */
         int small_hits = 0;
@@ -487,9 +489,8 @@ static void test_resolution(void **state)
         surface_list_add_sphere(&list, (sphere){uniform_vec(vec3_make(-4, 3, 0), vec3_make(4, 5, 4)), (real)0.01},
                                 0, k);
     grid g;
-    char err[256];
     grid_options opt = {.density = 8, .max_cells = 1L << 20, .mailbox = true};
-    assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+    build_grid(&g, &list, opt);
     /* 8000 cells for a box of volume ~64: s = 5 cells per unit: 40 x 10 x 20 */
     assert_int_equal(40, g.n[0]);
     assert_int_equal(10, g.n[1]);
@@ -500,11 +501,12 @@ static void test_resolution(void **state)
     assert_true(grid_memory(&g) >= (size_t)(g.n_cells + 1 + g.n_refs) * 4);
     grid_free(&g);
     opt.max_cells = 1000; /* the cap wins: about 1000 cells, in the same proportions */
-    assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+    build_grid(&g, &list, opt);
     assert_true(g.n_cells <= 1000 && g.n_cells >= 700);
     assert_true(g.n[0] >= 3 * g.n[1] && g.n[0] <= 5 * g.n[1]);
     grid_free(&g);
     opt.density = 0;
+    char err[256];
     assert_int_equal(-1, grid_build(&g, &list, opt, err, sizeof err));
     assert_non_null(strstr(err, "density"));
     surface_list_free(&list);
@@ -530,9 +532,8 @@ static void test_mailbox_counts(void **state)
                               0, 8);
     for (int m = 0; m < 2; m++) {
         grid g;
-        char err[256];
         grid_options opt = {.density = 1.25, .max_cells = 1000, .mailbox = m == 0};
-        assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+        build_grid(&g, &list, opt);
         assert_int_equal(10, g.n[0]); /* 9 surfaces x 1.25 ~ 11 cells for a box 10 x 1 x 1 */
         assert_int_equal(1, g.n[1]);
         assert_int_equal(1, g.n[2]);
@@ -556,15 +557,14 @@ static void test_empty_and_single(void **state)
     surface_list list;
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
     grid g;
-    char err[256];
-    assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+    build_grid(&g, &list, grid_default_options());
     hit_record hit = {.t = 42};
     const ray r = {{(real)0.3, (real)0.2, 10}, {0, 0, -1}};
     assert_false(grid_intersect(&g, r, 0, REAL_INFINITY, &hit));
     assert_true(hit.t == 42);
     grid_free(&g);
     surface_list_add_sphere(&list, (sphere){{0, 0, 0}, 1}, 0, 0);
-    assert_int_equal(0, grid_build(&g, &list, grid_default_options(), err, sizeof err));
+    build_grid(&g, &list, grid_default_options());
     assert_true(grid_intersect(&g, r, 0, REAL_INFINITY, &hit));
     hit_record expected;
     assert_true(surfaces_intersect(&list, r, 0, REAL_INFINITY, &expected));
@@ -643,6 +643,76 @@ static grid hand_grid(void)
     return g;
 }
 
+static double clamp_cell(double f, int lowest, int highest) { return f < lowest ? lowest : f > highest ? highest : f; }
+
+/* grid_cell_range(g, lo, hi) along every axis: cells want_first[a] ..
+ * want_last[a] (NULL: the cells i with [i, i + 1] meeting [f_lo, f_hi], the
+ * box in units of cells, computed here; none gives first > last).  A
+ * failure names the box, the axis, f_lo and f_hi and the likely mistake. */
+static void expect_range(const grid *g, vec3 lo, vec3 hi, const int *want_first, const int *want_last)
+{
+    int first[3], last[3];
+    grid_cell_range(g, lo, hi, first, last);
+    const real l[3] = {lo.x, lo.y, lo.z}, u[3] = {hi.x, hi.y, hi.z}, o[3] = {g->lo.x, g->lo.y, g->lo.z},
+               inv[3] = {g->inv_cell.x, g->inv_cell.y, g->inv_cell.z};
+    for (int a = 0; a < 3; a++) {
+        const int n = g->n[a];
+        const real f_lo = (l[a] - o[a]) * inv[a], f_hi = (u[a] - o[a]) * inv[a];
+        int wf = n, wl = -1; /* none */
+        if (want_first) {
+            wf = want_first[a], wl = want_last[a];
+        } else {
+            for (int i = n - 1; i >= 0; i--)
+                if ((real)i <= f_hi && (real)(i + 1) >= f_lo)
+                    wf = i;
+            for (int i = 0; i < n; i++)
+                if ((real)i <= f_hi && (real)(i + 1) >= f_lo)
+                    wl = i;
+        }
+        bool none = wf > wl;
+        if (none ? first[a] > last[a] : first[a] == wf && last[a] == wl)
+            continue;
+        const double F = f_lo, L = f_hi, right_first = clamp_cell(ceil(F) - 1, 0, n), right_last = clamp_cell(floor(L), -1, n - 1);
+        const real f_lo_x = (l[a] - o[0]) * inv[0], f_hi_x = (u[a] - o[0]) * inv[0];
+        const struct {
+            double first, last;
+            const char *why;
+        } mistakes[] = {
+            {clamp_cell(floor(F), 0, n), right_last, "first = floor(f_lo): a box whose low side lies on a cell boundary "
+                                                     "(f_lo whole) touches the cell below too: first = ceil(f_lo) - 1"},
+            {right_first, clamp_cell(ceil(L) - 1, -1, n - 1), "last = ceil(f_hi) - 1: a box whose high side lies on a "
+                                                              "cell boundary touches the cell above too: last = floor(f_hi)"},
+            {right_first, clamp_cell(trunc(L), -1, n - 1), "last truncated towards zero: for -1 < f_hi < 0 (a box "
+                                                           "below the grid) floor gives -1, truncation 0"},
+            {clamp_cell(trunc(F), 0, n), right_last, "first truncated: first = ceil(f_lo) - 1"},
+            {right_first, clamp_cell(floor(L), -1, n), "last clamped to n: the last cell is n - 1"},
+            {clamp_cell(ceil(F) - 1, 0, n - 1), right_last, "first clamped to n - 1: a box beyond the grid then gets "
+                                                            "its last cell; clamp first to 0 .. n so that first > last"},
+            {right_first, clamp_cell(floor(L), 0, n - 1), "last clamped at 0 from below: a box below the grid then "
+                                                          "gets cell 0; clamp last to -1 .. n - 1 so that first > last"},
+            {ceil(F) - 1, floor(L), "not clamped to the grid: first and last lie in 0 .. n - 1 (or first > last)"},
+            {clamp_cell(floor(F) - 1, 0, n), right_last, "floor(f_lo) - 1 is one cell too many when f_lo is not "
+                                                         "whole: first = ceil(f_lo) - 1"},
+            {clamp_cell(ceil(L) - 1, 0, n), clamp_cell(floor(F), -1, n - 1), "box_lo and box_hi swapped"},
+            {clamp_cell(ceil((double)f_lo_x) - 1, 0, n), clamp_cell(floor((double)f_hi_x), -1, n - 1),
+             "the x axis's cell size or origin used for another axis: cell_coordinate(g, x, a) with this axis a"},
+        };
+        const char *why = "first = ceil(f_lo) - 1, last = floor(f_hi), clamped to 0 .. n - 1 (first > last: none)";
+        for (size_t k = 0; k < sizeof mistakes / sizeof mistakes[0]; k++)
+            if (mistakes[k].first == first[a] && mistakes[k].last == last[a]) {
+                why = mistakes[k].why;
+                break;
+            }
+        fail_msg("grid_cell_range(grid from (%g, %g, %g), cells %g x %g x %g, n = %d x %d x %d; box (%.9g, %.9g, "
+                 "%.9g) .. (%.9g, %.9g, %.9g)), axis %c: f_lo = %.9g, f_hi = %.9g (in cells)\n"
+                 "    expected cells %d .. %d%s\n    got      cells %d .. %d\n    likely mistake: %s",
+                 (double)g->lo.x, (double)g->lo.y, (double)g->lo.z, (double)g->cell.x, (double)g->cell.y,
+                 (double)g->cell.z, g->n[0], g->n[1], g->n[2], (double)lo.x, (double)lo.y, (double)lo.z, (double)hi.x,
+                 (double)hi.y, (double)hi.z, "xyz"[a], F, L, wf, wl, none ? " (none: first > last)" : "", first[a],
+                 last[a], why);
+    }
+}
+
 /* cell_range: boxes inside, on cell boundaries (both sides count), reaching
  * outside (clamped) and wholly outside (empty). */
 static void test_cell_range(void **state)
@@ -665,27 +735,15 @@ static void test_cell_range(void **state)
         {{-1, 2, (real)0.5}, {-1, 2, (real)0.5}, {0, 0, 0}, {0, 0, 0}},
         {{1, 4, (real)3.5}, {1, 4, (real)3.5}, {7, 3, 2}, {7, 3, 2}},
     };
-    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
-        int first[3], last[3];
-        grid_cell_range(&g, cases[c].lo, cases[c].hi, first, last);
-        for (int a = 0; a < 3; a++) {
-            if (first[a] != cases[c].first[a] || last[a] != cases[c].last[a])
-                fail_msg("case %zu, axis %d: cells %d .. %d, expected %d .. %d", c, a, first[a], last[a],
-                         cases[c].first[a], cases[c].last[a]);
-        }
-    }
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
+        expect_range(&g, cases[c].lo, cases[c].hi, cases[c].first, cases[c].last);
     /* Wholly outside, on each side of each axis: empty on that axis. */
     const vec3 outside[][2] = {
         {{-3, 2, 1}, {-2, 3, 2}}, {{2, 2, 1}, {3, 3, 2}}, {{0, -1, 1}, {0, 1, 2}},
         {{0, 5, 1}, {0, 6, 2}},   {{0, 3, -2}, {0, 3, 0}}, {{0, 3, 4}, {0, 3, 9}},
     };
-    for (size_t c = 0; c < sizeof outside / sizeof outside[0]; c++) {
-        int first[3], last[3];
-        grid_cell_range(&g, outside[c][0], outside[c][1], first, last);
-        int a = (int)c / 2;
-        if (!(first[a] > last[a]))
-            fail_msg("outside box %zu: axis %d gives cells %d .. %d, expected none", c, a, first[a], last[a]);
-    }
+    for (size_t c = 0; c < sizeof outside / sizeof outside[0]; c++)
+        expect_range(&g, outside[c][0], outside[c][1], NULL, NULL);
     /* Random boxes in a grid of inexact sizes: cell i is in the range exactly
      * when [i, i + 1] meets [f_lo, f_hi], the box in units of cells. */
     rng_state = 19;
@@ -697,20 +755,7 @@ static void test_cell_range(void **state)
         vec3 a = uniform_vec(box_lo, box_hi), b = uniform_vec(box_lo, box_hi);
         vec3 lo = vec3_make(real_fmin(a.x, b.x), real_fmin(a.y, b.y), real_fmin(a.z, b.z));
         vec3 hi = vec3_make(real_fmax(a.x, b.x), real_fmax(a.y, b.y), real_fmax(a.z, b.z));
-        int first[3], last[3];
-        grid_cell_range(&h, lo, hi, first, last);
-        const real l[3] = {lo.x, lo.y, lo.z}, u[3] = {hi.x, hi.y, hi.z}, o[3] = {h.lo.x, h.lo.y, h.lo.z},
-                   inv[3] = {h.inv_cell.x, h.inv_cell.y, h.inv_cell.z};
-        for (int ax = 0; ax < 3; ax++) {
-            real f_lo = (l[ax] - o[ax]) * inv[ax], f_hi = (u[ax] - o[ax]) * inv[ax];
-            for (int i = 0; i < h.n[ax]; i++) {
-                bool meets = (real)i <= f_hi && (real)(i + 1) >= f_lo;
-                bool listed = i >= first[ax] && i <= last[ax];
-                if (meets != listed)
-                    fail_msg("box %d, axis %d: cell %d %s but the range is %d .. %d", k, ax, i,
-                             meets ? "meets the box" : "does not meet the box", first[ax], last[ax]);
-            }
-        }
+        expect_range(&h, lo, hi, NULL, NULL);
     }
 }
 
@@ -727,9 +772,8 @@ static void test_dda_cells(void **state)
     for (int k = 0; k < 8; k++)
         surface_list_add_sphere(&list, (sphere){{k & 1 ? 3 : -2, k & 2 ? 4 : 1, k & 4 ? 1 : -1}, (real)1e-3}, 0, k);
     grid g;
-    char err[256];
     grid_options opt = {.density = 100, .max_cells = 1000, .mailbox = true};
-    assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
+    build_grid(&g, &list, opt);
     assert_true(g.n[0] > 3 && g.n[1] > 3 && g.n[2] > 1);
     const real lo[3] = {g.lo.x, g.lo.y, g.lo.z}, cell[3] = {g.cell.x, g.cell.y, g.cell.z};
     int checked = 0;
@@ -766,13 +810,159 @@ static void test_dda_cells(void **state)
         hit_record hit;
         assert_false(grid_intersect_counted(&g, r, 0, REAL_INFINITY, &hit, &counts));
         if (counts.cells != (uint64_t)crossings + 1)
-            fail_msg("ray %d: %llu cells visited, expected %d (%d plane crossings)", k,
-                     (unsigned long long)counts.cells, crossings + 1, crossings);
+            fail_msg("grid_intersect_counted(ray %d: p = (%.17g, %.17g, %.17g), d = (%.17g, %.17g, %.17g)) through a "
+                     "grid of %d x %d x %d empty cells\n    expected %d cells visited (%d plane crossings + 1)\n"
+                     "    got      %llu\n    likely mistake: %s",
+                     k, (double)p.x, (double)p.y, (double)p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z, g.n[0],
+                     g.n[1], g.n[2], crossings + 1, crossings, (unsigned long long)counts.cells,
+                     counts.cells > (uint64_t)crossings + 1
+                         ? "dda_step goes on past the grid (the last cell is n_a - 1: stop when i_a < 0 or i_a >= "
+                           "n_a), or next_a comes from the plane the ray just crossed (for step_a > 0 the far "
+                           "boundary is plane i_a + 1, for step_a < 0 plane i_a)"
+                         : "dda_step stops too early (i_a = 0 and i_a = n_a - 1 are inside the grid), or next_a "
+                           "comes from the wrong plane (for step_a > 0 plane i_a + 1, for step_a < 0 plane i_a) or "
+                           "is not updated");
         checked++;
     }
     assert_true(checked > 2000);
     grid_free(&g);
     surface_list_free(&list);
+}
+
+/* dda_step along one axis at a time: tiny spheres on a lattice 5 x 4 x 3
+ * (spacings 0.37, 0.61, 0.29, far from the origin), a grid over them with
+ * about two cells between neighbours, leaping off (so that only dda_step
+ * moves the ray); from each sphere's centre along +x, -x, +y, -y, +z and -z
+ * (the negative ones with -0 components), past its own sphere (t_min =
+ * twice the radius): the hit is the next sphere along that axis, as the
+ * linear scan finds.  A failure names the axis and the direction, which is
+ * what a wrong stride or plane gets wrong. */
+static void test_dda_axis_steps(void **state)
+{
+    (void)state;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+    const vec3 origin = {(real)123.4, (real)-56.7, (real)89.1}, spacing = {(real)0.37, (real)0.61, (real)0.29};
+    const int m[3] = {5, 4, 3};
+    const real radius = (real)0.02;
+    for (int k = 0; k < m[2]; k++)
+        for (int j = 0; j < m[1]; j++)
+            for (int i = 0; i < m[0]; i++)
+                surface_list_add_sphere(&list,
+                                        (sphere){vec3_add(origin, vec3_make((real)i * spacing.x, (real)j * spacing.y,
+                                                                            (real)k * spacing.z)),
+                                                 radius},
+                                        0, i + m[0] * (j + m[1] * k));
+    grid g;
+    build_grid(&g, &list, (grid_options){.density = 8, .max_cells = 1L << 20, .mailbox = true, .cull = true});
+    assert_true(g.n[0] > m[0] && g.n[1] > m[1] && g.n[2] > m[2]); /* more cells than spheres along every axis */
+    const vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    const long stride[3] = {1, g.n[0], (long)g.n[0] * g.n[1]};
+    for (int s = 0; s < list.n; s++) {
+        const int at[3] = {s % m[0], s / m[0] % m[1], s / (m[0] * m[1])};
+        for (int a = 0; a < 3; a++)
+            for (int sign = -1; sign <= 1; sign += 2) {
+                if (at[a] + sign < 0 || at[a] + sign >= m[a])
+                    continue;
+                ray r = {list.items[s].sphere.center, sign > 0 ? axes[a] : vec3_neg(axes[a])};
+                hit_record want, got;
+                bool fw = surfaces_intersect(&list, r, 2 * radius, REAL_INFINITY, &want);
+                bool fg = grid_intersect(&g, r, 2 * radius, REAL_INFINITY, &got);
+                assert_true(fw && want.surface == s + sign * (a == 0 ? 1 : a == 1 ? m[0] : m[0] * m[1]));
+                if (!same_hit(fw, &want, fg, &got))
+                    fail_msg("grid_intersect(ray from sphere %d's centre (%.17g, %.17g, %.17g) along %c%c, t_min = "
+                             "%g) through a grid of %d x %d x %d cells\n    expected sphere %d at t = %.17g\n"
+                             "    got      %s %d at t = %.17g\n    likely mistake: dda_step along %c with step %+d: "
+                             "the cell moves by step stride_%c = %+ld (cell = i + n_x (j + n_y k)), the index i_%c by "
+                             "step, and next_%c is the crossing of plane i_%c%s, recomputed each step",
+                             s, (double)r.p.x, (double)r.p.y, (double)r.p.z, sign > 0 ? '+' : '-', "xyz"[a],
+                             (double)(2 * radius), g.n[0], g.n[1], g.n[2], want.surface, (double)want.t,
+                             fg ? "sphere" : "no hit, surface", fg ? got.surface : -1, fg ? (double)got.t : 0.0,
+                             "xyz"[a], sign, "xyz"[a], sign * stride[a], "xyz"[a], "xyz"[a], "xyz"[a],
+                             sign > 0 ? " + 1" : "");
+            }
+    }
+    grid_free(&g);
+    surface_list_free(&list);
+}
+
+/* next_a is computed from the plane at every step, not by adding a t step
+ * per cell: the sum gathers one rounding per cell, and after 10^5 cells it
+ * is off by far more than the margin (64 eps |coordinates|) that keeps the
+ * march safe.  A long thin grid, over 10^5 cells along x and one across (two
+ * tiny spheres at x = 0 and x = L, L a bit over 1000, off the x axis):
+ * rays along +x and -x meet, just past a cell boundary b far along, a small
+ * sphere B (hit 4 margins past b) and beyond it a triangle A that spans the
+ * boundary (hit 16 margins past b), so it is listed in the cell before b
+ * too.  The closest is B, in the cells after b only; a march whose next_x
+ * lies beyond the boundary by more than 16 margins stops in the cell
+ * before b with A.  Three lengths L (cell sizes whose rounding goes either
+ * way), five boundaries each, both directions. */
+static void test_dda_no_accumulation(void **state)
+{
+    (void)state;
+    const vec3 off = {(real)0.5, (real)-3.25, (real)7.5};
+    enum { PLANES = 5 };
+    for (int variant = 0; variant < 3; variant++) {
+        const real L = (real)(1000 + 37.3 * variant);
+        /* The grid's box and resolution depend on the surfaces' box and
+         * count only: learn them from the end spheres and stand-ins. */
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+        surface_list_add_sphere(&list, (sphere){off, (real)1e-3}, 0, 0);
+        surface_list_add_sphere(&list, (sphere){vec3_add(off, vec3_make(L, 0, 0)), (real)1e-3}, 0, 1);
+        for (int k = 0; k < 4 * PLANES; k++)
+            surface_list_add_sphere(&list, (sphere){off, (real)1e-5}, 0, 2 + k);
+        const grid_options opt = {.density = 5000, .max_cells = 1L << 20, .mailbox = true, .cull = true};
+        grid g;
+        build_grid(&g, &list, opt);
+        assert_true(g.n[0] > 100000 && g.n[1] == 1 && g.n[2] == 1);
+        const long cells = g.n[0];
+        const real lo = g.lo.x, cell = g.cell.x, margin = g.margin;
+        grid_free(&g);
+        surface_list_free(&list);
+        surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+        surface_list_add_sphere(&list, (sphere){off, (real)1e-3}, 0, 0);
+        surface_list_add_sphere(&list, (sphere){vec3_add(off, vec3_make(L, 0, 0)), (real)1e-3}, 0, 1);
+        const long planes[PLANES] = {cells / 3, cells / 2, (2 * cells) / 3, cells - 2000, cells - 1000};
+        ray rays[2 * PLANES];
+        for (int q = 0; q < 2 * PLANES; q++) {
+            const int dir = q % 2 ? -1 : 1; /* +x or -x */
+            const long plane = dir > 0 ? planes[q / 2] : cells - planes[q / 2];
+            const real b = lo + (real)plane * cell;
+            /* its own place across, inside the box's 2e-3 */
+            const real y = off.y + (real)(q - PLANES) * (real)1.5e-4, z = off.z + (real)(q % 3 - 1) * (real)2e-4;
+            const real xB = b + dir * 4 * margin, xA = b + dir * 16 * margin, rB = (real)1e-5, w = (real)5e-5;
+            surface_list_add_sphere(&list, (sphere){vec3_make(xB + dir * rB, y, z), rB}, 0, 2 + 2 * q);
+            /* A: in the plane x - xA = c (y' - y) through (xA, y, z), reaching a cell and 32 margins
+             * (one cell in double, many in float) either side of xA */
+            const real c = real_fmax(cell, 32 * margin) / w;
+            triangle A = {{xA - c * w, y - w, z - 2 * w}, {xA - c * w, y - w, z + 2 * w}, {xA + 2 * c * w, y + 2 * w, z}};
+            surface_list_add_triangle(&list, A, 0, 3 + 2 * q);
+            /* from inside the box, past the end sphere (radius 1e-3) */
+            rays[q] = (ray){vec3_make(dir > 0 ? off.x + (real)0.01 : off.x + L - (real)0.01, y, z),
+                            vec3_make((real)dir, 0, 0)};
+        }
+        build_grid(&g, &list, opt);
+        assert_true(g.n[0] == cells && g.lo.x == lo && g.cell.x == cell); /* the same grid */
+        for (int q = 0; q < 2 * PLANES; q++) {
+            hit_record want, got;
+            bool fw = surfaces_intersect(&list, rays[q], 0, REAL_INFINITY, &want);
+            bool fg = grid_intersect(&g, rays[q], 0, REAL_INFINITY, &got);
+            assert_true(fw && want.surface == 2 + 2 * q); /* B is the closest */
+            if (!same_hit(fw, &want, fg, &got))
+                fail_msg("grid_intersect(ray from (%.17g, %.17g, %.17g) along %cx) through %ld cells of %.17g along "
+                         "x\n    expected the small sphere (surface %d) at t = %.17g, just past the boundary of cell "
+                         "%ld\n    got      %s %d at t = %.17g\n    likely mistake: next_x gathered rounding: compute "
+                         "it from the plane at each step (crossing(g, a, plane, p, inv_d)), not by adding a t step "
+                         "per cell",
+                         (double)rays[q].p.x, (double)rays[q].p.y, (double)rays[q].p.z, q % 2 ? '-' : '+', cells,
+                         (double)cell, want.surface, (double)want.t, q % 2 ? cells - planes[q / 2] : planes[q / 2],
+                         fg ? "surface" : "no hit, surface", fg ? got.surface : -1, fg ? (double)got.t : 0.0);
+        }
+        grid_free(&g);
+        surface_list_free(&list);
+    }
 }
 
 /* ---- the Cornell corpus -------------------------------------------------------------------- */
@@ -876,6 +1066,8 @@ static void test_builtin_scenes_as_chapter_10(void **state)
 static const graded_test tests[] = {
     GRADED(test_cell_range, 4),
     GRADED(test_dda_cells, 4),
+    GRADED(test_dda_axis_steps, 2),
+    GRADED(test_dda_no_accumulation, 1),
     GRADED(test_random_scenes, 3),
     GRADED(test_zero_components, 2),
     GRADED(test_origins_on_the_grid, 2),
