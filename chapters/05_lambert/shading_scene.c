@@ -1,6 +1,7 @@
 /* shading_scene.c - chapter 05: the built-in scene of the shading chapters. */
 #include "05_lambert/shading_scene.h"
 
+#include "04_many_shapes/shapes_scene.h"
 #include "scene_build.h"
 
 static int add_shader(scene *desc, shader_kind kind, color diffuse, color specular, real exponent)
@@ -15,16 +16,7 @@ static int add_shader(scene *desc, shader_kind kind, color diffuse, color specul
 /* snippet: shading_scene */
 int shading_scene(scene *desc)
 {
-    desc->has_camera = true;
-    desc->camera = (scene_camera){
-        .kind = CAMERA_PERSPECTIVE,
-        .view_point = {0, 2.2, 6.5},
-        .view_dir = {0, -0.3, -1},
-        .view_up = {0, 1, 0},
-        .proj_distance = 2,
-        .view_width = 2,
-        .view_height = 2,
-    };
+    shapes_view(desc); /* chapter 04's camera on chapter 04's layout */
     desc->back_color = color_make((real)0.02, (real)0.03, (real)0.05);
     desc->ambient = color_make((real)0.01, (real)0.01, (real)0.012);
     desc->exposure = (real)1.6;
