@@ -85,9 +85,7 @@ static color probe_shade(const tracer *tr, const shading_point *sp, int depth, u
 
 static path_knobs knobs_of(int depth, real min_weight)
 {
-    return (path_knobs){.phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
-                        .depth = depth,
-                        .min_weight = min_weight};
+    return (path_knobs){.phong = PHONG_KNOBS_DEFAULT, .depth = depth, .min_weight = min_weight};
 }
 
 /* Traces one eye ray through desc with the glazed shader (and the probe). */

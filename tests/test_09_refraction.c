@@ -333,9 +333,7 @@ static color probe_shade(const tracer *tr, const shading_point *sp, int depth, u
 
 static glass_knobs knobs_of(int depth, real min_weight)
 {
-    return (glass_knobs){.path = {.phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
-                                  .depth = depth,
-                                  .min_weight = min_weight},
+    return (glass_knobs){.path = {.phong = PHONG_KNOBS_DEFAULT, .depth = depth, .min_weight = min_weight},
                          .fresnel = FRESNEL_EXACT};
 }
 
