@@ -50,7 +50,7 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
 {
     stage *st = malloc(sizeof *st);
     if (!st) {
-        snprintf(err, err_size, "%s: out of memory", desc->path ? desc->path : "built-in scene");
+        snprintf(err, err_size, "%s: out of memory", scene_name(desc));
         return NULL;
     }
     st->desc = desc;

@@ -33,7 +33,7 @@ shading_view *shading_prepare(const shading_stage *stage, const scene *desc, sph
 {
     shading_view *view = calloc(1, sizeof *view);
     if (!view) {
-        snprintf(err, err_size, "%s: out of memory", desc->path ? desc->path : "built-in scene");
+        snprintf(err, err_size, "%s: out of memory", scene_name(desc));
         return NULL;
     }
     surface_list_init(&view->list, formula, test);
