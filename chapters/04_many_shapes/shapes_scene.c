@@ -17,6 +17,20 @@ void shapes_view(scene *desc)
     };
 }
 
+int shapes_add_solids(scene *desc, const int shader[4])
+{
+    const scene_surface solids[] = {
+        {.kind = SURFACE_BOX, .shader = shader[0], .min_pt = {-5, -0.2, -5}, .max_pt = {5, 0, 5}},
+        {.kind = SURFACE_SPHERE, .shader = shader[1], .center = {-0.7, 0.9, -0.3}, .radius = 0.9},
+        {.kind = SURFACE_SPHERE, .shader = shader[2], .center = {0.5, 0.6, 0.4}, .radius = 0.6},
+        {.kind = SURFACE_BOX, .shader = shader[3], .min_pt = {0.75, 0, -0.7}, .max_pt = {1.95, 1.1, 0.8}},
+    };
+    for (size_t k = 0; k < sizeof solids / sizeof solids[0]; k++)
+        if (scene_add_surface(desc, solids[k]) < 0)
+            return -1;
+    return 0;
+}
+
 /* snippet: builtin */
 /* Overlapping shapes, each its own flat colour: a floor slab, two spheres
  * that cut into each other, a box pushed into the blue sphere, a triangle
@@ -43,11 +57,9 @@ int shapes_scene(scene *desc)
         if (shader[k] < 0)
             return -1;
 
+    if (shapes_add_solids(desc, shader) < 0)
+        return -1;
     const scene_surface surfaces[] = {
-        {.kind = SURFACE_BOX, .shader = shader[0], .min_pt = {-5, -0.2, -5}, .max_pt = {5, 0, 5}},
-        {.kind = SURFACE_SPHERE, .shader = shader[1], .center = {-0.7, 0.9, -0.3}, .radius = 0.9},
-        {.kind = SURFACE_SPHERE, .shader = shader[2], .center = {0.5, 0.6, 0.4}, .radius = 0.6},
-        {.kind = SURFACE_BOX, .shader = shader[3], .min_pt = {0.75, 0, -0.7}, .max_pt = {1.95, 1.1, 0.8}},
         {.kind = SURFACE_TRIANGLE, .shader = shader[4], .v0 = {-2.3, 0, -1.2}, .v1 = {0.1, 0, -1.2},
          .v2 = {-1.1, 2.4, 0.9}},
         {.kind = SURFACE_SPHERE, .shader = shader[5], .center = {-0.3, 0.35, 1.3}, .radius = 0.35},

@@ -13,6 +13,11 @@
 /* The camera: 2.2 above the floor and 6.5 back, looking ahead and down. */
 void shapes_view(scene *desc);
 
+/* The four shapes both scenes share, in this order, with the given shaders:
+ * the floor slab, the red and the blue sphere that cut into each other, and
+ * the green box pushed into the blue one.  0, or -1 when out of memory. */
+int shapes_add_solids(scene *desc, const int shader[4]);
+
 /* Fills desc (already scene_init'ed); 0, or -1 when out of memory. */
 int shapes_scene(scene *desc);
 
