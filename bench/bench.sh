@@ -168,23 +168,26 @@ for where in builtin stage; do
     done
     measure "threads_$where" "$reps"
 done
-for n in 1 4 16; do
-    row="all.samples=$n	$latest	samples	$n	$([ $n = 1 ] && echo 1 || echo 0)	$([ $n = 16 ] && echo 1 || echo 0)"
+# common_row NAME VALUE OPTION DEFAULT BEST MEASURE IMG REF BASE HELP: the row
+# of `-OPTION VALUE` on both scenes: its time (and spread) in MEASURE_where,
+# its speed against `-OPTION BASE`, its image against IMG_where_REF's.
+common_row() {
+    local name=$1 value=$2 option=$3 default=$4 best=$5 measure=$6 img=$7 ref=$8 base=$9 help=${10}
+    local row="all.$name=$value	$latest	$name	$value	$default	$best" where t share maxd
     for where in builtin stage; do
-        t=$(field "spp_$where" "-n $n" 2)
-        read -r share maxd < <(diff_of "$work/img/spp_${where}_$n.png" "$work/img/spp_${where}_16.png")
-        row="$row	$t	$(field "spp_$where" "-n $n" 3)	$(field "spp_$where" "-n $n" 4)	$(ratio "$t" "$(field "spp_$where" "-n 1" 2)")	$share	$maxd"
+        t=$(field "${measure}_$where" "-$option $value" 2)
+        read -r share maxd < <(diff_of "$work/img/${img}_${where}_$value.png" "$work/img/${img}_${where}_$ref.png")
+        row="$row	$t	$(field "${measure}_$where" "-$option $value" 3)	$(field "${measure}_$where" "-$option $value" 4)	$(ratio "$t" "$(field "${measure}_$where" "-$option $base" 2)")	$share	$maxd"
     done
-    printf '%s\t%s\t%s\n' "$row" "$latest" "samples per pixel (-n), at half the side" >>"$common_rows"
+    printf '%s\t%s\t%s\n' "$row" "$latest" "$help" >>"$common_rows"
+}
+for n in 1 4 16; do
+    common_row samples $n n "$([ $n = 1 ] && echo 1 || echo 0)" "$([ $n = 16 ] && echo 1 || echo 0)" spp spp 16 1 \
+        "samples per pixel (-n), at half the side"
 done
 for ((j = 1; j <= cores; j++)); do
-    row="all.threads=$j	$latest	threads	$j	$([ $j = "$cores" ] && echo 1 || echo 0)	$([ $j = 1 ] && echo 1 || echo 0)"
-    for where in builtin stage; do
-        t=$(field "threads_$where" "-j $j" 2)
-        read -r share maxd < <(diff_of "$work/img/thr_${where}_$j.png" "$work/img/thr_${where}_1.png")
-        row="$row	$t	$(field "threads_$where" "-j $j" 3)	$(field "threads_$where" "-j $j" 4)	$(ratio "$t" "$(field "threads_$where" "-j $cores" 2)")	$share	$maxd"
-    done
-    printf '%s\t%s\t%s\n' "$row" "$latest" "threads (-j)" >>"$common_rows"
+    common_row threads $j j "$([ $j = "$cores" ] && echo 1 || echo 0)" "$([ $j = 1 ] && echo 1 || echo 0)" threads thr 1 \
+        "$cores" "threads (-j)"
 done
 
 # ---- 4. float against double (measured here: the knob table shows it too) -------------

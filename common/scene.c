@@ -21,6 +21,8 @@ void scene_init(scene *s)
     s->exposure = 1;
 }
 
+const char *scene_name(const scene *s) { return s->path ? s->path : "built-in scene"; }
+
 void scene_free(scene *s)
 {
     for (int k = 0; k < s->n_shaders; k++)

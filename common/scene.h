@@ -96,6 +96,9 @@ typedef struct {
 /* The defaults of docs/scenes.md: no surfaces, the default camera, exposure 1. */
 void scene_init(scene *s);
 
+/* What a message calls the scene: its path, or "built-in scene". */
+const char *scene_name(const scene *s);
+
 /* Reads `path`.  Returns 0, or -1 with "path:line: problem" in err (and s
  * left empty: nothing to free).  Mesh and texture paths are resolved against
  * the folder of `path`; meshes are loaded and texture images decoded, each

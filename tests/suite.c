@@ -90,6 +90,25 @@ void check_vec3_why(vec3 expected, vec3 actual, double tolerance, const char *in
     _fail(file, line);
 }
 
+double suite_uniform(unsigned long *state)
+{
+    *state = *state * 6364136223846793005UL + 1442695040888963407UL;
+    return (double)((*state >> 11) & ((1UL << 53) - 1)) / (double)(1UL << 53);
+}
+
+vec3 suite_random_unit(unsigned long *state)
+{
+    for (;;) {
+        double x = 2 * suite_uniform(state) - 1; /* one after the other: arguments have no order */
+        double y = 2 * suite_uniform(state) - 1;
+        double z = 2 * suite_uniform(state) - 1;
+        vec3 v = vec3_make((real)x, (real)y, (real)z);
+        real l = vec3_length(v);
+        if (l > (real)0.1 && l <= 1)
+            return vec3_scale(v, 1 / l);
+    }
+}
+
 const char *cornell_data(void)
 {
     static const char *const candidates[] = {"../shared/cornell/sp17-ray1/data", NULL};

@@ -80,6 +80,14 @@ void check_vec3_why(vec3 expected, vec3 actual, double tolerance, const char *in
  * for its message, which may be built from the one before. */
 const char *describe(const char *format, ...) __attribute__((format(printf, 1, 2)));
 
+/* A reproducible random sequence: a linear congruential generator whose
+ * state the suite seeds (a fixed seed: the same numbers on every run).
+ * suite_uniform: a double in [0, 1) from the top 53 bits of the state;
+ * suite_random_unit: a unit vector, uniform over directions (rejection from
+ * the cube, lengths 0.1 to 1 kept, then normalized). */
+double suite_uniform(unsigned long *state);
+vec3 suite_random_unit(unsigned long *state);
+
 /* The folder of the Cornell corpus (../shared/cornell/sp17-ray1/data, or
  * $RT_CORNELL), or NULL when it is absent: tests that use it skip then.
  * With RT_REQUIRE_CORNELL set (CI, where the corpus is always beside the

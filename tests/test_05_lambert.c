@@ -9,6 +9,7 @@
 #include "05_lambert/shading_stage.h"
 #include "05_lambert/tracer.h"
 #include "scene_build.h"
+#include "shading_suite.h"
 #include "suite.h"
 
 /* The Lambert term is a few roundings (a difference, a square root, a
@@ -151,18 +152,10 @@ static color record_shade(const tracer *tr, const shading_point *sp, int depth, 
     return shade_lambert(tr, sp, depth, rays);
 }
 
-static const shading_stage recording = {.name = "test", .shade = record_shade};
-
 static color trace_scene(const scene *desc, ray r)
 {
-    char err[256] = "";
-    shading_view *view = shading_prepare(&recording, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
-    if (!view)
-        fail_msg("%s", err);
     uint64_t rays[RAY_KINDS] = {0};
-    color c = trace(&view->tr, r, 0, REAL_INFINITY, 0, rays);
-    shading_release(view);
-    return c;
+    return suite_trace(desc, record_shade, NULL, r, rays);
 }
 
 static void test_back_of_triangle_lit(void **state)

@@ -4,12 +4,12 @@
 #include <stdlib.h>
 
 #include "05_lambert/lambert.h"
-#include "05_lambert/shading_stage.h"
 #include "06_shadows/acne.h"
 #include "06_shadows/shade_shadows.h"
 #include "06_shadows/shadow.h"
 #include "06_shadows/spawn.h"
 #include "scene_build.h"
+#include "shading_suite.h"
 #include "suite.h"
 
 /* A few roundings of values of size about 1 (see test_05_lambert.c). */
@@ -23,38 +23,13 @@ static const eps_policy policies[] = {EPS_NONE, EPS_FIXED, EPS_BOUND};
  * that its normal is +y; the eye looks down at it from above. */
 static const vec3 floor_centre = {20.25, 2, -10.5};
 
-static _Thread_local shading_point last;
-static color record(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
-{
-    (void)tr;
-    (void)depth;
-    (void)rays;
-    last = *sp;
-    return color_make(0, 0, 0);
-}
-static const shading_stage recording = {.name = "test", .shade = record};
-
-static void add_floor(scene *desc)
-{
-    vec3 c = floor_centre;
-    scene_add_surface(desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = -1,
-                                            .v0 = vec3_add(c, vec3_make(-30, 0, 30)),
-                                            .v1 = vec3_add(c, vec3_make(30, 0, 30)),
-                                            .v2 = vec3_add(c, vec3_make(0, 0, -40))});
-}
+static void add_floor(scene *desc) { suite_add_floor(desc, -1, floor_centre); }
 
 /* Prepares desc and finds the shading point the eye ray from `eye` to
  * `target` hits: the view stays alive for light_blocked (release it). */
 static shading_view *shade_at(const scene *desc, vec3 eye, vec3 target, shading_point *sp)
 {
-    char err[256] = "";
-    shading_view *view = shading_prepare(&recording, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
-    if (!view)
-        fail_msg("%s", err);
-    uint64_t rays[RAY_KINDS] = {0};
-    trace(&view->tr, (ray){eye, vec3_sub(target, eye)}, 0, REAL_INFINITY, 0, rays);
-    *sp = last;
-    return view;
+    return suite_shading_point(desc, NULL, (ray){eye, vec3_sub(target, eye)}, sp);
 }
 
 /* The point of the floor below the eye, a little off centre. */

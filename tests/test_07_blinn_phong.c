@@ -4,11 +4,11 @@
 #include <stdlib.h>
 
 #include "05_lambert/lambert.h"
-#include "05_lambert/shading_stage.h"
 #include "06_shadows/shadow.h"
 #include "07_blinn_phong/phong.h"
 #include "07_blinn_phong/shade_phong.h"
 #include "scene_build.h"
+#include "shading_suite.h"
 #include "suite.h"
 
 /* A few roundings of values of size about 1 (see test_05_lambert.c). */
@@ -144,16 +144,6 @@ static const vec3 floor_centre = {20.25, 2, -10.5};
 static const vec3 eye = {21.75, 9.5, -6.25};
 static const vec3 spot = {20.625, 2, -11.375};
 
-static _Thread_local shading_point last;
-static color record(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
-{
-    (void)tr;
-    (void)depth;
-    (void)rays;
-    last = *sp;
-    return color_make(0, 0, 0);
-}
-
 static void make_floor_scene(scene *desc, shader_kind kind)
 {
     scene_init(desc);
@@ -163,11 +153,7 @@ static void make_floor_scene(scene *desc, shader_kind kind)
     s.specular_color = color_make((real)0.5, (real)0.5, (real)0.5);
     s.exponent = 20;
     int shader = scene_add_shader(desc, s);
-    vec3 c = floor_centre;
-    scene_add_surface(desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = shader,
-                                            .v0 = vec3_add(c, vec3_make(-30, 0, 30)),
-                                            .v1 = vec3_add(c, vec3_make(30, 0, 30)),
-                                            .v2 = vec3_add(c, vec3_make(0, 0, -40))});
+    suite_add_floor(desc, shader, floor_centre);
 }
 
 /* Shades the floor point with shade_phong; counts its rays into `rays`. */
@@ -175,14 +161,7 @@ static color shade_spot(const scene *desc, phong_form form, uint64_t *rays, shad
 {
     static phong_knobs knobs;
     knobs = (phong_knobs){.spawn = {.eps = EPS_BOUND}, .form = form};
-    const shading_stage stage = {.name = "test", .shade = record, .shade_knobs = &knobs};
-    char err[256] = "";
-    shading_view *view = shading_prepare(&stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
-    if (!view)
-        fail_msg("%s", err);
-    uint64_t eye_rays[RAY_KINDS] = {0};
-    trace(&view->tr, (ray){eye, vec3_sub(spot, eye)}, 0, REAL_INFINITY, 0, eye_rays);
-    *sp = last;
+    shading_view *view = suite_shading_point(desc, &knobs, (ray){eye, vec3_sub(spot, eye)}, sp);
     color c = shade_phong(&view->tr, sp, 0, rays);
     shading_release(view);
     return c;

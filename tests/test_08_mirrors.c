@@ -3,13 +3,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "05_lambert/shading_stage.h"
 #include "08_mirrors/mirror.h"
 #include "08_mirrors/mirror_scene.h"
 #include "08_mirrors/path.h"
 #include "08_mirrors/shade_glazed.h"
-#include "display.h"
+#include "probe_shader.h"
 #include "scene_build.h"
+#include "shading_suite.h"
 #include "suite.h"
 
 /* A few roundings of values of size about 1 (see test_05_lambert.c). */
@@ -17,22 +17,7 @@
 
 static const vec3 far_point = {-37.25, 12.5, 53.125};
 
-/* A random unit vector (a fixed seed: the same vectors on every run). */
-static unsigned long rng = 12345;
-static double uniform(void)
-{
-    rng = rng * 6364136223846793005UL + 1442695040888963407UL;
-    return (double)((rng >> 11) & ((1UL << 53) - 1)) / (double)(1UL << 53);
-}
-static vec3 random_unit(void)
-{
-    for (;;) {
-        vec3 v = vec3_make((real)(2 * uniform() - 1), (real)(2 * uniform() - 1), (real)(2 * uniform() - 1));
-        real l = vec3_length(v);
-        if (l > (real)0.1 && l <= 1)
-            return vec3_scale(v, 1 / l);
-    }
-}
+static unsigned long rng = 12345; /* suite_uniform's state */
 
 /* ---- the mirror direction -------------------------------------------------------------------- */
 
@@ -75,8 +60,8 @@ static void test_reflect_random(void **state)
 {
     (void)state;
     for (int k = 0; k < 1000; k++) {
-        vec3 n = random_unit();
-        vec3 d = vec3_scale(random_unit(), (real)(0.1 + 10 * uniform()));
+        vec3 n = suite_random_unit(&rng);
+        vec3 d = vec3_scale(suite_random_unit(&rng), (real)(0.1 + 10 * suite_uniform(&rng)));
         real size = vec3_length(d);
         vec3 r = reflect(d, n);
         assert_close(size, vec3_length(r), TOL(4 * size));
@@ -90,50 +75,23 @@ static void test_reflect_random(void **state)
 
 /* ---- the recursive call ---------------------------------------------------------------------- */
 
-/* A probe: a shader that records the ray that reached it (and its depth)
- * and shows its diffuse colour; every other shader is glazed. */
-#define MAX_PROBES 8
-static _Thread_local struct {
-    int n;
-    ray r[MAX_PROBES];
-    int depth[MAX_PROBES];
-    color weight[MAX_PROBES];
-} probe;
-static int probe_shader = -1;
-
+/* The probe (probe_shader.h) shows its diffuse colour; every other shader is glazed. */
 static color probe_shade(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
-    if (sp->hit.shader == probe_shader && probe_shader >= 0) {
-        if (probe.n < MAX_PROBES) {
-            probe.r[probe.n] = sp->r;
-            probe.depth[probe.n] = depth;
-            probe.weight[probe.n] = path_weight(tr, depth);
-        }
-        probe.n++;
+    if (probe_took(tr, sp, depth))
         return tr->desc->shaders[probe_shader].diffuse_color;
-    }
     return shade_glazed(tr, sp, depth, rays);
 }
 
 static path_knobs knobs_of(int depth, real min_weight)
 {
-    return (path_knobs){.phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
-                        .depth = depth,
-                        .min_weight = min_weight};
+    return (path_knobs){.phong = PHONG_KNOBS_DEFAULT, .depth = depth, .min_weight = min_weight};
 }
 
 /* Traces one eye ray through desc with the glazed shader (and the probe). */
 static color trace_one(const scene *desc, const path_knobs *knobs, ray r, uint64_t *rays)
 {
-    char err[256] = "";
-    const shading_stage stage = {.name = "test", .shade = probe_shade, .shade_knobs = knobs};
-    shading_view *view = shading_prepare(&stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
-    if (!view)
-        fail_msg("%s", err);
-    probe.n = 0;
-    color c = trace(&view->tr, r, 0, REAL_INFINITY, 0, rays);
-    shading_release(view);
-    return c;
+    return probe_trace(desc, probe_shade, knobs, r, rays);
 }
 
 /* A count (rays, probe hits, depth) against the expected one, with the
@@ -246,12 +204,7 @@ static void test_glazed_adds_to_chapter_07(void **state)
         probe_shader = -1;
         color L = trace_one(&desc, &knobs, (ray){eye, vec3_sub(far_point, eye)}, rays);
         /* chapter 07 alone on the same point */
-        const shading_stage stage_07 = {.name = "test", .shade = shade_phong, .shade_knobs = &knobs.phong};
-        char err[256] = "";
-        shading_view *view = shading_prepare(&stage_07, &desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
-        assert_non_null(view);
-        color L_07 = trace(&view->tr, (ray){eye, vec3_sub(far_point, eye)}, 0, REAL_INFINITY, 0, rays_07);
-        shading_release(view);
+        color L_07 = suite_trace(&desc, shade_phong, &knobs.phong, (ray){eye, vec3_sub(far_point, eye)}, rays_07);
         assert_true(L_07.r > 0.01); /* lit: the light is on the viewer's side */
         const char *input = describe("a glazed Phong plane, k_m = %s, one light, the backColor in the mirror direction",
                                      mirror ? "(0.5, 0.25, 0.125)" : "0");
@@ -332,11 +285,8 @@ static void test_convex_mirror_never_sees_itself(void **state)
         int m = add_shader(&desc, SHADER_LAMBERTIAN, color_make(0, 0, 0), color_make(1, 1, 1));
         scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = m, .center = c, .radius = s});
         path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
-        char err[256] = "";
         probe_shader = -1;
-        const shading_stage stage = {.name = "test", .shade = probe_shade, .shade_knobs = &knobs};
-        shading_view *view = shading_prepare(&stage, &desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
-        assert_non_null(view);
+        shading_view *view = suite_view(&desc, probe_shade, &knobs);
         vec3 eye = vec3_add(c, vec3_scale(vec3_make(1, 2, 2), s)); /* 3 s from the centre */
         vec3 to_c = vec3_normalize(vec3_sub(c, eye));
         vec3 u = vec3_normalize(vec3_cross(to_c, vec3_make(0, 1, 0))), w = vec3_cross(u, to_c);
@@ -371,17 +321,7 @@ static void test_convex_mirror_never_sees_itself(void **state)
 /* Renders desc at w x h with the glazed shader and knobs. */
 static render_stats render_glazed(const scene *desc, const path_knobs *knobs, image *img, int w, int h)
 {
-    char err[256] = "";
-    const shading_stage stage = {.name = "test", .shade = shade_glazed, .shade_knobs = knobs};
-    shading_view *view = shading_prepare(&stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
-    if (!view)
-        fail_msg("%s", err);
-    if (image_init(img, w, h) != 0)
-        fail_msg("out of memory");
-    render_options opt = {.samples = 1, .threads = 2};
-    render_stats stats = render_image(img, shading_sample, view, &opt);
-    shading_release(view);
-    return stats;
+    return suite_render(desc, shade_glazed, knobs, img, w, h);
 }
 
 /* The furnace: a mirror sphere (k_m = 1, black diffuse) in a uniform
@@ -404,13 +344,7 @@ static void test_furnace_mirror_sphere(void **state)
     path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
     image img;
     render_stats stats = render_glazed(&desc, &knobs, &img, side, side);
-    uint8_t back = display_encode(desc.back_color.g, 1);
-    int worst = 0;
-    for (int k = 0; k < side * side; k++) {
-        int diff = abs((int)display_encode(img.pixels[k].g, 1) - back);
-        worst = diff > worst ? diff : worst;
-    }
-    assert_true(worst <= 2);
+    assert_true(suite_worst_byte(&img, desc.back_color.g) <= 2);
     assert_true(stats.by_kind[RAY_REFLECTED] > (uint64_t)side * side / 4); /* the sphere is big in the view */
     image_free(&img);
     knobs.depth = 0;

@@ -4,14 +4,14 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "05_lambert/shading_stage.h"
 #include "08_mirrors/mirror_scene.h"
 #include "09_refraction/fresnel.h"
 #include "09_refraction/glass_scene.h"
 #include "09_refraction/refract.h"
 #include "09_refraction/shade_glass.h"
-#include "display.h"
+#include "probe_shader.h"
 #include "scene_build.h"
+#include "shading_suite.h"
 #include "suite.h"
 
 /* A few roundings of values of size about 1 (see test_05_lambert.c). */
@@ -19,22 +19,7 @@
 
 static const double pi = 3.14159265358979323846;
 
-/* A random unit vector (a fixed seed: the same vectors on every run). */
-static unsigned long rng = 977;
-static double uniform(void)
-{
-    rng = rng * 6364136223846793005UL + 1442695040888963407UL;
-    return (double)((rng >> 11) & ((1UL << 53) - 1)) / (double)(1UL << 53);
-}
-static vec3 random_unit(void)
-{
-    for (;;) {
-        vec3 v = vec3_make((real)(2 * uniform() - 1), (real)(2 * uniform() - 1), (real)(2 * uniform() - 1));
-        real l = vec3_length(v);
-        if (l > (real)0.1 && l <= 1)
-            return vec3_scale(v, 1 / l);
-    }
-}
+static unsigned long rng = 977; /* suite_uniform's state */
 
 /* A unit vector perpendicular to the unit vector n. */
 static vec3 tangent_of(vec3 n)
@@ -57,7 +42,7 @@ static void test_refract_normal_incidence(void **state)
 {
     (void)state;
     for (int k = 0; k < 20; k++) {
-        vec3 n = random_unit();
+        vec3 n = suite_random_unit(&rng);
         vec3 d = vec3_neg(n);
         const real etas[][2] = {{1, 1.5}, {1.5, 1}, {1, 2.42}, {1.33, 1.5}};
         for (int e = 0; e < 4; e++) {
@@ -75,8 +60,8 @@ static void test_refract_equal_indices(void **state)
 {
     (void)state;
     for (int k = 0; k < 200; k++) {
-        vec3 n = random_unit(), t = tangent_of(n);
-        double theta = 89 * uniform() * pi / 180;
+        vec3 n = suite_random_unit(&rng), t = tangent_of(n);
+        double theta = 89 * suite_uniform(&rng) * pi / 180;
         vec3 d = incoming(n, t, theta);
         vec3 T;
         real cos_t;
@@ -98,8 +83,8 @@ static void test_snell_law(void **state)
     for (int k = 0; k < 1000; k++) {
         real eta_i = etas[k % 4][0], eta_t = etas[k % 4][1];
         double limit = eta_i > eta_t ? asin((double)(eta_t / eta_i)) : pi / 2;
-        double theta_i = 0.98 * limit * uniform();
-        vec3 n = random_unit(), t = tangent_of(n);
+        double theta_i = 0.98 * limit * suite_uniform(&rng);
+        vec3 n = suite_random_unit(&rng), t = tangent_of(n);
         vec3 d = incoming(n, t, theta_i), T;
         real cos_t;
         const char *input = describe("refract at theta_i = %.2f degrees from eta %g into %g", theta_i * 180 / pi,
@@ -279,7 +264,7 @@ static void test_r_plus_t(void **state)
     int checked = 0;
     for (int e = 0; e < 2; e++) {
         real eta_i = etas[e][0], eta_t = etas[e][1];
-        vec3 n = random_unit(), tan_ = tangent_of(n);
+        vec3 n = suite_random_unit(&rng), tan_ = tangent_of(n);
         for (int k = 0; k < 89; k++) {
             vec3 d = incoming(n, tan_, k * pi / 180), T;
             real cos_t, cos_i = -vec3_dot(d, n);
@@ -338,47 +323,23 @@ static void test_schlick_cosines(void **state)
 
 /* ---- glass in a scene ----------------------------------------------------------------------- */
 
-/* A probe shader records the rays that reach it, with their depth. */
-#define MAX_PROBES 16
-static _Thread_local struct {
-    int n;
-    ray r[MAX_PROBES];
-    int depth[MAX_PROBES];
-} probe;
-static int probe_shader = -1;
-
+/* The probe (probe_shader.h) is white; every other shader is glass. */
 static color probe_shade(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
-    if (probe_shader >= 0 && sp->hit.shader == probe_shader) {
-        if (probe.n < MAX_PROBES) {
-            probe.r[probe.n] = sp->r;
-            probe.depth[probe.n] = depth;
-        }
-        probe.n++;
+    if (probe_took(tr, sp, depth))
         return color_make(1, 1, 1);
-    }
     return shade_glass(tr, sp, depth, rays);
 }
 
 static glass_knobs knobs_of(int depth, real min_weight)
 {
-    return (glass_knobs){.path = {.phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
-                                  .depth = depth,
-                                  .min_weight = min_weight},
+    return (glass_knobs){.path = {.phong = PHONG_KNOBS_DEFAULT, .depth = depth, .min_weight = min_weight},
                          .fresnel = FRESNEL_EXACT};
 }
 
 static color trace_one(const scene *desc, const glass_knobs *knobs, ray r, uint64_t *rays)
 {
-    char err[256] = "";
-    const shading_stage stage = {.name = "test", .shade = probe_shade, .shade_knobs = knobs};
-    shading_view *view = shading_prepare(&stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
-    if (!view)
-        fail_msg("%s", err);
-    probe.n = 0;
-    color c = trace(&view->tr, r, 0, REAL_INFINITY, 0, rays);
-    shading_release(view);
-    return c;
+    return probe_trace(desc, probe_shade, knobs, r, rays);
 }
 
 static int add_glass(scene *desc, real eta)
@@ -523,29 +484,7 @@ static void test_total_internal_reflection_rays(void **state)
 
 static render_stats render_glass(const scene *desc, const glass_knobs *knobs, image *img, int w, int h)
 {
-    char err[256] = "";
-    const shading_stage stage = {.name = "test", .shade = shade_glass, .shade_knobs = knobs};
-    shading_view *view = shading_prepare(&stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
-    if (!view)
-        fail_msg("%s", err);
-    if (image_init(img, w, h) != 0)
-        fail_msg("out of memory");
-    render_options opt = {.samples = 1, .threads = 2};
-    render_stats stats = render_image(img, shading_sample, view, &opt);
-    shading_release(view);
-    return stats;
-}
-
-/* The largest difference, in display bytes of the green channel, between
- * img and a uniform radiance. */
-static int worst_byte(const image *img, real uniform)
-{
-    int back = display_encode(uniform, 1), worst = 0;
-    for (long k = 0; k < (long)img->width * img->height; k++) {
-        int diff = abs((int)display_encode(img->pixels[k].g, 1) - back);
-        worst = diff > worst ? diff : worst;
-    }
-    return worst;
+    return suite_render(desc, shade_glass, knobs, img, w, h);
 }
 
 /* The furnace: a glass sphere (eta 1.5) in a uniform background, no lights:
@@ -570,7 +509,7 @@ static void test_furnace_glass_sphere(void **state)
         knobs.fresnel = mode;
         image img;
         render_stats stats = render_glass(&desc, &knobs, &img, side, side);
-        int worst = worst_byte(&img, (real)0.5);
+        int worst = suite_worst_byte(&img, (real)0.5);
         if (worst > 2)
             fail_msg("--fresnel=%s: a pixel %d/255 off the background", fresnel_mode_names[mode], worst);
         assert_true(stats.by_kind[RAY_REFRACTED] > (uint64_t)side * side / 4);
@@ -579,7 +518,7 @@ static void test_furnace_glass_sphere(void **state)
     knobs = knobs_of(2, PATH_DEFAULT_MIN_WEIGHT);
     image img;
     render_glass(&desc, &knobs, &img, side, side);
-    assert_true(worst_byte(&img, (real)0.5) > 2);
+    assert_true(suite_worst_byte(&img, (real)0.5) > 2);
     image_free(&img);
     scene_free(&desc);
 }

@@ -277,30 +277,29 @@ static void test_file_errors(void **state)
     write_file("not-an-image.png", "plain text");
     expect_error("<scene>\n<texture type=\"RepeatTexture\">\n<image>not-an-image.png</image></texture></scene>", 3,
                  "not-an-image.png: not a PNG file");
-    /* a broken mesh: the message names the scene line and the mesh's own line */
-    write_file("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n");
-    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad.obj</data></surface></scene>", 3,
-                 "bad.obj:4: face refers to a missing vertex index 7");
-    write_file("bad2.obj", "v 0 0 zero\n");
-    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad2.obj</data></surface></scene>", 3,
-                 "bad2.obj:1: missing or malformed number");
-    write_file("bad3.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n");
-    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad3.obj</data></surface></scene>", 3,
-                 "bad3.obj:3: a face needs at least 3 corners");
-    write_file("bad5.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/0 2/1 3/1\n");
-    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad5.obj</data></surface></scene>", 3,
-                 "bad5.obj:5: face refers to a missing texture coordinate index 0");
-    /* the first bad index is named: the texture coordinate, not the normal */
-    write_file("bad6.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2/3 2/2/3 3/2/3\n");
-    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad6.obj</data></surface></scene>", 3,
-                 "bad6.obj:4: face refers to a missing texture coordinate index 2");
-    /* a coordinate beyond what `real` holds (only float: 1e39 > FLT_MAX) */
-    write_file("bad7.obj", REAL_MAX < 1e39 ? "v 1e39 0 0\n" : "v 1e400 0 0\n");
-    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad7.obj</data></surface></scene>", 3,
-                 "bad7.obj:1: missing or malformed number");
-    write_file("bad4.obj", "v 0 0 0\ncurv 1 2\n");
-    expect_error("<scene>\n<surface type=\"Mesh\">\n<data>bad4.obj</data></surface></scene>", 3,
-                 "bad4.obj:2: unknown statement: curv");
+    /* broken meshes: the message names the scene line and the mesh's own line */
+    const struct {
+        const char *name, *text, *words;
+    } meshes[] = {
+        {"bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n", "bad.obj:4: face refers to a missing vertex index 7"},
+        {"bad2.obj", "v 0 0 zero\n", "bad2.obj:1: missing or malformed number"},
+        {"bad3.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n", "bad3.obj:3: a face needs at least 3 corners"},
+        {"bad5.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/0 2/1 3/1\n",
+         "bad5.obj:5: face refers to a missing texture coordinate index 0"},
+        /* the first bad index is named: the texture coordinate, not the normal */
+        {"bad6.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/2/3 2/2/3 3/2/3\n",
+         "bad6.obj:4: face refers to a missing texture coordinate index 2"},
+        /* a coordinate beyond what `real` holds (only float: 1e39 > FLT_MAX) */
+        {"bad7.obj", REAL_MAX < 1e39 ? "v 1e39 0 0\n" : "v 1e400 0 0\n", "bad7.obj:1: missing or malformed number"},
+        {"bad4.obj", "v 0 0 0\ncurv 1 2\n", "bad4.obj:2: unknown statement: curv"},
+    };
+    for (size_t k = 0; k < sizeof meshes / sizeof meshes[0]; k++) {
+        char text[256];
+        write_file(meshes[k].name, meshes[k].text);
+        snprintf(text, sizeof text, "<scene>\n<surface type=\"Mesh\">\n<data>%s</data></surface></scene>",
+                 meshes[k].name);
+        expect_error(text, 3, meshes[k].words);
+    }
     scene s;
     char err[512];
     assert_int_equal(-1, scene_load("/nonexistent/scene.xml", &s, err, sizeof err));

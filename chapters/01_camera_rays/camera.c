@@ -56,8 +56,7 @@ bool camera_from_scene(camera *cam, const scene *desc, char *err, size_t err_siz
 {
     const char *problem = camera_init(cam, &desc->camera);
     if (problem)
-        snprintf(err, err_size, "%s:%d: camera: %s", desc->path ? desc->path : "built-in scene", desc->camera.line,
-                 problem);
+        snprintf(err, err_size, "%s:%d: camera: %s", scene_name(desc), desc->camera.line, problem);
     return problem == NULL;
 }
 

@@ -79,7 +79,7 @@ static void release(void *prepared)
 
 static void *prepare(const scene *desc, char *err, size_t err_size)
 {
-    const char *where = desc->path ? desc->path : "built-in scene";
+    const char *where = scene_name(desc);
     stage *st = calloc(1, sizeof *st);
     if (st)
         st->spheres = malloc(((size_t)desc->n_surfaces + 1) * sizeof *st->spheres);

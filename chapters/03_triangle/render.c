@@ -209,7 +209,7 @@ static void release(void *prepared)
 
 static void *prepare(const scene *desc, char *err, size_t err_size)
 {
-    const char *where = desc->path ? desc->path : "built-in scene";
+    const char *where = scene_name(desc);
     if (cracks_steps < 0 || cracks_steps > 1 << 16) {
         snprintf(err, err_size, "--cracks=%d: must be from 0 (off) to 65536", cracks_steps);
         return NULL;

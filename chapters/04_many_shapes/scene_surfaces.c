@@ -40,8 +40,8 @@ int surface_list_from_scene(surface_list *list, const scene *desc, char *err, si
 {
     for (int k = 0; k < desc->n_surfaces; k++) {
         if (add_scene_surface(list, desc, k) != 0) {
-            snprintf(err, err_size, "%s:%d: out of memory for the surface list",
-                     desc->path ? desc->path : "built-in scene", desc->surfaces[k].line);
+            snprintf(err, err_size, "%s:%d: out of memory for the surface list", scene_name(desc),
+                     desc->surfaces[k].line);
             return -1;
         }
     }

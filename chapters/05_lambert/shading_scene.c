@@ -1,6 +1,7 @@
 /* shading_scene.c - chapter 05: the built-in scene of the shading chapters. */
 #include "05_lambert/shading_scene.h"
 
+#include "04_many_shapes/shapes_scene.h"
 #include "scene_build.h"
 
 static int add_shader(scene *desc, shader_kind kind, color diffuse, color specular, real exponent)
@@ -15,16 +16,7 @@ static int add_shader(scene *desc, shader_kind kind, color diffuse, color specul
 /* snippet: shading_scene */
 int shading_scene(scene *desc)
 {
-    desc->has_camera = true;
-    desc->camera = (scene_camera){
-        .kind = CAMERA_PERSPECTIVE,
-        .view_point = {0, 2.2, 6.5},
-        .view_dir = {0, -0.3, -1},
-        .view_up = {0, 1, 0},
-        .proj_distance = 2,
-        .view_width = 2,
-        .view_height = 2,
-    };
+    shapes_view(desc); /* chapter 04's camera on chapter 04's layout */
     desc->back_color = color_make((real)0.02, (real)0.03, (real)0.05);
     desc->ambient = color_make((real)0.01, (real)0.01, (real)0.012);
     desc->exposure = (real)1.6;
@@ -41,11 +33,9 @@ int shading_scene(scene *desc)
     for (int k = 0; k < 6; k++)
         if (shader[k] < 0)
             return -1;
-    const scene_surface surfaces[] = {
-        {.kind = SURFACE_BOX, .shader = shader[0], .min_pt = {-5, -0.2, -5}, .max_pt = {5, 0, 5}},
-        {.kind = SURFACE_SPHERE, .shader = shader[1], .center = {-0.7, 0.9, -0.3}, .radius = 0.9},
-        {.kind = SURFACE_SPHERE, .shader = shader[2], .center = {0.5, 0.6, 0.4}, .radius = 0.6},
-        {.kind = SURFACE_BOX, .shader = shader[3], .min_pt = {0.75, 0, -0.7}, .max_pt = {1.95, 1.1, 0.8}},
+    if (shapes_add_solids(desc, shader) < 0) /* chapter 04's floor, spheres and box */
+        return -1;
+    const scene_surface surfaces[] = { /* the triangle leans back, the small sphere floats */
         {.kind = SURFACE_TRIANGLE, .shader = shader[4], .v0 = {-2.3, 0, -1.2}, .v1 = {0.1, 0, -1.2},
          .v2 = {-1.1, 2.4, -2.4}},
         {.kind = SURFACE_SPHERE, .shader = shader[5], .center = {-0.2, 0.9, 1.6}, .radius = 0.3},

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 
 #include "04_many_shapes/scene_surfaces.h"
+#include "04_many_shapes/shape_knobs.h"
 #include "05_lambert/shading_scene.h"
 #include "renderer.h"
 
@@ -32,7 +33,7 @@ shading_view *shading_prepare(const shading_stage *stage, const scene *desc, sph
 {
     shading_view *view = calloc(1, sizeof *view);
     if (!view) {
-        snprintf(err, err_size, "%s: out of memory", desc->path ? desc->path : "built-in scene");
+        snprintf(err, err_size, "%s: out of memory", scene_name(desc));
         return NULL;
     }
     surface_list_init(&view->list, formula, test);
@@ -64,20 +65,13 @@ color shading_sample(const void *view, real u, real v, uint64_t *rays)
 /* end snippet */
 
 /* ---- the renderer: renderer.h's callbacks take no context, so the stage
- * being run and the knobs of chapters 02-03 are kept here. */
+ * being run is kept here (and the knobs of chapters 02-03 in shape_knobs.c). */
 
 static const shading_stage *current;
-static const char *const sphere_choices[] = {"robust", "textbook", NULL};
-static const sphere_formula sphere_formulas[] = {SPHERE_ROBUST, SPHERE_TEXTBOOK};
-static int sphere_choice = 0;
-static const char *const triangle_choices[] = {"cramer", "watertight", NULL};
-static const triangle_test triangle_tests[] = {TRIANGLE_CRAMER, TRIANGLE_WATERTIGHT};
-static int triangle_choice = 1; /* crack-free from chapter 04 on */
 
 static void *prepare(const scene *desc, char *err, size_t err_size)
 {
-    return shading_prepare(current, desc, sphere_formulas[sphere_choice], triangle_tests[triangle_choice], err,
-                           err_size);
+    return shading_prepare(current, desc, chosen_sphere_formula(), chosen_triangle_test(), err, err_size);
 }
 
 static void release(void *view) { shading_release(view); }
@@ -86,22 +80,21 @@ static void release(void *view) { shading_release(view); }
 
 int shading_main(const shading_stage *stage, int argc, char **argv)
 {
-    knob knobs[2 + MAX_STAGE_KNOBS] = {
-        {"sphere", KNOB_CHOICE, &sphere_choice, sphere_choices, "ray-sphere formula (chapter 02)"},
-        {"triangle", KNOB_CHOICE, &triangle_choice, triangle_choices, "ray-triangle test (chapter 03)"},
-    };
+    knob knobs[SHAPE_KNOBS + MAX_STAGE_KNOBS];
     if (stage->n_knobs > MAX_STAGE_KNOBS) {
         fprintf(stderr, "%s: too many knobs (%d > %d)\n", stage->name, stage->n_knobs, MAX_STAGE_KNOBS);
         return 2;
     }
+    for (int k = 0; k < SHAPE_KNOBS; k++) /* --sphere and --triangle first */
+        knobs[k] = shape_knobs[k];
     for (int k = 0; k < stage->n_knobs; k++)
-        knobs[2 + k] = stage->knobs[k];
+        knobs[SHAPE_KNOBS + k] = stage->knobs[k];
     current = stage;
     const renderer r = {
         .name = stage->name,
         .summary = stage->summary,
         .knobs = knobs,
-        .n_knobs = 2 + stage->n_knobs,
+        .n_knobs = SHAPE_KNOBS + stage->n_knobs,
         .modelled = stage->modelled,
         .default_width = 512,
         .default_height = 512,

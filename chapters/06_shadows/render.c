@@ -15,7 +15,7 @@
 #include "06_shadows/acne.h"
 #include "06_shadows/shade_shadows.h"
 
-static spawn_knobs settings = {.eps = EPS_BOUND};
+static spawn_knobs settings = SPAWN_KNOBS_DEFAULT;
 
 static const knob knobs[] = {
     {"shadow-eps", KNOB_CHOICE, &settings.eps, eps_policy_names,

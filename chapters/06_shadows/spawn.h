@@ -45,6 +45,9 @@ typedef struct {
 } spawn_knobs;
 /* end snippet */
 
+/* The defaults, an initializer: the error bound. */
+#define SPAWN_KNOBS_DEFAULT {.eps = EPS_BOUND}
+
 /* The policy of a tracer whose knobs begin with spawn_knobs (chapters 06-11);
  * the default when tr->knobs is NULL. */
 eps_policy tracer_eps(const tracer *tr);

@@ -11,7 +11,7 @@
 #include "05_lambert/shading_stage.h"
 #include "07_blinn_phong/shade_phong.h"
 
-static phong_knobs settings = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE};
+static phong_knobs settings = PHONG_KNOBS_DEFAULT;
 
 static const knob knobs[] = {
     {"shadow-eps", KNOB_CHOICE, &settings.spawn.eps, eps_policy_names,

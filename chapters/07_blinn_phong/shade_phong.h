@@ -28,6 +28,9 @@ typedef struct {
 } phong_knobs;
 /* end snippet */
 
+/* The defaults, an initializer: chapter 06's, and the course's form. */
+#define PHONG_KNOBS_DEFAULT {.spawn = SPAWN_KNOBS_DEFAULT, .form = PHONG_COURSE}
+
 /* The form of a tracer whose knobs begin with phong_knobs (chapters 07-11);
  * the course's when tr->knobs is NULL. */
 phong_form tracer_phong_form(const tracer *tr);

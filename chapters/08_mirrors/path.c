@@ -3,11 +3,7 @@
 
 const path_knobs *tracer_path_knobs(const tracer *tr)
 {
-    static const path_knobs defaults = {
-        .phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
-        .depth = PATH_DEFAULT_DEPTH,
-        .min_weight = PATH_DEFAULT_MIN_WEIGHT,
-    };
+    static const path_knobs defaults = PATH_KNOBS_DEFAULT;
     return tr->knobs ? (const path_knobs *)tr->knobs : &defaults;
 }
 

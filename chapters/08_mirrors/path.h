@@ -42,6 +42,9 @@ typedef struct {
 /* The defaults of --depth and --min-weight (measured in the README). */
 #define PATH_DEFAULT_DEPTH 32
 #define PATH_DEFAULT_MIN_WEIGHT ((real)1e-3)
+/* The defaults, an initializer: chapter 07's, and the two above. */
+#define PATH_KNOBS_DEFAULT \
+    {.phong = PHONG_KNOBS_DEFAULT, .depth = PATH_DEFAULT_DEPTH, .min_weight = PATH_DEFAULT_MIN_WEIGHT}
 /* --depth beyond this counts as this: the recursion must not exhaust the stack. */
 #define PATH_MAX_DEPTH 256
 

@@ -19,11 +19,7 @@
 #include "08_mirrors/self_hit.h"
 #include "08_mirrors/shade_glazed.h"
 
-static path_knobs settings = {
-    .phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
-    .depth = PATH_DEFAULT_DEPTH,
-    .min_weight = PATH_DEFAULT_MIN_WEIGHT,
-};
+static path_knobs settings = PATH_KNOBS_DEFAULT;
 
 static const knob knobs[] = {
     {"shadow-eps", KNOB_CHOICE, &settings.phong.spawn.eps, eps_policy_names,

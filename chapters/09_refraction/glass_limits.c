@@ -107,6 +107,19 @@ static void r_plus_t(FILE *out)
     fprintf(out, "# R + T = 1: build worst|R+T-1|\nr_plus_t %s %.3g\n", REAL_NAME, worst);
 }
 
+/* A ray into the glass and out again, refracted at both surfaces: true with
+ * the second event e2 and where it left (sp2); false when it is lost,
+ * reflected at either surface or not leaving through the far side. */
+static bool pass_through(const surface_list *list, ray in, shading_point *sp2, glass_event *e2)
+{
+    shading_point sp1;
+    glass_event e1;
+    if (!meet(list, in, &sp1, &e1) || !e1.transmits || !meet(list, spawn_ray(&sp1, e1.T, EPS_BOUND), sp2, e2) ||
+        !e2->transmits || vec3_dot(sp2->hit.normal, e1.T) <= 0)
+        return false;
+    return true;
+}
+
 static void sphere_centre(FILE *out)
 {
     const real scales[] = {(real)1e-4, (real)1e-2, 1, (real)1e2, (real)1e4, (real)1e6, (real)1e8};
@@ -125,11 +138,9 @@ static void sphere_centre(FILE *out)
         for (int j = 0; j < 200; j++) {
             vec3 along = spread(j, 200);
             ray in = {vec3_sub(c, vec3_scale(along, 3 * s)), along};
-            shading_point sp1, sp2;
-            glass_event e1, e2;
-            if (!meet(&list, in, &sp1, &e1) || !e1.transmits ||
-                !meet(&list, spawn_ray(&sp1, e1.T, EPS_BOUND), &sp2, &e2) || !e2.transmits ||
-                vec3_dot(sp2.hit.normal, e1.T) <= 0) {
+            shading_point sp2;
+            glass_event e2;
+            if (!pass_through(&list, in, &sp2, &e2)) {
                 lost++;
                 continue;
             }
@@ -168,11 +179,9 @@ static void slab(FILE *out)
                 vec3 d = {(real)(sin(theta) * cos(phi)), (real)-cos(theta), (real)(sin(theta) * sin(phi))};
                 vec3 entry = vec3_add(c, vec3_scale(vec3_make((real)cos(j), 0, (real)sin(j)), s));
                 ray in = {vec3_sub(entry, vec3_scale(d, s)), d};
-                shading_point sp1, sp2;
-                glass_event e1, e2;
-                if (!meet(&list, in, &sp1, &e1) || !e1.transmits ||
-                    !meet(&list, spawn_ray(&sp1, e1.T, EPS_BOUND), &sp2, &e2) || !e2.transmits ||
-                    vec3_dot(sp2.hit.normal, e1.T) <= 0) {
+                shading_point sp2;
+                glass_event e2;
+                if (!pass_through(&list, in, &sp2, &e2)) {
                     lost++;
                     continue;
                 }

@@ -21,12 +21,7 @@
 #include "09_refraction/glass_scene.h"
 #include "09_refraction/shade_glass.h"
 
-static glass_knobs settings = {
-    .path = {.phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
-             .depth = PATH_DEFAULT_DEPTH,
-             .min_weight = PATH_DEFAULT_MIN_WEIGHT},
-    .fresnel = FRESNEL_EXACT,
-};
+static glass_knobs settings = GLASS_KNOBS_DEFAULT;
 
 static const knob knobs[] = {
     {"shadow-eps", KNOB_CHOICE, &settings.path.phong.spawn.eps, eps_policy_names,

@@ -42,6 +42,9 @@ typedef struct {
 } glass_knobs;
 /* end snippet */
 
+/* The defaults, an initializer: chapter 08's, and Fresnel's exact equations. */
+#define GLASS_KNOBS_DEFAULT {.path = PATH_KNOBS_DEFAULT, .fresnel = FRESNEL_EXACT}
+
 /* The Fresnel mode of a tracer whose knobs begin with glass_knobs (chapters
  * 09-11); exact when tr->knobs is NULL. */
 fresnel_mode tracer_fresnel(const tracer *tr);

@@ -24,7 +24,7 @@ static void face_query_release(void *owned)
 int face_query_build(const surface_list *list, const scene *desc, build_query_fn inner, hit_query *q, char *err,
                      size_t err_size)
 {
-    const char *path = desc->path ? desc->path : "built-in scene";
+    const char *path = scene_name(desc);
     face_query *fq = calloc(1, sizeof *fq);
     if (!fq || !(fq->first = malloc(sizeof *fq->first * (size_t)(desc->n_surfaces > 0 ? desc->n_surfaces : 1)))) {
         free(fq);

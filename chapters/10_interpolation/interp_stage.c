@@ -3,15 +3,7 @@
 
 #include "10_interpolation/interp_scene.h"
 
-interp_knobs interp_settings = {
-    .earlier = {.path = {.phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
-                         .depth = PATH_DEFAULT_DEPTH,
-                         .min_weight = PATH_DEFAULT_MIN_WEIGHT},
-                .fresnel = FRESNEL_EXACT},
-    .normals = NORMALS_INTERPOLATED,
-    .filter = TEXTURE_NEAREST,
-    .below = BELOW_FLIP,
-};
+interp_knobs interp_settings = INTERP_KNOBS_DEFAULT;
 
 static const knob interp_knob_list[] = {
     {"shadow-eps", KNOB_CHOICE, &interp_settings.earlier.path.phong.spawn.eps, eps_policy_names,

@@ -15,15 +15,7 @@ static color shade_earlier(const tracer *tr, const shading_point *sp, int depth,
 
 static const interp_knobs *knobs_of(const tracer *tr)
 {
-    static const interp_knobs defaults = {
-        .earlier = {.path = {.phong = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE},
-                             .depth = PATH_DEFAULT_DEPTH,
-                             .min_weight = PATH_DEFAULT_MIN_WEIGHT},
-                    .fresnel = FRESNEL_EXACT},
-        .normals = NORMALS_INTERPOLATED,
-        .filter = TEXTURE_NEAREST,
-        .below = BELOW_FLIP,
-    };
+    static const interp_knobs defaults = INTERP_KNOBS_DEFAULT;
     return tr->knobs ? (const interp_knobs *)tr->knobs : &defaults;
 }
 

@@ -32,6 +32,11 @@ typedef struct {
 } interp_knobs;
 /* end snippet */
 
+/* The defaults, an initializer: chapter 09's, interpolated normals, the
+ * nearest texel (the course's images), mirror directions flipped above. */
+#define INTERP_KNOBS_DEFAULT \
+    {.earlier = GLASS_KNOBS_DEFAULT, .normals = NORMALS_INTERPOLATED, .filter = TEXTURE_NEAREST, .below = BELOW_FLIP}
+
 /* What the point looks like to the shading: the shading point with the
  * interpolated normal (and, for mirror and glass points, the normal that
  * keeps the mirror direction above the surface), whether it has texture
