@@ -92,7 +92,7 @@ IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
         handout handout-libs reference-libs \
         figure-renderers figures check-figures snippets check-snippets check-links check fuzz fuzz-build deps-fuzz \
-        test-extremes check-grid-images
+        test-extremes check-grid-images globe-texture
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -326,6 +326,14 @@ FIG_FLOAT := $(patsubst float/%,$(FIG_BUILD)-float/%/render,$(filter float/%,$(F
 $(BUILD)/tools/panels: $(BUILD)/obj/tools/panels.o
 	@mkdir -p $(@D)
 	$(CC) $^ -lstb -lm -o $@
+
+# chapters/10_interpolation/scenes/globe.png is globe_texture's map (sphere_mesh.h) as a file.
+$(BUILD)/tools/globe-png: $(call objs,tools/globe-png.c chapters/10_interpolation/sphere_mesh.c $(COMMON_SRC))
+	@mkdir -p $(@D)
+	$(call link,$^) -lstb -o $@
+
+globe-texture: $(BUILD)/tools/globe-png
+	$(BUILD)/tools/globe-png chapters/10_interpolation/scenes/globe.png
 
 figure-renderers:
 	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_BUILD)/tools/panels
