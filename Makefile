@@ -442,6 +442,7 @@ help:
 	@echo "                     a student's copy plus setup.sh and run_autograder (docs/instructor-guide.md)"
 	@echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
+	@echo "make globe-texture   write chapter 10's scenes/globe.png from globe_texture (sphere_mesh.c)"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
 	@echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-grid-images"
 	@echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"
