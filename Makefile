@@ -92,7 +92,7 @@ IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
         handout handout-libs reference-libs \
         figure-renderers figures check-figures snippets check-snippets check-links check fuzz fuzz-build deps-fuzz \
-        test-extremes check-grid-images
+        test-extremes check-grid-images globe-texture
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -327,6 +327,14 @@ $(BUILD)/tools/panels: $(BUILD)/obj/tools/panels.o
 	@mkdir -p $(@D)
 	$(CC) $^ -lstb -lm -o $@
 
+# chapters/10_interpolation/scenes/globe.png is globe_texture's map (sphere_mesh.h) as a file.
+$(BUILD)/tools/globe-png: $(call objs,tools/globe-png.c chapters/10_interpolation/sphere_mesh.c $(COMMON_SRC))
+	@mkdir -p $(@D)
+	$(call link,$^) -lstb -o $@
+
+globe-texture: $(BUILD)/tools/globe-png
+	$(BUILD)/tools/globe-png chapters/10_interpolation/scenes/globe.png
+
 figure-renderers:
 	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_BUILD)/tools/panels
 	@$(if $(FIG_DOUBLE),$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_DOUBLE))
@@ -434,6 +442,7 @@ help:
 	@echo "                     a student's copy plus setup.sh and run_autograder (docs/instructor-guide.md)"
 	@echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
+	@echo "make globe-texture   write chapter 10's scenes/globe.png from globe_texture (sphere_mesh.c)"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
 	@echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-grid-images"
 	@echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"

@@ -5,24 +5,33 @@
  *
  *     EXERCISE_STUB("01_camera_rays", "camera.c", "perspective");
  *
- * The first call prints one line on stderr, for example
+ * In a test suite the first call prints one line on stderr, for example
  *
  *     chapter 01: camera_ray is still an exercise (TODO perspective in chapters/01_camera_rays/camera.c);
- *     it returns a placeholder, so the images lack what it computes: the background, black or an unlit surface
- *     where it is needed, as chapters/01_camera_rays/README.md says under Exercises (make REFERENCE=01 links
- *     the reference chapter 01 instead)
+ *     it returns a placeholder (chapters/01_camera_rays/README.md, Exercises)
  *
- * so that a black image or a failed test is never a mystery.  Later calls,
- * from any thread, print nothing.  Solutions never call it: a finished
- * exercise is silent.
+ * so that a failed test is never a mystery.  A renderer (renderer_main)
+ * calls exercise_defer() first: the stubs are then only noted, and
+ * exercise_report() prints one line naming all that ran, once the image is
+ * done.  Later calls, from any thread, print nothing.  Solutions never call
+ * it: a finished exercise is silent.
  */
 #ifndef RT_EXERCISE_H
 #define RT_EXERCISE_H
 
 #include <stdatomic.h>
+#include <stdio.h>
 
-/* Prints the line; called by EXERCISE_STUB at most once per stub. */
+/* Prints the line, or notes the stub after exercise_defer(); called by
+ * EXERCISE_STUB at most once per stub. */
 void exercise_announce(const char *chapter, const char *file, const char *exercise, const char *function);
+
+/* From now on exercise_announce only notes the stubs, for exercise_report. */
+void exercise_defer(void);
+
+/* One line on `out` naming the stubs noted since exercise_defer(), by
+ * file:function, for the image `name`; nothing when none ran. */
+void exercise_report(FILE *out, const char *name);
 
 #define EXERCISE_STUB(chapter, file, exercise)                                                                     \
     do {                                                                                                           \

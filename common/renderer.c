@@ -3,10 +3,14 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "exercise.h"
 #include "png_write.h"
 
 int renderer_main(const renderer *r, int argc, char **argv)
 {
+    /* An unfinished exercise's stub (a student's build) is named once, in
+     * one line after the image, however many run. */
+    exercise_defer();
     render_options opt;
     switch (options_parse(argc, argv, r->summary, r->knobs, r->n_knobs, &opt, stdout, stderr)) {
     case OPTIONS_EXIT: return 0;
@@ -39,6 +43,7 @@ int renderer_main(const renderer *r, int argc, char **argv)
     if (!prepared) {
         fprintf(stderr, "%s: %s\n", r->name, err);
         scene_free(&desc);
+        exercise_report(stderr, r->name); /* a stub may be why */
         return 1;
     }
     if (opt.scene_path && !opt.quiet) {
@@ -78,5 +83,6 @@ int renderer_main(const renderer *r, int argc, char **argv)
     }
     r->release(prepared);
     scene_free(&desc);
+    exercise_report(stderr, r->name);
     return status;
 }

@@ -2,7 +2,8 @@
  * course's own reference images (../shared/cornell/sp17-ray1/data/scenes/ray1/
  * reference/).  A cross-chapter suite: it links every chapter and is not
  * graded.  Each test is skipped when the Cornell corpus is absent (and fails
- * then when RT_REQUIRE_CORNELL is set, as in CI).
+ * then when RT_REQUIRE_CORNELL is set, as in CI).  One test needs no corpus:
+ * chapter 10's globe.png is the map that globe_texture makes.
  *
  * The bar: at least 99 % of all bytes within 2/255 of the reference.  The
  * renderer's defaults are used (the course's Phong form, the error-bound
@@ -21,6 +22,7 @@
 #include "05_lambert/shading_stage.h"
 #include "07_blinn_phong/shade_phong.h"
 #include "10_interpolation/interp_stage.h"
+#include "10_interpolation/sphere_mesh.h"
 #include "11_grid/grid_stage.h"
 #include "image_compare.h"
 #include "suite.h"
@@ -115,6 +117,25 @@ static void test_10_earth_eclipse_textured(void **state) { (void)state; check_10
 static void test_10_teapot(void **state) { (void)state; check_10_grid("teapot"); }
 static void test_10_diagnostic(void **state) { (void)state; check_10_grid("diagnostic"); }
 
+/* chapters/10_interpolation/scenes/globe.png is globe_texture(128, 64, 8)
+ * texel for texel (`make globe-texture` writes it): the scenes show the map
+ * that sphere_mesh.h describes.  Bytes, so exact. */
+static void test_10_globe_png_is_the_map(void **state)
+{
+    (void)state;
+    texture_image file, map;
+    char err[512] = "";
+    int loaded = texture_image_load("chapters/10_interpolation/scenes/globe.png", &file, err, sizeof err);
+    if (loaded != 0)
+        fail_msg("%s", err);
+    assert_int_equal(0, globe_texture(&map, 128, 64, 8));
+    assert_int_equal(map.width, file.width);
+    assert_int_equal(map.height, file.height);
+    assert_memory_equal(map.rgb, file.rgb, (size_t)map.width * (size_t)map.height * 3);
+    texture_image_free(&file);
+    texture_image_free(&map);
+}
+
 static const graded_test tests[] = {
     GRADED(test_07_one_sphere, 0),
     GRADED(test_07_two_boxes, 0),
@@ -135,6 +156,7 @@ static const graded_test tests[] = {
     GRADED(test_10_earth_eclipse_textured, 0),
     GRADED(test_10_teapot, 0),
     GRADED(test_10_diagnostic, 0),
+    GRADED(test_10_globe_png_is_the_map, 0),
 };
 
 SUITE_MAIN("scenes", tests)

@@ -65,8 +65,9 @@ make REFERENCE=01     # your renderers with chapter 01 taken from the reference 
 make STUDENT=0        # the reference renderers (build/) and images (out/), to compare yours with
 ```
 
-An exercise you have not done yet prints one line the first time it runs, naming its `TODO` and file:
-until then the images lack what it computes (the chapter's README says how they look, under Exercises).  Chapter N's
+Each renderer ends with one line naming the unfinished exercises it ran (`chapter/file.c:function`;
+the file's `TODO` comment says what to do): until they are done its image lacks what they compute (the
+chapter's README says how it looks, under Exercises).  In a test, an unfinished exercise prints its own line.  Chapter N's
 renderer uses your chapters 1 to N, so finish them in order or take the earlier ones from the reference
 with `REFERENCE=`.  `make grade` always links the reference for the other chapters: your points for a
 chapter depend on that chapter's files only.  `make test` runs every suite on all your files at once (it

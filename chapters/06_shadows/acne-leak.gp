@@ -19,16 +19,17 @@ set xtics ("1e-4" 0, "1e-2" 1, "1" 2, "1e2" 3, "1e4" 4)
 set ytics ("bound, float" 0, "bound, double" 1, "fixed, float" 2, "fixed, double" 3, "none, float" 4, "none, double" 5)
 set xlabel "scene scale s (world units: the square's side, the sphere's diameter)"
 set cbrange [0:100]
-set cblabel "% of the shape's lit points"
 set palette defined (0 "#f4f4f4", 0.5 "#f6c9a8", 50 "#e07040", 100 "#b03018")
 unset key
 set tics nomirror
 do for [shape in "square sphere"] {
     set title sprintf("%s, acne: %% of points in shadow with nothing between them and the light", shape)
+    set cblabel "acne: % of the shape's points in shadow"
     plot data using (x(shape)):(row(strcol(2), strcol(1))):(0.5):(0.5):5 \
              with boxxyerror fc palette fs solid noborder, \
          data using (x(shape)):(row(strcol(2), strcol(1))):(sprintf("%.1f", $5)) with labels
     set title sprintf("%s, leaks: %% of points lit through an occluder 1e-4 s away", shape)
+    set cblabel "leaks: % of the shape's points lit"
     plot data using (x(shape)):(row(strcol(2), strcol(1))):(0.5):(0.5):6 \
              with boxxyerror fc palette fs solid noborder, \
          data using (x(shape)):(row(strcol(2), strcol(1))):(sprintf("%.1f", $6)) with labels

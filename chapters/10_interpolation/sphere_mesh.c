@@ -72,18 +72,24 @@ int globe_texture(texture_image *t, int width, int height, int square)
         return -1;
     for (int y = 0; y < height; y++) {
         for (int x = 0; x < width; x++) {
-            int i = x / square, j = y / square, odd = (i + j) % 2;
-            unsigned char c[3] = {40, 105, 140};
-            if (j == 0)
+            /* u from 0 at the left to 1 at the right; the top row is v = 1 */
+            double u = (x + 0.5) / width;
+            int j = y / square, half = square / 2 > 0 ? square / 2 : 1;
+            /* sea, from dark at u = 0 to light at u = 1: where u runs, and its seam */
+            unsigned char c[3] = {(unsigned char)(20 + 70 * u), (unsigned char)(60 + 100 * u),
+                                  (unsigned char)(110 + 110 * u)};
+            if (j == 0) /* north polar cap, v near 1 */
                 c[0] = c[1] = c[2] = 245;
-            else if (j == (height - 1) / square)
-                c[0] = c[1] = c[2] = 60;
-            else if (i == width / square / 2)
-                c[0] = odd ? 200 : 120, c[1] = odd ? 40 : 20, c[2] = odd ? 30 : 15;
-            else if (i == 0)
-                c[0] = odd ? 40 : 20, c[1] = odd ? 150 : 90, c[2] = odd ? 60 : 35;
-            else if (odd)
-                c[0] = 230, c[1] = 215, c[2] = 170;
+            else if (j == (height - 1) / square) /* south polar cap, v near 0 */
+                c[0] = 120, c[1] = 60, c[2] = 150;
+            else if (y >= height / 2 - half && y < height / 2 + half) /* the equator, v = 1/2 */
+                c[0] = 235, c[1] = 195, c[2] = 50;
+            else if (x / square == width / square / 2) /* the meridian at u = 1/2 */
+                c[0] = 200, c[1] = 45, c[2] = 35;
+            else if (x / square == 0) /* the meridian at u = 0 (and 1): the seam */
+                c[0] = 40, c[1] = 150, c[2] = 60;
+            else if (x % square == 0 || y % square == 0) /* the graticule */
+                c[0] = 225, c[1] = 225, c[2] = 215;
             for (int k = 0; k < 3; k++)
                 t->rgb[((size_t)y * (size_t)width + (size_t)x) * 3 + k] = c[k];
         }

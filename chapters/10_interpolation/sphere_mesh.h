@@ -5,7 +5,7 @@
  * texture coordinates are the course's (u, v) of a sphere (sphere_uv.h) at
  * its vertices, so that interpolation should give back nearly the smooth,
  * textured sphere (the scene file scenes/coarse-sphere.obj is the same mesh
- * for 8 segments and 6 bands).  And a small chequered image, the built-in
+ * for 8 segments and 6 bands).  And a small globe map, the built-in
  * scene's texture, so that the renderer reads no file.
  */
 #ifndef CH10_SPHERE_MESH_H
@@ -22,9 +22,11 @@
  * flat).  Returns 0, or -1 when out of memory (m left empty). */
 int sphere_mesh(mesh *m, vec3 center, real radius, int segments, int bands, bool normals);
 
-/* A W x H image of squares of `square` texels: the top row of squares white,
- * the bottom one dark grey, the column at u = 1/2 red, the one at u = 0
- * green, the rest cream and blue (as scenes/globe.png, 128 x 64, 8).
+/* A W x H latitude/longitude map with a graticule every `square` texels:
+ * the top row of squares (v near 1) a white north cap, the bottom one a
+ * purple south cap, a yellow equator band at v = 1/2, a red meridian at
+ * u = 1/2 and a green one at u = 0 (the seam), and between them a sea that
+ * brightens from u = 0 to u = 1 (as scenes/globe.png, 128 x 64, 8).
  * Returns 0, or -1 when out of memory. */
 int globe_texture(texture_image *t, int width, int height, int square);
 
