@@ -20,17 +20,12 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "04_many_shapes/shape_knobs.h"
 #include "10_interpolation/face_query.h"
 #include "11_grid/grid_stage.h"
 #include "11_grid/heat.h"
 #include "renderer.h"
 
-static const char *const sphere_choices[] = {"robust", "textbook", NULL};
-static const sphere_formula sphere_formulas[] = {SPHERE_ROBUST, SPHERE_TEXTBOOK};
-static int sphere_choice = 0;
-static const char *const triangle_choices[] = {"cramer", "watertight", NULL};
-static const triangle_test triangle_tests[] = {TRIANGLE_CRAMER, TRIANGLE_WATERTIGHT};
-static int triangle_choice = TRIANGLE_TEST_DEFAULT; /* triangle_choices is in the order of the enum */
 static const char *const on_off[] = {"on", "off", NULL};
 static const char *const accel_choices[] = {"grid", "list", NULL};
 enum { SHOW_IMAGE, SHOW_CELLS, SHOW_TESTS };
@@ -117,7 +112,7 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
         snprintf(err, err_size, "%s: out of memory", desc->path ? desc->path : "built-in scene");
         return NULL;
     }
-    pv->view = shading_prepare(&the_stage, desc, sphere_formulas[sphere_choice], triangle_tests[triangle_choice],
+    pv->view = shading_prepare(&the_stage, desc, chosen_sphere_formula(), chosen_triangle_test(),
                                err, err_size);
     if (!pv->view) {
         release(pv);
@@ -161,8 +156,8 @@ int main(int argc, char **argv)
     the_stage = grid_stage(); /* interp_stage(grid_faces): chapter 10's stage over the grid */
     /* end snippet */
     knob knobs[MAX_KNOBS] = {
-        {"sphere", KNOB_CHOICE, &sphere_choice, sphere_choices, "ray-sphere formula (chapter 02)"},
-        {"triangle", KNOB_CHOICE, &triangle_choice, triangle_choices, "ray-triangle test (chapter 03)"},
+        shape_knobs[0],
+        shape_knobs[1],
     };
     const int n_grid = (int)(sizeof grid_knob_list / sizeof grid_knob_list[0]);
     if (2 + the_stage.n_knobs + n_grid > MAX_KNOBS) {
