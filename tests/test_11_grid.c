@@ -610,6 +610,12 @@ static void test_empty_cubes(void **state)
     opt.density = 40;
     assert_int_equal(0, grid_build(&g, &list, opt, err, sizeof err));
     assert_non_null(g.empty);
+    long occupied = 0;
+    for (long c = 0; c < g.n_cells; c++)
+        occupied += g.start[c + 1] > g.start[c];
+    if (occupied == 0)
+        fail_msg("no cell lists a surface (%d x %d x %d cells, 12 spheres): is cell_range still the exercise's stub?",
+                 g.n[0], g.n[1], g.n[2]);
     const int largest = g.n[0] > g.n[1] ? (g.n[0] > g.n[2] ? g.n[0] : g.n[2]) : (g.n[1] > g.n[2] ? g.n[1] : g.n[2]);
     long leaps = 0;
     for (int k = 0; k < g.n[2]; k++)
