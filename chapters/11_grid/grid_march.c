@@ -64,7 +64,7 @@ typedef struct {
     int near[3], far[3];
 } cull_frame;
 
-static inline bool passes_box(const uint8_t box[6], const cull_frame *f, real t_min, real upper)
+static inline bool passes_box(const uint8_t box[8], const cull_frame *f, real t_min, real upper)
 {
     real x0 = f->enter[0] + (real)box[f->near[0]] * f->unit[0], x1 = f->leave[0] + (real)box[f->far[0]] * f->unit[0];
     real y0 = f->enter[1] + (real)box[f->near[1]] * f->unit[1], y1 = f->leave[1] + (real)box[f->far[1]] * f->unit[1];
@@ -137,14 +137,6 @@ static inline bool box_beside_span(const uint8_t box[8], uint64_t span_lo, uint6
                  (uint64_t)box[4] << 32 | (uint64_t)box[5] << 40 | (uint64_t)box[6] << 48 | (uint64_t)box[7] << 56;
     uint64_t x = (b & high3) | span_hi, y = (b & low3) | span_lo;
     return (((x | tops) - y) & tops) != tops;
-}
-
-/* The largest |component| of v (a NaN component is passed over), without
- * the library calls of vec3_max_abs's fmax. */
-static inline real max_abs(vec3 v)
-{
-    real x = real_abs(v.x), y = real_abs(v.y), z = real_abs(v.z), m = x > y ? x : y;
-    return z > m ? z : m;
 }
 
 /* snippet: dda */
@@ -278,7 +270,7 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
      * errs towards visiting a cell too many, never one too few. */
     const real p[3] = {r.p.x, r.p.y, r.p.z}, d[3] = {r.d.x, r.d.y, r.d.z};
     const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, hi[3] = {g->hi.x, g->hi.y, g->hi.z};
-    const real reach = 16 * REAL_EPSILON * (max_abs(r.p) + g->scale);
+    const real reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
     real inv_d[3], slack[3], t0 = t_min, t1 = t_max;
     int near[3], far[3];
     for (int a = 0; a < 3; a++) {
@@ -309,7 +301,7 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
     /* The first cell: the one holding p + t0 d, moved back along the ray by
      * the rounding of that point, and clamped to the grid. */
     dda m;
-    const real d_max = max_abs(r.d);
+    const real d_max = vec3_max_abs(r.d);
     const real back = reach + 16 * REAL_EPSILON * real_abs(t0) * d_max;
     const real inv_cell[3] = {g->inv_cell.x, g->inv_cell.y, g->inv_cell.z};
     for (int a = 0; a < 3; a++) {
