@@ -71,6 +71,9 @@ typedef struct {
     real lo_a[3], cell_a[3];  /* lo and cell again, as arrays the march indexes by axis */
     real inv_cell_a[3];       /* inv_cell, as an array */
     real per_unit[3];         /* GRID_BOX_STEPS / (cell_a + 2 margin): steps of a cell's frame per unit of length */
+    real frame_step[3];       /* (cell_a + 2 margin) / GRID_BOX_STEPS: the length of one step of a cell's frame */
+    real *plane[3];           /* plane[a][k] = lo_a + k cell_a: the cell boundaries along axis a, for
+                               * k = -255 .. n_a + 255 (a leap's cube may reach beyond the grid) */
     int n[3];                 /* cells along x, y and z */
     /* The cells' lists, flat (compressed sparse rows): the surfaces of cell
      * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],
