@@ -233,6 +233,14 @@ static void empty_distances(grid *g)
 }
 /* end snippet */
 
+/* The entries of the table of cell boundaries: n_a + 1 planes per axis and
+ * PLANES_BEYOND more on either side (the largest cube a leap takes). */
+#define PLANES_BEYOND 255
+static size_t plane_count(const grid *g)
+{
+    return (size_t)g->n[0] + g->n[1] + g->n[2] + 3 * (1 + 2 * PLANES_BEYOND);
+}
+
 int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, size_t err_size)
 {
     *g = (grid){.list = list, .mailbox = opt.mailbox, .cull = opt.cull};
@@ -293,8 +301,22 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
         g->cell_a[a] = get(g->cell, a);
         g->inv_cell_a[a] = get(g->inv_cell, a);
         g->per_unit[a] = GRID_BOX_STEPS / (g->cell_a[a] + 2 * g->margin);
+        g->frame_step[a] = (g->cell_a[a] + 2 * g->margin) / GRID_BOX_STEPS;
     }
     g->n_cells = (long)g->n[0] * g->n[1] * g->n[2];
+    /* The cell boundaries, one table for the three axes: the march reads them
+     * instead of computing lo_a + k cell_a at every crossing (the same values).
+     * A leap looks up to 255 cells beyond the grid's faces: the table goes on
+     * that far on both sides. */
+    real *planes = malloc(plane_count(g) * sizeof *planes);
+    if (!planes)
+        goto out_of_memory;
+    g->plane[0] = planes + PLANES_BEYOND;
+    g->plane[1] = g->plane[0] + g->n[0] + 1 + 2 * PLANES_BEYOND;
+    g->plane[2] = g->plane[1] + g->n[1] + 1 + 2 * PLANES_BEYOND;
+    for (int a = 0; a < 3; a++)
+        for (int k = -PLANES_BEYOND; k <= g->n[a] + PLANES_BEYOND; k++)
+            g->plane[a][k] = g->lo_a[a] + (real)k * g->cell_a[a];
 
     /* Two passes over the surfaces: count each cell's surfaces, then, with the
      * offsets summed from the counts, write them in increasing index.  A cell
@@ -356,6 +378,9 @@ void grid_free(grid *g)
     free(g->refs);
     free(g->unbinned);
     free(g->empty);
+    if (g->plane[0])
+        free(g->plane[0] - PLANES_BEYOND);
+    g->plane[0] = g->plane[1] = g->plane[2] = NULL;
     g->start = g->unbinned = NULL;
     g->refs = NULL;
     g->empty = NULL;
@@ -366,5 +391,6 @@ size_t grid_memory(const grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
     return sizeof *g + (cells + (size_t)g->n_unbinned) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof *g->refs +
-           (g->empty ? 8 * (size_t)g->n_cells : 0);
+           (g->empty ? 8 * (size_t)g->n_cells : 0) +
+           (g->plane[0] ? plane_count(g) * sizeof(real) : 0);
 }

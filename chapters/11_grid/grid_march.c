@@ -16,6 +16,9 @@
  * test of the first, never a wrong answer. */
 #define MAILBOX 32
 
+/* A cell's entries are sifted this many at a time. */
+#define BATCH 32
+
 /* The search so far: the best hit, and the window a new hit must fall in. */
 typedef struct {
     const surface_list *list;
@@ -91,11 +94,10 @@ static inline void cull_span(cull_frame *f, const grid *g, const int i[3], const
                              const real inv_d[3], const real cull_slack[3], real reach, real d_max, real t_min,
                              real upper, uint64_t *span_lo, uint64_t *span_hi)
 {
-    const real *lo = g->lo_a, *cell = g->cell_a;
     const real top = GRID_BOX_STEPS;
     real t_in = t_min, t_out = upper, origin[3];
     for (int a = 0; a < 3; a++) {
-        origin[a] = lo[a] + (real)i[a] * cell[a] - g->margin;
+        origin[a] = g->plane[a][i[a]] - g->margin;
         real base = inv_d[a] != 0 ? (origin[a] - p[a]) * inv_d[a] : 0;
         f->enter[a] = base - cull_slack[a];
         f->leave[a] = base + cull_slack[a];
@@ -152,10 +154,11 @@ typedef struct {
 /* end snippet */
 
 /* t where the ray p + t d crosses plane `plane` (a cell boundary, counted
- * from the grid's low corner) of axis a: lo_a + plane cell_a = p_a + t d_a. */
+ * from the grid's low corner) of axis a: lo_a + plane cell_a = p_a + t d_a
+ * (g->plane holds lo_a + plane cell_a). */
 static inline real crossing(const grid *g, int a, int plane, const real p[3], const real inv_d[3])
 {
-    return (g->lo_a[a] + (real)plane * g->cell_a[a] - p[a]) * inv_d[a];
+    return (g->plane[a][plane] - p[a]) * inv_d[a];
 }
 
 /* snippet: dda_step */
@@ -197,10 +200,12 @@ static inline int nearest_axis(const dda *m)
  * corner), clamped to lowest .. highest. */
 static inline int index_in(real f, int lowest, int highest)
 {
-    if (!(f >= (real)lowest)) /* also NaN */
-        return lowest;
-    if (f >= (real)highest)
-        return highest;
+    /* without branches, as in nearest_axis: clamped, then truncated; the
+     * upper bound is highest + 1/2 (which truncates to highest), so that the
+     * compiler cannot turn the clamp into a branch that returns highest */
+    real low = (real)lowest, high = (real)highest + (real)0.5;
+    f = f >= low ? f : low; /* also NaN */
+    f = f < high ? f : high;
     return (int)f;
 }
 
@@ -324,10 +329,9 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
      * of it adds unit_a; on an axis the ray is parallel to, both are 0 and
      * an infinite slack lets every box pass */
     cull_frame f = {.unit = {0}}; /* the rest is set before use */
-    const real cell[3] = {g->cell.x, g->cell.y, g->cell.z};
     real cull_slack[3];
     for (int a = 0; a < 3; a++) {
-        f.unit[a] = (cell[a] + 2 * g->margin) / GRID_BOX_STEPS * inv_d[a];
+        f.unit[a] = g->frame_step[a] * inv_d[a];
         f.near[a] = near[a];
         f.far[a] = far[a];
         cull_slack[a] = inv_d[a] != 0 ? slack[a] : REAL_INFINITY;
@@ -344,22 +348,32 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
         uint64_t span_lo = 0, span_hi = 0;
         if (cull && first < last)
             cull_span(&f, g, m.i, p, d, inv_d, cull_slack, reach, d_max, t_min, s.upper, &span_lo, &span_hi);
-        for (uint32_t e = first; e < last; e++) {
-            const uint8_t *b = refs[e].box;
-            if (cull && box_beside_span(b, span_lo, span_hi)) {
-                culled++;
-                continue; /* the box lies beside the ray's span in this cell */
+        /* In batches of up to BATCH entries: first the entries whose boxes
+         * are not beside the ray's span, gathered without branches (which
+         * entries pass is different in every cell: a branch on it would be
+         * mispredicted half the time); then, of those, each one not tested
+         * yet whose box the ray passes through is tested. */
+        for (uint32_t e = first; e < last;) {
+            const uint32_t end = last - e > BATCH ? e + BATCH : last, batch = end - e;
+            const grid_entry *near_ray[BATCH];
+            uint32_t n_near = 0;
+            for (; e < end; e++) {
+                near_ray[n_near] = &refs[e];
+                n_near += !cull | !box_beside_span(refs[e].box, span_lo, span_hi);
             }
-            uint32_t k = refs[e].surface;
-            if (use_mailbox && mailbox[k % MAILBOX] == k)
-                continue; /* tested already along this ray */
-            if (cull && !passes_box(b, &f, t_min, s.upper)) {
-                culled++;
-                continue; /* the ray passes by its box in this cell */
+            culled += batch - n_near;
+            for (uint32_t j = 0; j < n_near; j++) {
+                const uint32_t k = near_ray[j]->surface;
+                if (use_mailbox && mailbox[k % MAILBOX] == k)
+                    continue; /* tested already along this ray */
+                if (cull && !passes_box(near_ray[j]->box, &f, t_min, s.upper)) {
+                    culled++;
+                    continue; /* the ray passes by its box in this cell */
+                }
+                if (use_mailbox)
+                    mailbox[k % MAILBOX] = k;
+                test_surface(&s, k);
             }
-            if (use_mailbox)
-                mailbox[k % MAILBOX] = k;
-            test_surface(&s, k);
         }
         /* The cell ends where the ray crosses its nearest boundary.  A hit no
          * farther than that is the closest: every surface before it along the

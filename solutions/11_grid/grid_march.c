@@ -113,12 +113,8 @@ static inline void cull_span(cull_frame *f, const grid *g, const int i[3], const
         real q0 = (p[a] + t_in * d[a] - origin[a]) * per_unit, q1 = (p[a] + t_out * d[a] - origin[a]) * per_unit;
         real widen = 1 + rounding * per_unit;
         real q_lo = (q0 < q1 ? q0 : q1) - widen, q_hi = (q0 < q1 ? q1 : q0) + widen;
-        /* clamped without branches (their way changes from cell to cell), then truncated */
-        q_lo = q_lo > 0 ? q_lo : 0; /* NaN: 0 */
-        q_lo = q_lo < top ? q_lo : top;
-        q_hi = q_hi < top - 1 ? q_hi : top - 1; /* NaN: top - 1, and then top */
-        q_hi = q_hi > -1 ? q_hi : -1;
-        int span_a_lo = (int)q_lo, span_a_hi = (int)q_hi + 1;
+        int span_a_lo = q_lo > 0 && q_lo < top ? (int)q_lo : q_lo >= top ? GRID_BOX_STEPS : 0; /* NaN: 0 */
+        int span_a_hi = q_hi < top - 1 && q_hi > 0 ? (int)q_hi + 1 : q_hi <= 0 ? 0 : GRID_BOX_STEPS; /* NaN: top */
         packed_lo |= (uint64_t)span_a_lo << (8 * (3 + a));
         packed_hi |= (uint64_t)span_a_hi << (8 * a);
     }
@@ -362,13 +358,12 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
         /* In batches of up to BATCH entries: first the entries whose boxes
          * are not beside the ray's span, gathered without branches (which
          * entries pass is different in every cell: a branch on it would be
-         * mispredicted half the time); then, of those, the ones not tested
-         * yet whose boxes the ray passes through, gathered the same way;
-         * then the tests. */
+         * mispredicted half the time); then, of those, each one not tested
+         * yet whose box the ray passes through is tested. */
         for (uint32_t e = first; e < last;) {
             const uint32_t end = last - e > BATCH ? e + BATCH : last, batch = end - e;
             const grid_entry *near_ray[BATCH];
-            uint32_t n_near = 0, n_test = 0;
+            uint32_t n_near = 0;
             for (; e < end; e++) {
                 near_ray[n_near] = &refs[e];
                 n_near += !cull | !box_beside_span(refs[e].box, span_lo, span_hi);
@@ -376,14 +371,12 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
             culled += batch - n_near;
             for (uint32_t j = 0; j < n_near; j++) {
                 const uint32_t k = near_ray[j]->surface;
-                const bool fresh = !use_mailbox | (mailbox[k % MAILBOX] != k); /* not tested yet along this ray */
-                const bool through = !cull | passes_box(near_ray[j]->box, &f, t_min, s.upper);
-                near_ray[n_test] = near_ray[j];
-                n_test += fresh & through;
-                culled += fresh & !through;
-            }
-            for (uint32_t j = 0; j < n_test; j++) {
-                const uint32_t k = near_ray[j]->surface;
+                if (use_mailbox && mailbox[k % MAILBOX] == k)
+                    continue; /* tested already along this ray */
+                if (cull && !passes_box(near_ray[j]->box, &f, t_min, s.upper)) {
+                    culled++;
+                    continue; /* the ray passes by its box in this cell */
+                }
                 if (use_mailbox)
                     mailbox[k % MAILBOX] = k;
                 test_surface(&s, k);
