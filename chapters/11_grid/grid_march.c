@@ -202,11 +202,14 @@ static inline int index_in(real f, int lowest, int highest)
 {
     /* without branches, as in nearest_axis: clamped, then truncated; the
      * upper bound is highest + 1/2 (which truncates to highest), so that the
-     * compiler cannot turn the clamp into a branch that returns highest */
+     * compiler cannot turn the clamp into a branch that returns highest.  In
+     * float, highest + 1/2 rounds to highest + 1 from 2^23 on: the last
+     * clamp, in integers, keeps the index in range there. */
     real low = (real)lowest, high = (real)highest + (real)0.5;
     f = f >= low ? f : low; /* also NaN */
     f = f < high ? f : high;
-    return (int)f;
+    const int i = (int)f;
+    return i < highest ? i : highest;
 }
 
 static inline int first_cell(const grid *g, int a, real f) { return index_in(f, 0, g->n[a] - 1); }
