@@ -353,8 +353,8 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
             cull_span(&f, g, m.i, p, d, inv_d, cull_slack, reach, d_max, t_min, s.upper, &span_lo, &span_hi);
         /* In batches of up to BATCH entries: first the entries whose boxes
          * are not beside the ray's span, gathered without branches (which
-         * entries pass is different in every cell: a branch on it would be
-         * mispredicted half the time); then, of those, each one not tested
+         * entries pass is different in every cell: a branch on it is often
+         * guessed wrong); then, of those, each one not tested
          * yet whose box the ray passes through is tested. */
         for (uint32_t e = first; e < last;) {
             const uint32_t end = last - e > BATCH ? e + BATCH : last, batch = end - e;
