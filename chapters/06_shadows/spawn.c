@@ -5,7 +5,8 @@ const char *const eps_policy_names[] = {"none", "fixed", "bound", NULL};
 
 eps_policy tracer_eps(const tracer *tr)
 {
-    return tr->knobs ? (eps_policy)((const spawn_knobs *)tr->knobs)->eps : EPS_BOUND;
+    static const spawn_knobs defaults = SPAWN_KNOBS_DEFAULT;
+    return (eps_policy)(tr->knobs ? (const spawn_knobs *)tr->knobs : &defaults)->eps;
 }
 
 /* snippet: eps_bound */

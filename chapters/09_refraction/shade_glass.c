@@ -8,7 +8,8 @@
 
 fresnel_mode tracer_fresnel(const tracer *tr)
 {
-    return tr->knobs ? (fresnel_mode)((const glass_knobs *)tr->knobs)->fresnel : FRESNEL_EXACT;
+    static const glass_knobs defaults = GLASS_KNOBS_DEFAULT;
+    return (fresnel_mode)(tr->knobs ? (const glass_knobs *)tr->knobs : &defaults)->fresnel;
 }
 
 /* snippet: glass_at */

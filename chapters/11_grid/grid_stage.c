@@ -52,7 +52,7 @@ static void grid_query_release(void *owned)
 
 int grid_query_build(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
 {
-    const char *where = desc->path ? desc->path : "built-in scene";
+    const char *where = scene_name(desc);
     if (grid_settings.accel == 1) {
         *q = (hit_query){.closest_hit = list_closest_hit, .accel = list};
         return 0;

@@ -109,7 +109,7 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
     prepared_view *pv = calloc(1, sizeof *pv);
     if (!pv || !(pv->slots = calloc(SLOTS, sizeof *pv->slots))) {
         free(pv);
-        snprintf(err, err_size, "%s: out of memory", desc->path ? desc->path : "built-in scene");
+        snprintf(err, err_size, "%s: out of memory", scene_name(desc));
         return NULL;
     }
     pv->view = shading_prepare(&the_stage, desc, chosen_sphere_formula(), chosen_triangle_test(),
@@ -155,16 +155,16 @@ int main(int argc, char **argv)
     /* snippet: stage */
     the_stage = grid_stage(); /* interp_stage(grid_faces): chapter 10's stage over the grid */
     /* end snippet */
-    knob knobs[MAX_KNOBS] = {
-        shape_knobs[0],
-        shape_knobs[1],
-    };
+    knob knobs[MAX_KNOBS];
     const int n_grid = (int)(sizeof grid_knob_list / sizeof grid_knob_list[0]);
-    if (2 + the_stage.n_knobs + n_grid > MAX_KNOBS) {
-        fprintf(stderr, "%s: too many knobs (%d > %d)\n", the_stage.name, 2 + the_stage.n_knobs + n_grid, MAX_KNOBS);
+    if (SHAPE_KNOBS + the_stage.n_knobs + n_grid > MAX_KNOBS) {
+        fprintf(stderr, "%s: too many knobs (%d > %d)\n", the_stage.name, SHAPE_KNOBS + the_stage.n_knobs + n_grid,
+                MAX_KNOBS);
         return 2;
     }
-    int n_knobs = 2;
+    int n_knobs = 0;
+    for (int k = 0; k < SHAPE_KNOBS; k++) /* --sphere and --triangle first */
+        knobs[n_knobs++] = shape_knobs[k];
     for (int k = 0; k < the_stage.n_knobs; k++)
         knobs[n_knobs++] = the_stage.knobs[k];
     for (int k = 0; k < n_grid; k++)
