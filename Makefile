@@ -415,6 +415,7 @@ $(BUILD)/bench-tools/%: $(BUILD)/obj/bench/%.o
 bench-tools: $(BENCH_TOOLS)
 
 bench:
+	@$(if $(HANDOUT),echo "make bench: the benchmarks (bench/) are not in a student's copy; docs/measurements.md has their results" >&2; exit 2)
 	@tools/deps.sh "$(CC)" bench
 	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(BENCH_BUILD) renderers bench-tools \
 	    $(BENCH_BUILD)/tools/panels
@@ -462,6 +463,10 @@ clean:
 # The grid's benchmark against Embree (make bench-grid); a student's copy has no bench/.
 ifeq ($(HANDOUT),)
 include bench/grid/grid.mk
+else
+.PHONY: bench-grid
+bench-grid:
+	@echo "make bench-grid: the benchmarks (bench/) are not in a student's copy; chapter 11's README has its results" >&2; exit 2
 endif
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

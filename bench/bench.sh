@@ -261,7 +261,7 @@ EOF
         for c in "${growth_chapters[@]}"; do
             tm=$(field "growth_$n" "$c" 2) rays=$(field "growth_$n" "$c" 5)
             # not run (the linear scan above $linear_max triangles) or failed: no row
-            if [ -z "$tm" ] || [ "$tm" = "-" ]; then continue; fi
+            if [ -z "$tm" ] || [ "$tm" = "-" ] || [ -z "$rays" ] || [ "$rays" = "-" ] || [ "$rays" = 0 ]; then continue; fi
             # Microseconds per ray: three significant digits, no exponent.
             us() { awk -v t="$1" -v r="$rays" 'BEGIN { x = 1e6 * t / r; d = x >= 100 ? 0 : x >= 10 ? 1 : 2; printf "%.*f", d, x }'; }
             printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$c" "$t" "$tm" "$rays" "$(us "$tm")" \

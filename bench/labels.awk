@@ -1,7 +1,7 @@
 # labels.awk - where the labels of a knob plot go, so that none covers another
 # (bench/plots.sh, knob_plot).
 #
-# Input: the plot's data, "X Y LABEL DEFAULT SCENE" (LABEL "" for none), and
+# Input: the plot's data, "X Y LABEL DEFAULT SCENE" (X > 0; LABEL "" for none), and
 # the axes as variables: xmin, xmax, logx (1: log scale), ymin, ymax.
 # Output, one line per label: "LX LY \"TEXT\" X Y SCENE MOVED": the label's
 # left end at (LX, LY) for the point (X, Y); MOVED 1 when it had to go further
@@ -31,11 +31,11 @@ BEGIN {
     # the key, top right
     n_box = 1; box_l[1] = 0.26; box_r[1] = 1; box_b[1] = 0.77; box_t[1] = 1
 }
-$1 != "-" && $2 != "-" { # every point, labelled or not, keeps labels off it
+{ # every point, labelled or not, keeps labels off it
     n_box++; box_l[n_box] = u_of($1) - 0.015; box_r[n_box] = u_of($1) + 0.01
     box_b[n_box] = v_of($2) - 0.03; box_t[n_box] = v_of($2) + 0.03
 }
-$1 != "-" && $2 != "-" && $3 != "\"\"" {
+$3 != "\"\"" {
     key = $5 SUBSEP int(u_of($1) * 150 + 0.5) SUBSEP int(v_of($2) * 150 + 0.5)
     if (!(key in text)) {
         order[++n] = key; px[key] = $1; py[key] = $2; scene[key] = $5; text[key] = $3

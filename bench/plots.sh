@@ -15,21 +15,21 @@ plot_term='set terminal pngcairo size 900,600 font "sans,12" noenhanced'
 # so that none covers another; a label it moves away from its point is tied
 # to it by a thin grey line.
 knob_plot() {
-    local out=$1 title=$2 data=$3 ymax xaxis
-    awk '$1 != "-" && $2 != "-"' "$data" >"$data.ok" && mv "$data.ok" "$data"
-    ymax=$(awk '$2 != "-" && $2 + 0 > m { m = $2 + 0 } END { print m + 0 }' "$data")
+    local out=$1 title=$2 data=$3 ymax ylo yhi xmin xmax logx
+    awk '$1 != "-" && $2 != "-" && $1 > 0' "$data" >"$data.ok" && mv "$data.ok" "$data"
+    ymax=$(awk '$2 + 0 > m { m = $2 + 0 } END { print m + 0 }' "$data")
     if [ "$ymax" = 0 ]; then
         speed_plot "$out" "$title" "$data"
         return
     fi
-    # The axes, set here (not by gnuplot) so that bench/labels.awk can place the labels:
-    # "XMIN XMAX LOGX", log when the times span more than a factor 4; room on the right for labels.
-    xaxis=$(awk '$1 > 0 { if (min == "" || $1 < min) min = $1; if ($1 > max) max = $1 }
+    read -r ylo yhi < <(awk -v m="$ymax" 'BEGIN { print -0.08 * m, 1.25 * m }')
+    # The x axis, set here (not by gnuplot) so that bench/labels.awk can place the labels:
+    # log when the times span more than a factor 4; room on the right for labels.
+    read -r xmin xmax logx < <(awk '{ if (min == "" || $1 < min) min = $1; if ($1 > max) max = $1 }
         END { if (max / min > 4) print min / 1.5, max * 2.5, 1
               else { span = max - min; if (span < 0.1 * max) span = 0.1 * max; print min - 0.15 * span, max + 0.45 * span, 0 } }' "$data")
-    set -- $xaxis
-    awk -v xmin="$1" -v xmax="$2" -v logx="$3" -v ymin="$(awk -v m="$ymax" 'BEGIN { print -0.08 * m }')" \
-        -v ymax="$(awk -v m="$ymax" 'BEGIN { print 1.25 * m }')" -f "$here/labels.awk" "$data" >"$data.labels"
+    awk -v xmin="$xmin" -v xmax="$xmax" -v logx="$logx" -v ymin="$ylo" -v ymax="$yhi" -f "$here/labels.awk" "$data" \
+        >"$data.labels"
     gnuplot <<EOF
 $plot_term
 set output "$out"
@@ -38,9 +38,9 @@ set xlabel "render time relative to the default setting (1 thread, median of $re
 set ylabel "pixels differing from the reference setting (%)"
 set grid
 set key top right box opaque
-set yrange [$(awk -v m="$ymax" 'BEGIN { printf "%g:%g", -0.08 * m, 1.25 * m }')]
-set xrange [$1:$2]
-$([ "$3" = 1 ] && echo "set logscale x")
+set yrange [$ylo:$yhi]
+set xrange [$xmin:$xmax]
+$([ "$logx" = 1 ] && echo "set logscale x")
 plot "$data.labels" using (\$7 == 1 ? \$4 : 1/0):5:(\$1 - \$4):(\$2 - \$5) with vectors nohead lw 0.5 lc rgb "#aaaaaa" notitle, \
      "$data" using (\$5 == 0 ? \$1 : 1/0):2 with points pt 7 ps 1.6 lc rgb "#1f77b4" title "built-in scene of the chapter", \
      "$data" using (\$5 == 1 ? \$1 : 1/0):2 with points pt 9 ps 1.8 lc rgb "#d62728" title "scene of all stages (latest chapter with the knob)", \
