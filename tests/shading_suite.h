@@ -81,12 +81,14 @@ static inline int suite_add_floor(scene *desc, int shader, vec3 centre)
 /* ---- the shading point an eye ray meets ------------------------------------------------------- */
 
 static _Thread_local shading_point suite_recorded;
+static _Thread_local bool suite_has_recorded;
 static inline color suite_record(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
     (void)tr;
     (void)depth;
     (void)rays;
     suite_recorded = *sp;
+    suite_has_recorded = true;
     return color_make(0, 0, 0);
 }
 
@@ -97,7 +99,11 @@ static inline shading_view *suite_shading_point(const scene *desc, const void *k
 {
     shading_view *view = suite_view(desc, suite_record, knobs);
     uint64_t rays[RAY_KINDS] = {0};
+    suite_has_recorded = false;
     trace(&view->tr, r, 0, REAL_INFINITY, 0, rays);
+    if (!suite_has_recorded) /* else *sp would be the point of an earlier call */
+        fail_msg("the eye ray p = (%g, %g, %g), d = (%g, %g, %g) met nothing in the test's scene", (double)r.p.x,
+                 (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z);
     *sp = suite_recorded;
     return view;
 }

@@ -350,11 +350,20 @@ typedef struct {
     real scale;
 } frame;
 
+/* A random vector of the cube [-1, 1]^3, drawn x, y, z in this order (the
+ * order of a call's arguments is the compiler's choice: drawn in them, gcc
+ * and clang would test different data). */
+static vec3 random_vector(void)
+{
+    real x = symmetric(), y = symmetric(), z = symmetric();
+    return vec3_make(x, y, z);
+}
+
 static frame random_frame(real scale, real distance)
 {
-    vec3 w = vec3_normalize(vec3_make(symmetric(), symmetric(), symmetric() + (real)0.1));
-    vec3 u = vec3_normalize(vec3_cross(w, vec3_make(symmetric(), symmetric() + (real)0.2, symmetric())));
-    vec3 offset = vec3_scale(vec3_make(symmetric(), symmetric(), symmetric()), distance);
+    vec3 w = vec3_normalize(vec3_add(random_vector(), vec3_make(0, 0, (real)0.1)));
+    vec3 u = vec3_normalize(vec3_cross(w, vec3_add(random_vector(), vec3_make(0, (real)0.2, 0))));
+    vec3 offset = vec3_scale(random_vector(), distance);
     return (frame){u, vec3_cross(w, u), w, offset, scale};
 }
 
@@ -669,6 +678,12 @@ static int below(int n) /* uniform in 0 .. n - 1 */
 }
 static real power_of_two(int lo, int hi) { return (real)ldexp(1, lo + below(hi - lo + 1)); }
 static real any_sign(real x) { return below(2) ? x : -x; }
+/* A random point of the frame's square [-scale, scale]^2 at height z. */
+static vec3 in_plane(const frame *f, real scale, real z)
+{
+    real x = scale * symmetric(), y = scale * symmetric();
+    return place(f, x, y, z);
+}
 
 static void test_crossing_certain_quick_is_exact(void **state)
 {
@@ -684,33 +699,68 @@ static void test_crossing_certain_quick_is_exact(void **state)
         int e = kind == 6 ? bottom + below(3 * -ilogb(REAL_EPSILON))  /* subnormal data */
               : kind == 8 ? top - below(20)                          /* near overflow */
                           : -span + below(2 * span);
-        real size = power_of_two(e, e) * (1 + uniform());
-        real distance = below(3) ? (kind == 9 ? power_of_two(-span, span) : size * power_of_two(0, 60)) * uniform() : 0;
+        /* Each random draw in a statement or initialiser of its own (see random_vector). */
+        real size = power_of_two(e, e);
+        size *= 1 + uniform();
+        real distance = 0;
+        if (below(3)) {
+            distance = kind == 9 ? power_of_two(-span, span) : size * power_of_two(0, 60);
+            distance *= uniform();
+        }
         frame f = random_frame(size, distance);
-        vec3 a = place(&f, symmetric(), symmetric(), 0), b = place(&f, symmetric(), symmetric(), 0);
-        vec3 c = place(&f, symmetric(), symmetric(), 0);
+        vec3 a = in_plane(&f, 1, 0), b = in_plane(&f, 1, 0), c = in_plane(&f, 1, 0);
         real tiny = power_of_two(-80, 0);
-        if (kind == 1) /* c nearly on the line ab */
-            c = vec3_add(vec3_add(a, vec3_scale(vec3_sub(b, a), 2 * uniform() - (real)0.5)),
-                         vec3_scale(vec3_make(symmetric(), symmetric(), symmetric()), size * tiny));
-        if (kind == 2) /* c (nearly) at a or b */
-            c = vec3_add(below(2) ? a : b, below(4) ? vec3_scale(vec3_make(symmetric(), symmetric(), symmetric()), size * tiny)
-                                                    : vec3_make(0, 0, 0));
+        if (kind == 1) { /* c nearly on the line ab */
+            real along = 2 * uniform() - (real)0.5;
+            vec3 off = random_vector();
+            c = vec3_add(vec3_add(a, vec3_scale(vec3_sub(b, a), along)), vec3_scale(off, size * tiny));
+        }
+        if (kind == 2) { /* c (nearly) at a or b */
+            c = below(2) ? a : b;
+            if (below(4)) {
+                vec3 off = random_vector();
+                c = vec3_add(c, vec3_scale(off, size * tiny));
+            }
+        }
         /* Local coordinates of the origin; z = 0 is the triangle's plane. */
-        real pz = kind == 4 ? (below(3) ? any_sign(tiny) * uniform() : 0) : any_sign(1 + 2 * uniform());
-        vec3 p = place(&f, 3 * symmetric(), 3 * symmetric(), pz);
-        vec3 target = place(&f, symmetric(), symmetric(), kind == 3 ? pz + any_sign(tiny) * uniform() : 0);
+        real pz = 0;
+        if (kind != 4) {
+            pz = any_sign(1);
+            pz *= 1 + 2 * uniform();
+        } else if (below(3)) {
+            pz = any_sign(tiny);
+            pz *= uniform();
+        }
+        vec3 p = in_plane(&f, 3, pz);
+        real target_z = 0;
+        if (kind == 3) {
+            target_z = any_sign(tiny);
+            target_z = pz + target_z * uniform();
+        }
+        vec3 target = in_plane(&f, 1, target_z);
         vec3 d = vec3_sub(target, p);
-        if (kind == 3 && below(2))
-            d = vec3_sub(place(&f, symmetric(), symmetric(), 0), place(&f, symmetric(), symmetric(), 0)); /* in the plane */
+        if (kind == 3 && below(2)) { /* in the plane */
+            vec3 from = in_plane(&f, 1, 0), to = in_plane(&f, 1, 0);
+            d = vec3_sub(from, to);
+        }
         if (kind == 9) /* a direction of its own size, anywhere in the range */
             d = vec3_scale(d, power_of_two(-span, span) / (size + distance));
         if (kind == 5) { /* along an axis, with signed zeros elsewhere; sometimes an axis-aligned triangle */
-            real along[3] = {any_sign(0), any_sign(0), any_sign(0)};
-            along[below(3)] = any_sign(size * (1 + uniform()));
+            real along[3];
+            for (int axis = 0; axis < 3; axis++)
+                along[axis] = any_sign(0);
+            int axis = below(3);
+            along[axis] = any_sign(size);
+            along[axis] *= 1 + uniform();
             d = vec3_make(along[0], along[1], along[2]);
-            if (below(2))
-                a.z = b.z = c.z = below(2) ? p.z : any_sign(size * uniform());
+            if (below(2)) {
+                real z = p.z;
+                if (below(2)) {
+                    z = any_sign(size);
+                    z *= uniform();
+                }
+                a.z = b.z = c.z = z;
+            }
             if (below(4) == 0)
                 p = below(2) ? a : vec3_make(0, 0, 0);
         }
@@ -750,7 +800,10 @@ static void test_crossing_certain_quick_is_exact(void **state)
      * (false), and only the margin of the quick test keeps it from answering
      * true: without its factor 1 + 2^-20 this fails.  (The second
      * determinant, with f = a - p = (1, 0, 0), is clearly certain.)  Axes
-     * permuted and flipped, so the roundings differ. */
+     * permuted and flipped, so the roundings differ.  In float, delta is
+     * 2^-8 and the factor about 1 + 2^-9: there the inputs are near the
+     * bound but not tight to the margin; the double build is the one that
+     * holds the margin. */
     const real delta = (real)ldexp(1, ilogb(REAL_EPSILON) / 2 + 3); /* 2^-23 in double, 2^-8 in float */
     long tight[2] = {0, 0};
     for (int n = 0; n < 1 << 17; n++) {

@@ -23,15 +23,13 @@ static const double pi = 3.14159265358979323846;
 
 /* Random numbers (a fixed seed: the same numbers on every run). */
 static unsigned long rng = 424242;
-static double uniform(void)
-{
-    rng = rng * 6364136223846793005UL + 1442695040888963407UL;
-    return (double)((rng >> 11) & ((1UL << 53) - 1)) / (double)(1UL << 53);
-}
+static double uniform(void) { return suite_uniform(&rng); }
 static real between(double lo, double hi) { return (real)(lo + (hi - lo) * uniform()); }
 static vec3 random_vec3(double size)
 {
-    return vec3_make(between(-size, size), between(-size, size), between(-size, size));
+    /* one after another: the order of a call's arguments is the compiler's choice */
+    real x = between(-size, size), y = between(-size, size), z = between(-size, size);
+    return vec3_make(x, y, z);
 }
 
 /* ---- barycentric interpolation ---------------------------------------------------------------- */
@@ -408,9 +406,9 @@ static vec3 bilinear_as(const scene_texture *tex, double x, double y, bilinear_v
 /* texture_bilinear(tex, uv) against the blend computed here; a failure names
  * the input and the mistake whose value was got.  x = u W and y = (1 - v) H
  * are computed as texture.c does; the fractions s, t then agree to a
- * rounding of x and y, and the result (texels in [0, 1]) to a few roundings
- * of size 1: 32 eps (4 + |x| + |y|), the |x| and |y| for the fractions of
- * far coordinates. */
+ * rounding of x and y (eps |x| / 2 and eps |y| / 2: the weights move by
+ * that much, the texels being in [0, 1]), and the result to that plus a few
+ * roundings of size 1: 32 eps 4 + 2 eps (|x| + |y|), twice the bound. */
 static void expect_bilinear(const scene_texture *tex, mesh_uv uv)
 {
     static const char *const why[BILINEAR_VARIANTS] = {
@@ -445,7 +443,7 @@ static void expect_bilinear(const scene_texture *tex, mesh_uv uv)
     mistakes[n++] = (suspect_vec3){texel_vec3(tex, 0, 0), "texel (0, 0) whatever (u, v): the exercise is still to do"};
     color c = texture_bilinear(tex, uv);
     assert_vec3_why(bilinear_as(tex, x, y, BILINEAR_RIGHT), vec3_make(c.r, c.g, c.b),
-                    TOL(4 + fabs(x) + fabs(y)),
+                    TOL(4) + 2 * REAL_EPSILON * (fabs(x) + fabs(y)),
                     describe("texture_bilinear(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = %.9g",
                              kind_name(tex->kind), tex->image.width, tex->image.height, (double)uv.u, (double)uv.v,
                              x, y),
@@ -489,8 +487,8 @@ static void test_bilinear(void **state)
 /* Bilinear on a texture of random texels (so that each mistake gives its
  * own value), 7 x 4, repeated and clamped, at random (u, v) around and
  * beyond the image (negative x and y, both edges, u W and (1 - v) H up to
- * +-3 images away) and far away (u near 1000: a repeating texture reads the
- * same texels as at u - 1000). */
+ * +-3 images away) and far away (u near 1000 and v near -1000, where the
+ * fractions s and t come from large coordinates). */
 static void test_bilinear_random(void **state)
 {
     (void)state;
@@ -500,11 +498,14 @@ static void test_bilinear_random(void **state)
     for (int kind = 0; kind < 2; kind++) {
         scene_texture tex = {.kind = (texture_kind)kind, .image = {.width = 7, .height = 4, .rgb = random_texels}};
         for (int k = 0; k < 400; k++) {
-            mesh_uv uv = {between(-3, 4), between(-3, 4)};
+            real u = between(-3, 4), v = between(-3, 4);
+            mesh_uv uv = {u, v};
             expect_bilinear(&tex, uv);
         }
-        for (int k = 0; k < 50; k++)
-            expect_bilinear(&tex, (mesh_uv){between(999, 1001), between(-1001, -999)});
+        for (int k = 0; k < 50; k++) {
+            real u = between(999, 1001), v = between(-1001, -999);
+            expect_bilinear(&tex, (mesh_uv){u, v});
+        }
     }
 }
 
