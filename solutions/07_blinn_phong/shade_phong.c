@@ -8,7 +8,8 @@
 
 phong_form tracer_phong_form(const tracer *tr)
 {
-    return tr->knobs ? (phong_form)((const phong_knobs *)tr->knobs)->form : PHONG_COURSE;
+    static const phong_knobs defaults = PHONG_KNOBS_DEFAULT;
+    return (phong_form)(tr->knobs ? (const phong_knobs *)tr->knobs : &defaults)->form;
 }
 
 /* snippet: light_contribution */
