@@ -64,15 +64,15 @@ bool triangle_intersect_watertight(const triangle *tri, ray r, real t_min, real 
     real det = u + v + w;
     if (det == 0 || !isfinite(det))
         return false;
-    /* Rounding leaves det a sliver of either sign where it should be 0 (a
-     * degenerate triangle, a ray in the plane): accept only a crossing that
-     * the data decide (degenerate.h).  Only rays that passed the edge tests
-     * pay for this check. */
-    if (!triangle_crossing_certain(tri, r))
-        return false;
     real az = sz * component(a, kz), bz = sz * component(b, kz), cz = sz * component(c, kz);
     real t = (u * az + v * bz + w * cz) / det;
     if (!(t > t_min && t < t_max))
+        return false;
+    /* Rounding leaves det a sliver of either sign where it should be 0 (a
+     * degenerate triangle, a ray in the plane): accept only a crossing that
+     * the data decide (degenerate.h).  Only rays that passed the edge tests
+     * with t inside the window pay for this check, as with Cramer's rule. */
+    if (!triangle_crossing_certain(tri, r))
         return false;
     *hit = (triangle_hit){.t = t, .beta = v / det, .gamma = w / det};
     return true;
