@@ -2,9 +2,10 @@
  * Intel Embree 3, on exactly the same rays.  Built and run by `make bench-grid`
  * only (bench/grid/grid.mk); never part of `make` or `make test`.
  *
- *     grid_vs_embree MESH.obj | sphere:N   [--size 512] [--linear-rows K]
+ *     grid_vs_embree MESH.obj | sphere:N   [--size 512] [--linear-rows K] [--random]
  *
- * One primary ray per pixel of a WxW image looking at the mesh; every
+ * One primary ray per pixel of a WxW image looking at the mesh (or, with
+ * --random, as many incoherent rays: see make_random_rays); every
  * vertex and every ray is rounded to float first, so Embree (which works in
  * float) and the grid (in `real`) get the same numbers.  Prints million rays
  * per second for each on 1 thread (from the CPU time of that thread, which
@@ -17,6 +18,7 @@
  */
 #include <math.h>
 #include <omp.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -110,16 +112,26 @@ typedef struct {
     float o[3], d[3];
 } float_ray;
 
-/* A pinhole camera looking at the mesh's box from the front and a little
- * above, its view filled by the mesh; directions rounded to float. */
-static float_ray *make_rays(const float_mesh *fm, int size)
+/* The bounding box of the mesh's vertices. */
+static void mesh_box(const float_mesh *fm, float lo[3], float hi[3])
 {
-    float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (int a = 0; a < 3; a++) {
+        lo[a] = INFINITY;
+        hi[a] = -INFINITY;
+    }
     for (long k = 0; k < fm->n_v; k++)
         for (int a = 0; a < 3; a++) {
             lo[a] = fminf(lo[a], fm->v[3 * k + a]);
             hi[a] = fmaxf(hi[a], fm->v[3 * k + a]);
         }
+}
+
+/* A pinhole camera looking at the mesh's box from the front and a little
+ * above, its view filled by the mesh; directions rounded to float. */
+static float_ray *make_rays(const float_mesh *fm, int size)
+{
+    float lo[3], hi[3];
+    mesh_box(fm, lo, hi);
     double c[3], radius = 0;
     for (int a = 0; a < 3; a++) {
         c[a] = 0.5 * ((double)lo[a] + hi[a]);
@@ -149,6 +161,33 @@ static float_ray *make_rays(const float_mesh *fm, int size)
                 r->d[a] = (float)(w[a] + s * (u * right[a] + v * up[a]));
             }
         }
+    return rays;
+}
+
+/* Incoherent rays: origins uniform in the mesh's box (many of them inside
+ * the mesh, as the origins of shadow and reflected rays are), directions
+ * uniform on the sphere; a fixed generator, so every run gets the same rays. */
+static float_ray *make_random_rays(const float_mesh *fm, long n)
+{
+    float lo[3], hi[3];
+    mesh_box(fm, lo, hi);
+    uint64_t state = 0x9E3779B97F4A7C15ull;
+    float_ray *rays = malloc((size_t)n * sizeof *rays);
+    for (long k = 0; k < n; k++) {
+        double u[5];
+        for (int q = 0; q < 5; q++) { /* xorshift64*, the top 53 bits */
+            state ^= state >> 12;
+            state ^= state << 25;
+            state ^= state >> 27;
+            u[q] = (double)((state * 0x2545F4914F6CDD1Dull) >> 11) * 0x1p-53;
+        }
+        double z = 2 * u[3] - 1, phi = 6.283185307179586 * u[4], s = sqrt(1 - z * z);
+        const double dir[3] = {s * cos(phi), s * sin(phi), z};
+        for (int a = 0; a < 3; a++) {
+            rays[k].o[a] = (float)(lo[a] + u[a] * ((double)hi[a] - lo[a]));
+            rays[k].d[a] = (float)dir[a];
+        }
+    }
     return rays;
 }
 
@@ -267,6 +306,7 @@ int main(int argc, char **argv)
 {
     const char *what = NULL;
     int size = 512, linear_rows = 32, runs = 5, knobs = 1;
+    bool random_rays = false;
     for (int k = 1; k < argc; k++) {
         if (!strcmp(argv[k], "--size") && k + 1 < argc)
             size = atoi(argv[++k]);
@@ -276,11 +316,14 @@ int main(int argc, char **argv)
             runs = atoi(argv[++k]);
         else if (!strcmp(argv[k], "--knobs") && k + 1 < argc)
             knobs = atoi(argv[++k]);
+        else if (!strcmp(argv[k], "--random"))
+            random_rays = true;
         else
             what = argv[k];
     }
     if (!what || size < 1 || runs < 1) {
-        fprintf(stderr, "usage: grid_vs_embree MESH.obj|sphere:N [--size 512] [--linear-rows 32] [--runs 5] [--knobs 1|2|0]\n");
+        fprintf(stderr, "usage: grid_vs_embree MESH.obj|sphere:N [--size 512] [--linear-rows 32] [--runs 5] [--knobs 1|2|0] "
+                        "[--random]\n");
         return 2;
     }
     float_mesh fm;
@@ -301,7 +344,7 @@ int main(int argc, char **argv)
             return 1;
         }
     }
-    float_ray *rays = make_rays(&fm, size);
+    float_ray *rays = random_rays ? make_random_rays(&fm, (long)size * size) : make_rays(&fm, size);
     long n_rays = (long)size * size;
     int *prim[3];
     for (int m = 0; m < 3; m++) {
@@ -309,8 +352,8 @@ int main(int argc, char **argv)
         for (long k = 0; k < n_rays; k++)
             prim[m][k] = -2;
     }
-    printf("%s: %ld triangles, %dx%d primary rays, %s, median of %d runs\n", what, fm.n_tri, size, size, REAL_NAME,
-           runs);
+    printf("%s: %ld triangles, %dx%d %s rays, %s, median of %d runs\n", what, fm.n_tri, size, size,
+           random_rays ? "random" : "primary", REAL_NAME, runs);
 
     /* Embree: a device with one build thread, its memory watched. */
     RTCDevice device = rtcNewDevice("threads=1");

@@ -1,8 +1,9 @@
 #!/bin/sh
 # run.sh BENCH - the grid against the linear scan and Embree: the Stanford
 # bunny of Debian's glmark2-data, then a procedural sphere of 1 million
-# triangles, 512x512 primary rays each.  The linear scan takes every 64-th
-# row of the bunny (8 rows, 4096 rays) and none of the sphere.
+# triangles, 512x512 primary rays each; then the bunny again with as many
+# incoherent rays (origins in its box, directions uniform).  The linear scan
+# takes every 64-th row of the bunny (8 rows, 4096 rays) and none of the rest.
 bench=$1
 bunny=$(dpkg -L glmark2-data 2>/dev/null | grep '/bunny\.obj$' | head -n 1)
 if [ -z "$bunny" ] || [ ! -r "$bunny" ]; then
@@ -17,3 +18,5 @@ fi
 "$bench" "$bunny" --size 512 --linear-rows 64 || exit 1
 echo
 "$bench" sphere:1000000 --size 512 --linear-rows 0 || exit 1
+echo
+"$bench" "$bunny" --size 512 --linear-rows 0 --knobs 0 --random || exit 1
