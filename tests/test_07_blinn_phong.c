@@ -101,10 +101,56 @@ static void test_exponent_behaviour(void **state)
     /* concrete values: alpha = 5 degrees, p = 100: cos(5 deg)^100 = 0.683003, times k_s I / r^2 = 1.44 */
     vec3 v = at_angle(n, side, -50 * pi / 180);
     assert_close(0.983524, blinn_phong_specular(k_s, 100, point, n, v, &light, PHONG_COURSE).r, 1e-5);
-    /* behind the normal's hemisphere (n . h < 0) there is no highlight, not a negative one */
+    /* behind the normal's hemisphere (n . h < 0) there is no highlight, not a negative one: v = -n and
+     * l = -(the unit vector 40 degrees from n) give n . h = -cos(20 degrees).  An even exponent makes
+     * (n . h)^p positive, so clamping after the power is not the same as max(0, n . h)^p; a fractional
+     * one makes it NaN. */
     vec3 below = vec3_neg(at_angle(n, side, 40 * pi / 180));
-    assert_close(0, blinn_phong_specular(k_s, 3, point, n, vec3_neg(n), &(scene_light){.position =
-                     vec3_add(point, vec3_scale(below, 2)), .intensity = {1, 1, 1}}, PHONG_COURSE).g, 0);
+    scene_light under = {.position = vec3_add(point, vec3_scale(below, 2)), .intensity = {1, 1, 1}};
+    const double behind_exponents[] = {3, 20, 2.5};
+    for (int k = 0; k < 3; k++) {
+        double p = behind_exponents[k];
+        const suspect sb[] = {
+            {-0.7 * pow(cos(20 * pi / 180), p) / 4, "negative: max(0, n . h)^p, clamp n . h before the power"},
+            {0.7 * pow(cos(20 * pi / 180), p) / 4,
+             "max(0, (n . h)^p): an even p makes a negative n . h positive; clamp n . h before the power"},
+        };
+        assert_close_why(0, blinn_phong_specular(k_s, (real)p, point, n, vec3_neg(n), &under, PHONG_COURSE).g, 0,
+                         describe("blinn_phong_specular(k_s.g = 0.7, p = %g, v = -n, light 2 away below the "
+                                  "surface: n . h = -cos(20 degrees)): green", p),
+                         "k_s max(0, n . h)^p I / r^2 is 0 when n . h < 0", sb, sizeof sb / sizeof sb[0]);
+    }
+}
+
+/* Channel by channel: k_s I with a coloured light, in the mirror
+ * configuration (n . h = 1) at r = 2.5: k_s.c I.c / 6.25 in each channel c. */
+static void test_specular_per_channel(void **state)
+{
+    (void)state;
+    vec3 n = unit_normal(), side = {1, 0.25, 0};
+    color k_s = {0.9, 0.7, 0.3};
+    scene_light light = {.position = vec3_add(point, vec3_scale(at_angle(n, side, 40 * pi / 180), 2.5)),
+                         .intensity = {10, 20, 5}};
+    vec3 v = at_angle(n, side, -40 * pi / 180); /* the mirror direction of l */
+    color L = blinn_phong_specular(k_s, 20, point, n, v, &light, PHONG_COURSE);
+    const char *in = describe("blinn_phong_specular(k_s = (0.9, 0.7, 0.3), p = 20, I = (10, 20, 5), r = 2.5, "
+                              "course form, mirror configuration n . h = 1)");
+    /* n . h = 1 up to the roundings of l and h (FAR_TOL), times p = 20 through the power */
+    const double tol = 20 * FAR_TOL(1, 2.5);
+    const suspect sg[] = {
+        {0.7 * 10 / 6.25, "I.r used for every channel: multiply channel by channel, color_mul(k_s, I)"},
+        {0.7 * 5 / 6.25, "I.b used for every channel: multiply channel by channel, color_mul(k_s, I)"},
+        {(0.7 + 20) / 6.25, "k_s added to I: multiply them, channel by channel (color_mul)"},
+    };
+    assert_close_why(0.9 * 10 / 6.25, L.r, tol * 1.44, describe("%s: red", in), "k_s.r I.r / r^2", NULL, 0);
+    assert_close_why(0.7 * 20 / 6.25, L.g, tol * 2.24, describe("%s: green", in),
+                     "each channel: k_s.g I.g, not another channel's", sg, sizeof sg / sizeof sg[0]);
+    const suspect sb[] = {
+        {0.3 * 10 / 6.25, "I.r used for every channel: multiply channel by channel, color_mul(k_s, I)"},
+        {0.3 * 20 / 6.25, "I.g used for every channel: multiply channel by channel, color_mul(k_s, I)"},
+    };
+    assert_close_why(0.3 * 5 / 6.25, L.b, tol * 0.24, describe("%s: blue", in),
+                     "each channel: k_s.b I.b, not another channel's", sb, sizeof sb / sizeof sb[0]);
 }
 
 /* The lecture's modified Blinn-Phong is the course's term times max(0, n . l):
@@ -133,6 +179,26 @@ static void test_course_and_lecture_forms(void **state)
                          "lecture: k_s max(0, n . h)^p max(0, n . l) I / r^2", sf, sizeof sf / sizeof sf[0]);
         assert_close(0, course.b, 0); /* k_s has no blue */
     }
+    /* A light just below the surface (95 degrees from n: n . l = -0.087) and a
+     * viewer 60 degrees from n on the other side: n . h = 0.954 > 0, so the
+     * course's form (no cosine) has a highlight, and the lecture's is 0
+     * exactly: max(0, n . l) = 0, never a negative radiance. */
+    scene_light low = {.position = vec3_add(point, vec3_scale(at_angle(n, side, 95 * pi / 180), 3)),
+                       .intensity = {9, 9, 9}};
+    vec3 v = at_angle(n, side, -60 * pi / 180);
+    color course = blinn_phong_specular(k_s, 50, point, n, v, &low, PHONG_COURSE);
+    color lecture = blinn_phong_specular(k_s, 50, point, n, v, &low, PHONG_LECTURE);
+    assert_true(course.r > 0);
+    const suspect sn[] = {
+        {course.r * cos(95 * pi / 180), "negative: the lecture's cosine is max(0, n . l), clamped at 0"},
+        {course.r, "the lecture's form is the course's times max(0, n . l); it was left out"},
+        {-course.r * cos(95 * pi / 180), "|n . l|: the cosine is max(0, n . l), 0 for a light below the surface"},
+    };
+    assert_close_why(0, lecture.r, 0,
+                     "blinn_phong_specular(p = 50, light 3 away at 95 degrees from n, viewer at 60 degrees on the "
+                     "other side), lecture form: red",
+                     "lecture: k_s max(0, n . h)^p max(0, n . l) I / r^2 is 0 when n . l < 0", sn,
+                     sizeof sn / sizeof sn[0]);
 }
 
 /* ---- ambient light and the loop over the lights ------------------------------------------------- */
@@ -270,12 +336,106 @@ static void test_ambient_and_lights_behind(void **state)
     scene_free(&desc);
 }
 
+/* The floor seen from below, its back face: the shading normal n is turned
+ * towards the viewer (-y), so a light below the floor lights the point and a
+ * light above it is behind the surface: no shadow ray, nothing added (chapter
+ * 05's rule, through light_in_front, which looks at n, not the geometric
+ * normal +y). */
+static void test_back_face_lights(void **state)
+{
+    (void)state;
+    scene desc;
+    make_floor_scene(&desc, SHADER_PHONG);
+    scene_light under = {.position = vec3_add(spot, vec3_make(-1.5, -4, 2)), .intensity = {20, 15, 10}};
+    scene_light over = {.position = vec3_add(spot, vec3_make(1, 3, -1)), .intensity = {30, 30, 30}};
+    scene_add_light(&desc, over);
+    scene_add_light(&desc, under);
+    static phong_knobs knobs = PHONG_KNOBS_DEFAULT;
+    const vec3 eye_below = vec3_add(spot, vec3_make(1.125, -7.5, 5.125));
+    shading_point sp;
+    shading_view *view = suite_shading_point(&desc, &knobs, (ray){eye_below, vec3_sub(spot, eye_below)}, &sp);
+    assert_vec3_close(vec3_make(0, 1, 0), sp.hit.normal, TOL(1)); /* geometric: the floor's +y */
+    assert_vec3_close(vec3_make(0, -1, 0), sp.n, TOL(1));         /* shading: towards the viewer below */
+    uint64_t rays[RAY_KINDS] = {0};
+    color c = shade_phong(&view->tr, &sp, 0, rays);
+    shading_release(view);
+    const scene_shader *s = &desc.shaders[0];
+    color L = color_add(lambert(s->diffuse_color, sp.hit.point, sp.n, &under),
+                        blinn_phong_specular(s->specular_color, s->exponent, sp.hit.point, sp.n, sp.v, &under,
+                                             PHONG_COURSE));
+    assert_true(L.r > 0.01);
+    const suspect sf[] = {
+        {desc.ambient.r, "the light below was skipped: in front means n . l > 0 for the shading normal n "
+                         "(light_in_front), not the geometric normal hit.normal"},
+    };
+    assert_close_why(desc.ambient.r + L.r, c.r, TOL(1),
+                     describe("shade_phong: the back of a Phong floor seen from below, one light below it, one "
+                              "above it"),
+                     "result = ambient + the contribution of the light on the viewer's side", sf,
+                     sizeof sf / sizeof sf[0]);
+    assert_close(desc.ambient.b + L.b, c.b, TOL(1));
+    check_shadow_rays(1, rays[RAY_SHADOW], "shade_phong: the back of the floor, one light below it, one above it",
+                      "a shadow ray for the light in front of the shading normal only (light_in_front)");
+    scene_free(&desc);
+}
+
+/* The --shadow-eps policy of the tracer's knobs reaches the shadow rays: a
+ * small sphere (radius 2e-4) sits on the segment from the floor point to the
+ * light, 5e-4 from the point.  The policies none and bound start the shadow
+ * ray before it: blocked, the ambient term only.  The policy fixed starts it
+ * 1e-3 along the ray, beyond the sphere (the leak of chapter 06): lit. */
+static void test_shadow_policy_from_knobs(void **state)
+{
+    (void)state;
+    scene desc;
+    make_floor_scene(&desc, SHADER_PHONG);
+    scene_light light = {.position = vec3_add(spot, vec3_make(-3, 6, -2)), .intensity = {49, 49, 49}}; /* r = 7 */
+    scene_add_light(&desc, light);
+    vec3 l = vec3_make((real)(-3.0 / 7), (real)(6.0 / 7), (real)(-2.0 / 7));
+    /* 60 degrees from the eye ray's direction: the eye ray passes 4.3e-4 from its centre */
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = 0,
+                                             .center = vec3_add(spot, vec3_scale(l, (real)5e-4)), .radius = 2e-4});
+    for (int p = 0; p < 3; p++) {
+        static phong_knobs knobs;
+        knobs = (phong_knobs){.spawn = {.eps = p}, .form = PHONG_COURSE};
+        shading_point sp;
+        shading_view *view = suite_shading_point(&desc, &knobs, (ray){eye, vec3_sub(spot, eye)}, &sp);
+        assert_vec3_close(vec3_make(0, 1, 0), sp.hit.normal, TOL(1)); /* the floor, not the sphere */
+        uint64_t rays[RAY_KINDS] = {0};
+        color c = shade_phong(&view->tr, &sp, 0, rays);
+        shading_release(view);
+        const scene_shader *s = &desc.shaders[0];
+        color L = color_add(lambert(s->diffuse_color, sp.hit.point, sp.n, &light),
+                            blinn_phong_specular(s->specular_color, s->exponent, sp.hit.point, sp.n, sp.v, &light,
+                                                 PHONG_COURSE));
+        assert_true(L.r > 0.01);
+        bool lit = p == EPS_FIXED;
+        const suspect sk[] = {
+            {lit ? desc.ambient.r : desc.ambient.r + L.r,
+             "the policy was not the tracer's: pass tracer_eps(tr) to light_blocked, not a policy of your own"},
+        };
+        assert_close_why(desc.ambient.r + (lit ? L.r : 0), c.r, TOL(1),
+                         describe("shade_phong with --shadow-eps=%s: a sphere of radius 2e-4 on the shadow ray, "
+                                  "5e-4 from the floor point (%s)",
+                                  eps_policy_names[p], lit ? "the ray starts beyond it" : "it blocks the light"),
+                         lit ? "fixed starts the shadow ray 1e-3 along it, beyond the sphere: the light is added"
+                             : "the shadow ray starts before the sphere: blocked, the ambient term only",
+                         sk, sizeof sk / sizeof sk[0]);
+        check_shadow_rays(1, rays[RAY_SHADOW], describe("shade_phong with --shadow-eps=%s", eps_policy_names[p]),
+                          "one shadow ray per light in front");
+    }
+    scene_free(&desc);
+}
+
 static const graded_test tests[] = {
     GRADED(test_half_vector, 2),
     GRADED(test_exponent_behaviour, 3),
     GRADED(test_course_and_lecture_forms, 2),
+    GRADED(test_specular_per_channel, 2),
     GRADED(test_two_lights_add, 3),
     GRADED(test_ambient_and_lights_behind, 2),
+    GRADED(test_back_face_lights, 2),
+    GRADED(test_shadow_policy_from_knobs, 2),
 };
 
 SUITE_MAIN("07_blinn_phong", tests)

@@ -177,6 +177,54 @@ static void test_mirror_ray_reaches_probe(void **state)
     scene_free(&desc);
 }
 
+/* The mirror ray leaves the surface as the tracer's --shadow-eps policy says
+ * (chapter 06's spawn_ray with tracer_eps(tr)): with fixed it starts 1e-3
+ * along the mirror direction, with bound an error bound off the surface.
+ * The tilted mirror and probe of the test above; the probe records where
+ * the ray started. */
+static void test_mirror_ray_policy_from_knobs(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    vec3 n = vec3_normalize(vec3_make(1, 4, -2));
+    add_plane(&desc, add_shader(&desc, SHADER_LAMBERTIAN, color_make(0, 0, 0), color_make(1, 1, 1)), far_point, n,
+              10);
+    vec3 eye = vec3_add(far_point, vec3_make(-3, 5, 2));
+    ray eye_ray = {eye, vec3_sub(far_point, eye)};
+    vec3 r = reflect(eye_ray.d, n);
+    probe_shader = add_shader(&desc, SHADER_LAMBERTIAN, color_make(1, 1, 1), color_make(0, 0, 0));
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = probe_shader,
+                                             .center = vec3_add(far_point, vec3_scale(r, 2)), .radius = 0.5});
+    const eps_policy policies[] = {EPS_FIXED, EPS_BOUND};
+    for (int k = 0; k < 2; k++) {
+        path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
+        knobs.phong.spawn.eps = policies[k];
+        shading_point sp; /* the mirror's point, as the shade function is given it */
+        shading_release(suite_shading_point(&desc, &knobs, eye_ray, &sp));
+        vec3 expected = spawn_ray(&sp, reflect(sp.r.d, sp.n), policies[k]).p;
+        uint64_t rays[RAY_KINDS] = {0};
+        trace_one(&desc, &knobs, eye_ray, rays);
+        const char *input = describe("a mirror ray with --shadow-eps=%s: its origin", eps_policy_names[policies[k]]);
+        check_count(1, probe.n, input, "rays that reached the probe", "one mirror ray along reflect(sp->r.d, sp->n)");
+        vec3 none = sp.hit.point, fixed = spawn_ray(&sp, r, EPS_FIXED).p, bound = spawn_ray(&sp, r, EPS_BOUND).p;
+        const suspect_vec3 so[] = {
+            {fixed, "the fixed policy whatever the knob: spawn_ray(sp, direction, tracer_eps(tr))"},
+            {bound, "the bound policy whatever the knob: spawn_ray(sp, direction, tracer_eps(tr))"},
+            {none, "started at the point itself: leave the surface through spawn_ray(sp, direction, tracer_eps(tr))"},
+        };
+        /* the point's coordinates are up to 60: the origin is the point plus
+         * the offset, a few roundings at the spacing of reals near 60, well
+         * inside TOL(64) = 2048 REAL_EPSILON (2.4e-4 in float, a quarter of
+         * the fixed offset 1e-3, so the policies stay apart) */
+        assert_vec3_why(expected, probe.r[0].p, TOL(64), input,
+                        "spawn_ray(sp, reflect(sp->r.d, sp->n), tracer_eps(tr)): the tracer's policy", so,
+                        sizeof so / sizeof so[0]);
+    }
+    probe_shader = -1;
+    scene_free(&desc);
+}
+
 /* The glazed surface is chapter 07's result plus k_m L_m: with k_m = 0 it is
  * chapter 07's exactly and casts no mirror ray; with k_m it adds k_m times
  * what the mirror ray finds (here the backColor). */
@@ -384,6 +432,7 @@ static const graded_test tests[] = {
     GRADED(test_reflect_known, 3),
     GRADED(test_reflect_random, 2),
     GRADED(test_mirror_ray_reaches_probe, 3),
+    GRADED(test_mirror_ray_policy_from_knobs, 2),
     GRADED(test_glazed_adds_to_chapter_07, 2),
     GRADED(test_facing_mirrors_depth_and_weight, 3),
     GRADED(test_convex_mirror_never_sees_itself, 3),
