@@ -4,6 +4,7 @@
  * by hand, so a wrong camera_basis costs the basis tests only.  A failure
  * names the input, the expected value, the value got and the likely mistake
  * (assert_vec3_why, tests/suite.h). */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -326,6 +327,41 @@ static void test_basis_of_axis_camera_is_exact(void **state)
     assert_vec3_why(vec3_make(0, 0, 1), cam.w, 0, describe("%s: w", in), "w = -viewDir / |viewDir|", sw, 1);
 }
 
+/* viewDir and viewUp of any size give the same basis (the exercise's unit()).
+ * Here both are scaled by 2^k or 2^-k with k three quarters of the exponent
+ * range (2^768 in double, 2^96 in float), so that a product of two of their
+ * components overflows, or underflows to 0: a cross product or a dot product
+ * of the raw vectors is infinite or zero, and its direction NaN.  unit()
+ * divides by the largest component first, so the basis is that of
+ * viewDir (-2, -1, -2), viewUp (0, 1, 0):
+ *     w = (2, 1, 2) / 3,  u = (1, 0, -1) / sqrt 2,  v = w x u = (-1, 4, -1) / (3 sqrt 2),
+ * each within a few roundings, 8 eps as in test_basis_lecture_camera. */
+static void test_basis_of_huge_and_tiny_vectors(void **state)
+{
+    (void)state;
+    const int k = (REAL_EPSILON < 1e-10 ? 1024 : 128) * 3 / 4;
+    const real huge = (real)ldexp(1, k), tiny = (real)ldexp(1, -k);
+    const real scales[][2] = {{huge, huge}, {tiny, tiny}, {huge, tiny}, {tiny, huge}};
+    const double r2 = sqrt(2.0);
+    const vec3 ew = vec3_make((real)(2.0 / 3), (real)(1.0 / 3), (real)(2.0 / 3));
+    const vec3 eu = vec3_make((real)(1 / r2), 0, (real)(-1 / r2));
+    const vec3 ev = vec3_make((real)(-1 / (3 * r2)), (real)(4 / (3 * r2)), (real)(-1 / (3 * r2)));
+    const char *raw = "a product of two components overflowed or underflowed: normalize with unit(), which divides by "
+                      "the largest component first, and take u from unit(viewDir) x unit(viewUp), not from the raw "
+                      "vectors";
+    const suspect_vec3 overflow[] = {{vec3_make((real)NAN, (real)NAN, (real)NAN), raw}};
+    for (size_t m = 0; m < N(scales); m++) {
+        const vec3 dir = vec3_scale(vec3_make(-2, -1, -2), scales[m][0]), up = vec3_make(0, scales[m][1], 0);
+        vec3 u, v, w;
+        camera_basis(dir, up, &u, &v, &w);
+        const char *in = describe("camera_basis(viewDir = 2^%d (-2, -1, -2), viewUp = 2^%d (0, 1, 0))",
+                                  scales[m][0] > 1 ? k : -k, scales[m][1] > 1 ? k : -k);
+        assert_vec3_why(ew, w, 8 * EPS, describe("%s: w", in), raw, overflow, N(overflow));
+        assert_vec3_why(eu, u, 8 * EPS, describe("%s: u", in), raw, overflow, N(overflow));
+        assert_vec3_why(ev, v, 8 * EPS, describe("%s: v", in), raw, overflow, N(overflow));
+    }
+}
+
 static void test_centre_ray_along_view_dir(void **state)
 {
     (void)state;
@@ -473,6 +509,7 @@ static const graded_test tests[] = {
     GRADED(test_basis_lecture_camera, 2),
     GRADED(test_basis_orthonormal_right_handed, 2),
     GRADED(test_basis_of_axis_camera_is_exact, 1),
+    GRADED(test_basis_of_huge_and_tiny_vectors, 1),
     GRADED(test_perspective_rays, 3),
     GRADED(test_orthographic_rays, 3),
     GRADED(test_centre_ray_along_view_dir, 1),

@@ -209,7 +209,8 @@ static void expect_roots(const sphere *s, ray r, sphere_formula f, double tolera
     if (expected.x != expected.x) {
         if (found)
             fail_msg("%s\n    expected false: no real root (the line misses)\n    got      true, roots %.17g and %.17g\n"
-                     "    likely mistake: a negative discriminant means a miss: return false when !(disc >= 0)",
+                     "    likely mistake: a negative or NaN discriminant means a miss: return false when "
+                     "!(disc >= 0), which a NaN fails too (disc < 0 lets a NaN through)",
                      in, (double)got.x, (double)got.y);
         return;
     }
@@ -232,6 +233,7 @@ static void roots_case(sphere_formula f)
         {{4, 1, 3}, {(real)0.6, (real)0.7, (real)0.4}},          /* away: both roots negative */
         {{4, 1, 3}, {(real)-0.6, (real)0.7, (real)-0.4}},        /* a miss */
         {{(real)-7, (real)5, (real)-3}, {(real)2.5, (real)-2.25, 1}},
+        {{((real)NAN), 1, 3}, {(real)-0.6, (real)-0.7, (real)-0.4}}, /* a NaN coordinate: a NaN discriminant, no root */
     };
     for (size_t k = 0; k < N(rays); k++)
         expect_roots(&s, rays[k], f, 16 * REAL_EPSILON * 8);
@@ -272,6 +274,26 @@ static void test_b_zero_sign(void **state)
     assert_close_why(tau, hit ? t : 0, 8 * REAL_EPSILON * tau,
                      describe("sphere_intersect(%s, (0, inf), robust): t", describe_ray(&s, r)),
                      "the far root, t = sqrt(-C / A)", none, 1);
+
+    /* B = 0 and disc = 0: a ray that starts at its point of tangency.  Again
+     * exact: f = (1.5, 0, 0) = R (1, 0, 0), d = (0, 0.5, 3) is perpendicular
+     * to it, so B = 0, l = f, disc = A (R^2 - l.l) = 0 and C = 0.  The double
+     * root is t = 0: q = -(B + sign(B) sqrt(disc)) = 0, and C / q would be
+     * 0 / 0; the exercise takes t1 = t0 then.  Both roots exactly 0. */
+    const ray tangent = {{(real)1.75, (real)-0.5, 1}, {0, (real)0.5, 3}};
+    const char *at = describe("sphere_roots(%s, robust), where B = 0 and disc = 0", describe_ray(&s, tangent));
+    real t0 = ((real)NAN), t1 = ((real)NAN);
+    if (!sphere_roots(&s, tangent, SPHERE_ROBUST, &t0, &t1))
+        fail_msg("%s\n    expected the double root t = 0\n    got      false (no roots)\n    likely mistake: "
+                 "disc = 0 is a root (a tangent ray): the miss test is !(disc >= 0)",
+                 at);
+    const suspect zero_by_zero[] = {
+        {((real)NAN), "t1 = C / q with q = 0 is 0 / 0 = NaN: when q = 0 both roots are 0, take t1 = t0"},
+        {REAL_INFINITY, "t1 = C / q with q = 0 divides by zero: when q = 0 both roots are 0, take t1 = t0"},
+        {-REAL_INFINITY, "t1 = C / q with q = 0 divides by zero: when q = 0 both roots are 0, take t1 = t0"},
+    };
+    assert_close_why(0, t0, 0, describe("%s: t0", at), "t0 = q / A with q = 0", zero_by_zero, N(zero_by_zero));
+    assert_close_why(0, t1, 0, describe("%s: t1", at), "t1 = t0 = 0 when q = 0", zero_by_zero, N(zero_by_zero));
 }
 
 /* A ray that starts near the sphere has one small root.  The stable pair
@@ -373,6 +395,10 @@ static void test_nearest_root(void **state)
     expect_nearest(4, 6, (real)4.5, (real)5.5, NONE, between, 1);
     const suspect tangent[] = {{0, "a double root (a tangent ray) is a hit"}};
     expect_nearest(5, 5, 0, inf, 5, tangent, 1);
+    /* NaN roots (the textbook formula's 0 / 0 for d = 0) are no hit */
+    const suspect nan_roots[] = {{0, "a NaN root taken: write the window test so that a NaN fails it, "
+                                     "t_min < t && t < t_max (!(t <= t_min) && !(t >= t_max) lets it through)"}};
+    expect_nearest(NONE, NONE, 0, inf, NONE, nan_roots, 1);
     /* near the ends of the range: a tiny root is still after t_min = 0, a huge one before t_max */
     const suspect fixed[] = {{3, "compared with a fixed epsilon instead of t_min"},
                              {0, "no hit: a tiny positive root is after t_min = 0"}};
@@ -446,6 +472,16 @@ static void test_normal_unit_far_from_origin(void **state)
                               {{0, 0, 0}, (real)1e-3}};
     for (size_t k = 0; k < N(spheres); k++) {
         const sphere *s = &spheres[k];
+        /* x = c is no hit point (those are R from c), but the division by
+         * |x - c| = 0 there is guarded, so that no NaN leaves sphere_normal:
+         * the guarded n is x - c = (0, 0, 0). */
+        vec3 n0 = sphere_normal(s, s->center);
+        if (!vec3_is_finite(n0))
+            fail_msg("sphere_normal(c = (%g, %g, %g), R = %g; x = c)\n    expected a vector without NaN, (0, 0, 0) "
+                     "from the guard\n    got      (%.17g, %.17g, %.17g)\n    likely mistake: divided by |x - c| "
+                     "= 0: check the length before dividing, as the exercise says",
+                     (double)s->center.x, (double)s->center.y, (double)s->center.z, (double)s->radius,
+                     (double)n0.x, (double)n0.y, (double)n0.z);
         for (int m = 0; m < 27; m++) {
             if (m == 13)
                 continue;
