@@ -169,6 +169,54 @@ static void test_parallel_ray(void **state)
     }
 }
 
+/* The exercise on its own (triangle_cramer: no check of degenerate.h after
+ * it, which would hide these): where cramer cannot divide, or its data are
+ * not numbers, it answers false and leaves *hit alone.  A NaN or infinite
+ * coordinate of p leaves M finite (M does not involve p) and makes t, beta
+ * and gamma NaN or infinite: comparisons written so that a NaN passes them
+ * (t <= t_min || t >= t_max) take such a ray for a hit. */
+static void test_cramer_alone_rejects_what_it_cannot_solve(void **state)
+{
+    (void)state;
+    const real nan = (real)NAN, inf = REAL_INFINITY;
+    const vec3 x = point_at(&flat, (real)0.25, (real)0.25), d = vec3_sub(x, above);
+    const triangle collinear = {{1, 1, 2}, {3, 2, 2}, {5, 3, 2}};
+    const char *nan_passes = "a NaN t, beta or gamma passed a comparison: write them so that a NaN fails, "
+                             "!(t > t_min && t < t_max), !(beta >= 0 && ...)";
+    const char *m_unchecked = "M not checked before dividing: return false when M == 0 or M is not finite";
+    const struct {
+        const triangle *tri;
+        ray r;
+        const char *what, *mistake;
+    } cases[] = {
+        {&flat, {{nan, above.y, above.z}, d}, "p = (NaN, 0.25, 10)", nan_passes},
+        {&flat, {{above.x, nan, above.z}, d}, "p = (0.5, NaN, 10)", nan_passes},
+        {&flat, {{above.x, above.y, inf}, d}, "p = (0.5, 0.25, inf)", nan_passes},
+        {&flat, {{above.x, -inf, above.z}, d}, "p = (0.5, -inf, 10)", nan_passes},
+        {&flat, {above, {d.x, d.y, nan}}, "d = (.., .., NaN): M is NaN", m_unchecked},
+        {&flat, {above, {inf, d.y, d.z}}, "d = (inf, .., ..): M is not finite", m_unchecked},
+        {&flat, {vec3_make(0, 0, 3), vec3_sub(flat.b, flat.a)}, "d parallel to the plane: M = 0", m_unchecked},
+        {&collinear, {above, vec3_sub(collinear.b, above)}, "collinear vertices: M = 0", m_unchecked},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        triangle_hit h = {-7, -7, -7};
+        const bool hit = triangle_cramer(cases[k].tri, cases[k].r, 0, inf, &h);
+        if (hit || !(h.t == -7 && h.beta == -7 && h.gamma == -7)) {
+            print_triangle("input", cases[k].tri, cases[k].r);
+            fail_msg("cramer, window (0, inf), %s\n    expected false, *hit untouched\n    got      %s, t %g, beta "
+                     "%g, gamma %g\n    likely mistake: %s",
+                     cases[k].what, hit ? "true" : "false (but *hit written)", (double)h.t, (double)h.beta,
+                     (double)h.gamma, cases[k].mistake);
+        }
+    }
+    /* ... and the same ray from a finite origin is a hit, at beta = gamma = 1/4. */
+    triangle_hit h;
+    assert_true(triangle_cramer(&flat, (ray){above, d}, 0, inf, &h));
+    assert_close(1, h.t, TOL);
+    assert_close(0.25, h.beta, TOL);
+    assert_close(0.25, h.gamma, TOL);
+}
+
 /* Collinear and coincident vertices span no plane: a miss, no NaN, and no normal. */
 static void test_degenerate_triangles(void **state)
 {
@@ -848,6 +896,7 @@ static const graded_test tests[] = {
     GRADED(test_just_outside, 2),
     GRADED(test_parallel_ray, 2),
     GRADED(test_degenerate_triangles, 2),
+    GRADED(test_cramer_alone_rejects_what_it_cannot_solve, 2),
     GRADED(test_tiny_triangle, 2),
     GRADED(test_far_triangles, 2),
     GRADED(test_grazing_rays, 2),

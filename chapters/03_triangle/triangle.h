@@ -47,6 +47,13 @@ typedef struct {
  * only on a hit. */
 bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, triangle_test test, triangle_hit *hit);
 
+/* Cramer's rule alone, as the chapter's exercise writes it: the hit in
+ * (t_min, t_max), or false for M = 0, a non-finite M, and a t, beta or
+ * gamma that is NaN; *hit is written only on a hit.  Without the check of
+ * degenerate.h that triangle_intersect adds, so that the tests can look at
+ * the exercise on its own (a renderer calls triangle_intersect). */
+bool triangle_cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit);
+
 /* The unit geometric normal, normalize((b - a) x (c - a)).  A degenerate
  * triangle has none: the result is then the zero vector. */
 vec3 triangle_normal(const triangle *tri);

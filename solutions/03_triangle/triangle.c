@@ -67,6 +67,11 @@ bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, tria
 }
 /* end snippet */
 
+bool triangle_cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
+{
+    return cramer(tri, r, t_min, t_max, hit);
+}
+
 vec3 triangle_normal(const triangle *tri)
 {
     vec3 n = vec3_cross(vec3_sub(tri->b, tri->a), vec3_sub(tri->c, tri->a));
