@@ -213,6 +213,29 @@ static void test_fresnel_normal_incidence(void **state)
     assert_close(0.04, fresnel_schlick(1, 1, (real)1.5, 1), TOL(1));
     /* water: (0.33 / 2.33)^2 */
     assert_close(0.33 * 0.33 / (2.33 * 2.33), fresnel_exact(1, 1, (real)1.33, 1), TOL(1));
+    /* water into glass and back, neither side air: R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2 =
+     * (0.17 / 2.83)^2, about 0.0036, not the 0.04 of glass against air.  Expected in double from
+     * the indices as the function gets them ((real)1.33 is inexact); eta_i - eta_t is then exact
+     * (the two are within a factor 2), and the rest is a handful of roundings, each relative to R:
+     * below 0.02 REAL_EPSILON in all.  TOL(0.01) = 0.32 REAL_EPSILON, far below the 0.036 that a
+     * mistaken R_0 is off by */
+    const double eta_w = (real)1.33, R_wg = (eta_w - 1.5) / (eta_w + 1.5) * ((eta_w - 1.5) / (eta_w + 1.5));
+    const suspect s_wg[] = {
+        {0.04, "R_0 from the glass's index against air, ((1.5 - 1) / (1.5 + 1))^2: both indices enter, "
+               "R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2"},
+        {0.33 * 0.33 / (2.33 * 2.33), "R_0 from the water's index against air, ((1.33 - 1) / (1.33 + 1))^2: both "
+                                      "indices enter, R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2"},
+    };
+    assert_close_why(R_wg, fresnel_schlick(1, 1, (real)1.33, (real)1.5), TOL(0.01),
+                     "fresnel_schlick(cos_i = 1, cos_t = 1, 1.33, 1.5)",
+                     "R = R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2 head on", s_wg, sizeof s_wg / sizeof s_wg[0]);
+    assert_close_why(R_wg, fresnel_schlick(1, 1, (real)1.5, (real)1.33), TOL(0.01),
+                     "fresnel_schlick(cos_i = 1, cos_t = 1, 1.5, 1.33)",
+                     "R = R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2 head on", s_wg, sizeof s_wg / sizeof s_wg[0]);
+    assert_close_why(R_wg, fresnel_exact(1, 1, (real)1.33, (real)1.5), TOL(0.01),
+                     "fresnel_exact(cos_i = 1, cos_t = 1, 1.33, 1.5)",
+                     "R = (r_s^2 + r_p^2) / 2 = ((eta_i - eta_t) / (eta_i + eta_t))^2 head on", s_wg,
+                     sizeof s_wg / sizeof s_wg[0]);
 }
 
 /* Fresnel's equations against their sine-and-tangent form, computed in

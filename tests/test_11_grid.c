@@ -714,8 +714,14 @@ static void expect_range(const grid *g, vec3 lo, vec3 hi, const int *want_first,
             {clamp_cell(ceil((double)f_lo_x) - 1, 0, n), clamp_cell(floor((double)f_hi_x), -1, n - 1),
              "the x axis's cell size or origin used for another axis: cell_coordinate(g, x, a) with this axis a"},
         };
-        const char *why = "first = ceil(f_lo) - 1, last = floor(f_hi), clamped to 0 .. n - 1 (first > last: none)";
-        for (size_t k = 0; k < sizeof mistakes / sizeof mistakes[0]; k++)
+        /* beyond an int's range the likely mistake is the conversion, whatever else the result looks like */
+        const bool beyond_int = fabs(F) > 2147483647.0 || fabs(L) > 2147483647.0;
+        const char *why = beyond_int ? "f_lo or f_hi converted to int before it was clamped: beyond an int's range "
+                                       "the conversion is undefined (x86-64 gives INT_MIN); clamp the real value "
+                                       "with clamp_index, then convert"
+                                     : "first = ceil(f_lo) - 1, last = floor(f_hi), clamped to 0 .. n - 1 (first > "
+                                       "last: none)";
+        for (size_t k = 0; !beyond_int && k < sizeof mistakes / sizeof mistakes[0]; k++)
             if (mistakes[k].first == first[a] && mistakes[k].last == last[a]) {
                 why = mistakes[k].why;
                 break;
@@ -748,6 +754,8 @@ static void test_cell_range(void **state)
         {{(real)-0.5, 3, (real)1.5}, {0, 3, (real)2.5}, {1, 1, 0}, {4, 2, 2}},
         /* reaching past the grid: clamped */
         {{-100, -100, -100}, {100, 100, 100}, {0, 0, 0}, {7, 3, 2}},
+        /* reaching far past it: f_lo and f_hi are about -+4e30 cells, beyond an int's range */
+        {{(real)-1e30, (real)-1e30, (real)-1e30}, {(real)1e30, (real)1e30, (real)1e30}, {0, 0, 0}, {7, 3, 2}},
         /* on the grid's own faces: the outer cells */
         {{-1, 2, (real)0.5}, {-1, 2, (real)0.5}, {0, 0, 0}, {0, 0, 0}},
         {{1, 4, (real)3.5}, {1, 4, (real)3.5}, {7, 3, 2}, {7, 3, 2}},
