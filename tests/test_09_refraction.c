@@ -185,10 +185,19 @@ static void test_critical_angle(void **state)
         fail_msg("refract out of glass (1.5 into 1) at 0.999 theta_c\n    expected true (transmitted)\n"
                  "    got      false\n    likely mistake: %s",
                  tir);
+    /* refract.h: under total internal reflection *T and *cos_t are left as they were */
+    T = vec3_make(-7, -7, -7);
+    cos_t = -7;
     if (refract(incoming(n, t, 1.001 * theta_c), n, (real)1.5, 1, &T, &cos_t))
         fail_msg("refract out of glass (1.5 into 1) at 1.001 theta_c\n    expected false (total internal "
                  "reflection)\n    got      true\n    likely mistake: %s",
                  tir);
+    if (!(T.x == -7 && T.y == -7 && T.z == -7 && cos_t == -7))
+        fail_msg("refract out of glass (1.5 into 1) at 1.001 theta_c: total internal reflection\n    expected *T "
+                 "and *cos_t untouched (-7)\n    got      *T = (%g, %g, %g), *cos_t = %g\n    likely mistake: "
+                 "*T or *cos_t written before the test |S_t|^2 > 1: return false first, write them only on "
+                 "the way out of a transmission",
+                 (double)T.x, (double)T.y, (double)T.z, (double)cos_t);
     /* into glass there is no critical angle: 89.9 degrees still transmits */
     assert_true(refract(incoming(n_out, tangent_of(n_out), 89.9 * pi / 180), n_out, 1, (real)1.5, &T, &cos_t));
 }
