@@ -233,6 +233,16 @@ static color shade_spot(const scene *desc, phong_form form, uint64_t *rays, shad
     return c;
 }
 
+/* What one unblocked light adds at sp with the floor's shader (the first):
+ * Lambert plus the course's specular term. */
+static color light_term(const scene *desc, const shading_point *sp, const scene_light *light)
+{
+    const scene_shader *s = &desc->shaders[0];
+    return color_add(lambert(s->diffuse_color, sp->hit.point, sp->n, light),
+                     blinn_phong_specular(s->specular_color, s->exponent, sp->hit.point, sp->n, sp->v, light,
+                                          PHONG_COURSE));
+}
+
 /* The number of shadow rays shade_phong cast, checked after the radiance so
  * that a wrong sum is reported by what it is missing. */
 static void check_shadow_rays(uint64_t expected, uint64_t got, const char *input, const char *mistake)
@@ -256,13 +266,7 @@ static void test_two_lights_add(void **state)
     uint64_t rays[RAY_KINDS] = {0};
     shading_point sp;
     color both = shade_spot(&desc, PHONG_COURSE, rays, &sp);
-    const scene_shader *s = &desc.shaders[0];
-    color La = color_add(lambert(s->diffuse_color, sp.hit.point, sp.n, &a),
-                         blinn_phong_specular(s->specular_color, s->exponent, sp.hit.point, sp.n, sp.v, &a,
-                                              PHONG_COURSE));
-    color Lb = color_add(lambert(s->diffuse_color, sp.hit.point, sp.n, &b),
-                         blinn_phong_specular(s->specular_color, s->exponent, sp.hit.point, sp.n, sp.v, &b,
-                                              PHONG_COURSE));
+    color La = light_term(&desc, &sp, &a), Lb = light_term(&desc, &sp, &b);
     assert_true(La.r > 0.01 && Lb.r > 0.01);
     const suspect sl[] = {
         {desc.ambient.r, "no light added: loop over tr->desc->lights and add each unblocked one's contribution"},
@@ -359,10 +363,7 @@ static void test_back_face_lights(void **state)
     uint64_t rays[RAY_KINDS] = {0};
     color c = shade_phong(&view->tr, &sp, 0, rays);
     shading_release(view);
-    const scene_shader *s = &desc.shaders[0];
-    color L = color_add(lambert(s->diffuse_color, sp.hit.point, sp.n, &under),
-                        blinn_phong_specular(s->specular_color, s->exponent, sp.hit.point, sp.n, sp.v, &under,
-                                             PHONG_COURSE));
+    color L = light_term(&desc, &sp, &under);
     assert_true(L.r > 0.01);
     const suspect sf[] = {
         {desc.ambient.r, "the light below was skipped: in front means n . l > 0 for the shading normal n "
@@ -404,10 +405,7 @@ static void test_shadow_policy_from_knobs(void **state)
         uint64_t rays[RAY_KINDS] = {0};
         color c = shade_phong(&view->tr, &sp, 0, rays);
         shading_release(view);
-        const scene_shader *s = &desc.shaders[0];
-        color L = color_add(lambert(s->diffuse_color, sp.hit.point, sp.n, &light),
-                            blinn_phong_specular(s->specular_color, s->exponent, sp.hit.point, sp.n, sp.v, &light,
-                                                 PHONG_COURSE));
+        color L = light_term(&desc, &sp, &light);
         assert_true(L.r > 0.01);
         bool lit = p == EPS_FIXED;
         const suspect sk[] = {
