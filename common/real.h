@@ -23,6 +23,7 @@ typedef float real;
 #define real_floor floorf
 #define real_fmax fmaxf
 #define real_fmin fminf
+#define real_copysign copysignf
 #else
 typedef double real;
 #define REAL_EPSILON DBL_EPSILON
@@ -35,9 +36,39 @@ typedef double real;
 #define real_floor floor
 #define real_fmax fmax
 #define real_fmin fmin
+#define real_copysign copysign
 #endif
 
 #define REAL_INFINITY ((real)INFINITY)
+
+/* Lengths between 2^-REAL_SAFE_EXPONENT and 2^REAL_SAFE_EXPONENT can be
+ * multiplied four at a time (a ray-sphere discriminant is |d|^2 R^2 in size)
+ * without leaving the normal reals, with room for the sums: 2^(4 x 30) is
+ * below float's 2^128, 2^(4 x 254) below double's 2^1024.  Data outside
+ * that range are scaled by a power of two first (real_scale_exponent), which
+ * changes no digit. */
+#ifdef RT_REAL_FLOAT
+#define REAL_SAFE_EXPONENT 30
+#define REAL_SAFE_LOW 0x1p-30f /* 2^-REAL_SAFE_EXPONENT */
+#define REAL_SAFE_HIGH 0x1p30f
+#else
+#define REAL_SAFE_EXPONENT 254
+#define REAL_SAFE_LOW 0x1p-254
+#define REAL_SAFE_HIGH 0x1p254
+#endif
+
+/* 0 when |x| is in the safe range (or x is 0, infinite or NaN: no power of
+ * two mends those); else e with 2^(e - 1) <= |x| < 2^e, so that x / 2^e is
+ * between 1/2 and 1. */
+static inline int real_scale_exponent(real x)
+{
+    x = real_abs(x);
+    if ((x >= REAL_SAFE_LOW && x <= REAL_SAFE_HIGH) || !(x > 0 && x <= REAL_MAX))
+        return 0;
+    int e;
+    frexp((double)x, &e);
+    return e;
+}
 
 /* Whether the whole number x is odd, with no conversion to an integer type
  * (undefined behaviour once x is beyond that type's range, 2^63 for long).

@@ -77,6 +77,13 @@ static inline vec3 vec3_normalize(vec3 a)
     return vec3_scale(b, (real)1 / real_sqrt(vec3_dot(b, b)));
 }
 
+/* a 2^e, exactly (a power of two moves only the exponents) unless a
+ * component leaves the range of reals. */
+static inline vec3 vec3_ldexp(vec3 a, int e)
+{
+    return (vec3){(real)ldexp(a.x, e), (real)ldexp(a.y, e), (real)ldexp(a.z, e)};
+}
+
 static inline bool vec3_is_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
 #endif

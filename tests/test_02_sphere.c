@@ -334,6 +334,84 @@ static void test_small_root_near_surface(void **state)
     }
 }
 
+/* Rays that leave a point of the sphere along its tangent there: p = c + R u
+ * and d perpendicular to u, both rounded.  B, disc and C are then all
+ * rounding noise, and C / q can be noise of any size; (6) keeps |t1| within
+ * sqrt(|C| / A), its exact bound.  Every root must put its point on the
+ * sphere within the README's 16 eps S (S = |p| + |c| + R); the exact roots
+ * are both within rounding of t = 0.  20 000 rays of random spheres (radius
+ * 1e-2 to 1e3, centres up to 1e3 from the origin), points and tangents. */
+static void test_tangent_rays_from_the_surface(void **state)
+{
+    (void)state;
+    unsigned long seed = 2024;
+    long bad = 0;
+    for (int k = 0; k < 20000; k++) {
+        const double R = pow(10, 5 * suite_uniform(&seed) - 2), spread = pow(10, 3 * suite_uniform(&seed));
+        const vec3 centre = suite_random_unit(&seed);
+        const sphere s = {vec3_scale(centre, (real)spread), (real)R};
+        const vec3 u = suite_random_unit(&seed), side = suite_random_unit(&seed);
+        const real length = (real)pow(10, 4 * suite_uniform(&seed) - 2);
+        const vec3 tangent = vec3_cross(u, side);
+        if (!(vec3_length(tangent) > (real)0.1))
+            continue;
+        const ray r = {vec3_add(s.center, vec3_scale(u, s.radius)), vec3_scale(vec3_normalize(tangent), length)};
+        real t0, t1;
+        if (!sphere_roots(&s, r, SPHERE_ROBUST, &t0, &t1))
+            continue; /* the line misses by rounding: no root is fine */
+        const long double S = (long double)vec3_length(r.p) + (long double)vec3_length(s.center) + R;
+        const real roots[2] = {t0, t1};
+        for (int j = 0; j < 2; j++) {
+            long double x = (long double)r.p.x + (long double)roots[j] * r.d.x - s.center.x;
+            long double y = (long double)r.p.y + (long double)roots[j] * r.d.y - s.center.y;
+            long double z = (long double)r.p.z + (long double)roots[j] * r.d.z - s.center.z;
+            long double off = fabsl(sqrtl(x * x + y * y + z * z) - (long double)s.radius);
+            if (!(off <= 16 * REAL_EPSILON * S) && bad++ < 3)
+                print_message("sphere_roots(%s, robust): a tangent ray from the surface; root %.17g puts its "
+                              "point %.3Lg from the sphere, %.3Lg eps S\n",
+                              describe_ray(&s, r), (double)roots[j], off, off / (REAL_EPSILON * S));
+        }
+    }
+    if (bad)
+        fail_msg("sphere_roots(robust) on 20000 tangent rays from a point of the sphere\n    expected every root within "
+                 "16 eps S of the sphere\n    got      %ld roots beyond\n    likely mistake: t1 = C / q "
+                 "without the bound (6): where B, disc and C are all rounding noise C / q is noise of any size; "
+                 "when t1^2 A > |C| take t1 = sign(t1) sqrt(|C| / A)",
+                 bad);
+}
+
+/* sphere_roots (given) scales data of extreme size by powers of two: a
+ * sphere of centre sigma (0.5, 0.25, 4) and radius 0.75 sigma, the ray
+ * from sigma (0.5, 0.25, 0) along tau (0, 0, 1) meets it at t = 3.25 sigma /
+ * tau and 4.75 sigma / tau, exactly, for sigma and tau from the ends of the
+ * exponent range (all data and both roots representable). */
+static void test_roots_at_any_scale(void **state)
+{
+    (void)state;
+    const int top = REAL_EPSILON < 1e-10 ? 1000 : 120;
+    const int exps[] = {-top, -top / 3, 0, top / 3, top};
+    for (size_t i = 0; i < N(exps); i++)
+        for (size_t j = 0; j < N(exps); j++) {
+            const int e = exps[i] - exps[j]; /* t is 2^e times 3.25 and 4.75 */
+            if (e > top || e < -top)
+                continue;
+            const real sigma = (real)ldexp(1, exps[i]), tau = (real)ldexp(1, exps[j]);
+            const sphere s = {vec3_scale(vec3_make((real)0.5, (real)0.25, 4), sigma), (real)0.75 * sigma};
+            const ray r = {vec3_scale(vec3_make((real)0.5, (real)0.25, 0), sigma), vec3_make(0, 0, tau)};
+            for (int f = 0; f < 2; f++) {
+                real t0 = 0, t1 = 0;
+                const bool found = sphere_roots(&s, r, f ? SPHERE_TEXTBOOK : SPHERE_ROBUST, &t0, &t1);
+                const real near = (real)ldexp(3.25, e), far = (real)ldexp(4.75, e);
+                if (!found || real_fmin(t0, t1) != near || real_fmax(t0, t1) != far)
+                    fail_msg("sphere_roots(sigma = 2^%d, tau = 2^%d, %s)\n    expected roots %a and %a\n    got      "
+                             "%s %a and %a\n    likely mistake: sphere_roots is given; the products of four lengths "
+                             "overflowed or underflowed",
+                             exps[i], exps[j], f ? "textbook" : "robust", (double)near, (double)far,
+                             found ? "" : "false,", (double)t0, (double)t1);
+            }
+        }
+}
+
 /* ---- the nearest root in the open window ------------------------------------ */
 
 #define NONE ((real)NAN)
@@ -661,6 +739,8 @@ static const graded_test tests[] = {
     GRADED(test_roots_textbook, 2),
     GRADED(test_b_zero_sign, 2),
     GRADED(test_small_root_near_surface, 2),
+    GRADED(test_tangent_rays_from_the_surface, 2),
+    GRADED(test_roots_at_any_scale, 0), /* sphere_roots is given: no points */
     GRADED(test_nearest_root, 3),
     GRADED(test_ray_on_surface, 2),
     GRADED(test_normal_unit_far_from_origin, 2),

@@ -217,6 +217,35 @@ static void test_cramer_alone_rejects_what_it_cannot_solve(void **state)
     assert_close(0.25, h.gamma, TOL);
 }
 
+/* d may have any length (ray.h): triangle_intersect (given) scales a d of
+ * extreme length by a power of two first, which changes no digit, so d 2^e
+ * gives the hit of d with t / 2^e, bit for bit, beta and gamma the same,
+ * for e from one end of the exponent range to the other. */
+static void test_any_length_of_d(void **state)
+{
+    (void)state;
+    /* |d| near 2^top times 10: representable, but M (d times two edges of
+     * about 5) is not, unless d is scaled first */
+    const int top = REAL_EPSILON < 1e-10 ? 1018 : 122;
+    const int exps[] = {-top, -top / 2, -20, 20, top / 2, top};
+    const vec3 x = point_at(&tilted, (real)0.3, (real)0.45), p = vec3_make(-3, 7, 9);
+    for (int k = 0; k < N_TESTS; k++) {
+        triangle_hit h1;
+        assert_true(triangle_intersect(&tilted, (ray){p, vec3_sub(x, p)}, 0, REAL_INFINITY, both[k], &h1));
+        for (size_t j = 0; j < sizeof exps / sizeof exps[0]; j++) {
+            triangle_hit h = {-7, -7, -7};
+            const ray r = {p, vec3_scale(vec3_sub(x, p), (real)ldexp(1, exps[j]))};
+            const bool hit = triangle_intersect(&tilted, r, 0, REAL_INFINITY, both[k], &h);
+            if (!hit || h.t != (real)ldexp(h1.t, -exps[j]) || h.beta != h1.beta || h.gamma != h1.gamma)
+                fail_msg("--triangle=%s: d scaled by 2^%d\n    expected a hit at t %a (t of the unscaled d / 2^%d), "
+                         "beta %a, gamma %a\n    got      %s t %a, beta %a, gamma %a\n    likely mistake: "
+                         "triangle_intersect is given; the products with d overflowed or underflowed",
+                         test_names[both[k]], exps[j], (double)ldexp(h1.t, -exps[j]), exps[j], (double)h1.beta,
+                         (double)h1.gamma, hit ? "" : "a miss,", (double)h.t, (double)h.beta, (double)h.gamma);
+        }
+    }
+}
+
 /* Collinear and coincident vertices span no plane: a miss, no NaN, and no normal. */
 static void test_degenerate_triangles(void **state)
 {
@@ -906,6 +935,7 @@ static const graded_test tests[] = {
     GRADED(test_rays_in_the_plane, 2),
     GRADED(test_origin_on_the_triangle, 2),
     GRADED(test_range_ends, 1),
+    GRADED(test_any_length_of_d, 0), /* triangle_intersect is given: no points */
     GRADED(test_normal, 0), /* handed out complete: no points */
     GRADED(test_icosahedron_is_closed, 0), /* handed out complete: no points */
     GRADED(test_icosahedron_from_inside, 2),

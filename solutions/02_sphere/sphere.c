@@ -66,6 +66,11 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     /* EXERCISE robust_roots: the stable pair of roots (5)
      *     q = -(B + sign(B) sqrt(disc))    B and sign(B) sqrt(disc) have the same sign: no cancellation
      *     t0 = q / A,  t1 = C / q          (C = f.f - R^2; when q = 0 both roots are 0: t1 = t0)
+     *     |t1| at most sqrt(|C| / A)       (else t1 = that, with t1's sign)                      (6)
+     * (6): q^2 >= A |C| in exact arithmetic (q^2 >= B^2 >= A C, or q^2 >= disc >= -A C), so |C / q|
+     * is at most sqrt(|C| / A).  Rounding can break that only when B, disc and C are all rounding
+     * noise (a ray along the tangent at a point of the sphere), and C / q is then noise of any size:
+     * a hit far from the sphere.  Compare t1^2 A with |C| (no square root unless it is too large).
      * sign(B) must be +1 or -1, also for B = 0 (a ray whose origin is the point of its line closest to c):
      * a sign(0) = 0 makes q = 0 there, and C / q a division by zero.
      * Which of t0, t1 is nearer depends on the sign of B; sphere_nearest_root() sorts them. */
@@ -74,6 +79,8 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     real q = -(B + (B < 0 ? -root : root));
     *t0 = q / A;
     *t1 = q != 0 ? C / q : *t0;
+    if (*t1 * *t1 * A > real_abs(C)) /* |t1| > sqrt(|C| / A): B, disc and C are all rounding noise */
+        *t1 = real_copysign(real_sqrt(real_abs(C) / A), *t1);
     return true;
     /* STUB
     (void)A;
@@ -84,10 +91,34 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
 }
 /* end snippet */
 
-bool sphere_roots(const sphere *s, ray r, sphere_formula formula, real *t0, real *t1)
+static bool roots_of(const sphere *s, ray r, sphere_formula formula, real *t0, real *t1)
 {
     return formula == SPHERE_TEXTBOOK ? textbook_roots(s, r, t0, t1) : robust_roots(s, r, t0, t1);
 }
+
+/* snippet: scaled */
+/* Both formulas multiply up to four lengths (A (R^2 - l.l) is |d|^2 R^2 in
+ * size), which overflows or underflows for data far from 1 (in float from
+ * about 1e9 and 1e-9: real.h, REAL_SAFE_EXPONENT).  The roots do not depend
+ * on the units: with p, c and R divided by 2^m and d by 2^k, the same point
+ * has t / 2^(m - k).  A power of two moves only the exponents, so data of
+ * any size are solved as data near 1 round; data in the safe range are left
+ * as they are. */
+bool sphere_roots(const sphere *s, ray r, sphere_formula formula, real *t0, real *t1)
+{
+    const int m = real_scale_exponent(vec3_max_abs(vec3_make(vec3_max_abs(r.p), vec3_max_abs(s->center), s->radius)));
+    const int k = real_scale_exponent(vec3_max_abs(r.d));
+    if (m == 0 && k == 0)
+        return roots_of(s, r, formula, t0, t1);
+    const sphere scaled_s = {vec3_ldexp(s->center, -m), (real)ldexp(s->radius, -m)};
+    const ray scaled_r = {vec3_ldexp(r.p, -m), vec3_ldexp(r.d, -k)};
+    if (!roots_of(&scaled_s, scaled_r, formula, t0, t1))
+        return false;
+    *t0 = (real)ldexp(*t0, m - k);
+    *t1 = (real)ldexp(*t1, m - k);
+    return true;
+}
+/* end snippet */
 
 /* snippet: normal */
 vec3 sphere_normal(const sphere *s, vec3 x)

@@ -53,6 +53,19 @@ static bool cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_
 /* snippet: dispatch */
 bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, triangle_test test, triangle_hit *hit)
 {
+    /* d may have any length, and M is a product of |d| and two edges: a d
+     * far from 1 (beyond REAL_SAFE_EXPONENT, real.h) is first divided by a
+     * power of two 2^k, exactly, and t (and the window) multiplied by it. */
+    const int k = real_scale_exponent(vec3_max_abs(r.d));
+    if (k != 0) {
+        triangle_hit h;
+        const ray scaled = {r.p, vec3_ldexp(r.d, -k)};
+        if (!triangle_intersect(tri, scaled, (real)ldexp(t_min, k), (real)ldexp(t_max, k), test, &h))
+            return false;
+        h.t = (real)ldexp(h.t, -k);
+        *hit = h;
+        return true;
+    }
     if (test == TRIANGLE_WATERTIGHT)
         return triangle_intersect_watertight(tri, r, t_min, t_max, hit);
     /* Cramer's rule divides by M; where M is only rounding noise (a
