@@ -84,6 +84,15 @@ static inline vec3 vec3_ldexp(vec3 a, int e)
     return (vec3){(real)ldexp(a.x, e), (real)ldexp(a.y, e), (real)ldexp(a.z, e)};
 }
 
+/* real_scale_exponent of a's largest |component|: 0 for the usual vectors
+ * (the max needs no care for NaN here: a NaN ends as a miss either way). */
+static inline int vec3_scale_exponent(vec3 a)
+{
+    real x = real_abs(a.x), y = real_abs(a.y), z = real_abs(a.z);
+    real m = x > y ? x : y;
+    return real_scale_exponent(m > z ? m : z);
+}
+
 static inline bool vec3_is_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
 #endif

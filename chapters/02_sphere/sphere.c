@@ -83,8 +83,8 @@ static bool roots_of(const sphere *s, ray r, sphere_formula formula, real *t0, r
  * as they are. */
 bool sphere_roots(const sphere *s, ray r, sphere_formula formula, real *t0, real *t1)
 {
-    const int m = real_scale_exponent(vec3_max_abs(vec3_make(vec3_max_abs(r.p), vec3_max_abs(s->center), s->radius)));
-    const int k = real_scale_exponent(vec3_max_abs(r.d));
+    const int m = vec3_scale_exponent(vec3_make(vec3_max_abs(r.p), vec3_max_abs(s->center), s->radius));
+    const int k = vec3_scale_exponent(r.d);
     if (m == 0 && k == 0)
         return roots_of(s, r, formula, t0, t1);
     const sphere scaled_s = {vec3_ldexp(s->center, -m), (real)ldexp(s->radius, -m)};

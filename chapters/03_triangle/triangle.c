@@ -10,7 +10,7 @@
  * is, collected by unknown,
  *     [a - b   a - c   d] [beta gamma t]^T = a - p,
  * three linear equations in beta, gamma and t. */
-static bool cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
+static inline bool cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
 {
     /* TODO cramer: solve the 3x3 system by Cramer's rule.  With A = [a - b   a - c   d]
      * and det3(c0, c1, c2) the determinant of the matrix with those columns:
@@ -33,22 +33,18 @@ static bool cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_
     return false;
 }
 
+static bool scaled_intersect(const triangle *tri, ray r, real t_min, real t_max, triangle_test test,
+                             triangle_hit *hit, int k);
+
 /* snippet: dispatch */
 bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, triangle_test test, triangle_hit *hit)
 {
     /* d may have any length, and M is a product of |d| and two edges: a d
      * far from 1 (beyond REAL_SAFE_EXPONENT, real.h) is first divided by a
      * power of two 2^k, exactly, and t (and the window) multiplied by it. */
-    const int k = real_scale_exponent(vec3_max_abs(r.d));
-    if (k != 0) {
-        triangle_hit h;
-        const ray scaled = {r.p, vec3_ldexp(r.d, -k)};
-        if (!triangle_intersect(tri, scaled, (real)ldexp(t_min, k), (real)ldexp(t_max, k), test, &h))
-            return false;
-        h.t = (real)ldexp(h.t, -k);
-        *hit = h;
-        return true;
-    }
+    const int k = vec3_scale_exponent(r.d);
+    if (k != 0)
+        return scaled_intersect(tri, r, t_min, t_max, test, hit, k);
     if (test == TRIANGLE_WATERTIGHT)
         return triangle_intersect_watertight(tri, r, t_min, t_max, hit);
     /* Cramer's rule divides by M; where M is only rounding noise (a
@@ -62,6 +58,19 @@ bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, tria
     return true;
 }
 /* end snippet */
+
+/* The hit of r = (p, d) as that of (p, d / 2^k), whose t is 2^k times as large. */
+static bool scaled_intersect(const triangle *tri, ray r, real t_min, real t_max, triangle_test test,
+                             triangle_hit *hit, int k)
+{
+    triangle_hit h;
+    const ray scaled = {r.p, vec3_ldexp(r.d, -k)};
+    if (!triangle_intersect(tri, scaled, (real)ldexp(t_min, k), (real)ldexp(t_max, k), test, &h))
+        return false;
+    h.t = (real)ldexp(h.t, -k);
+    *hit = h;
+    return true;
+}
 
 bool triangle_cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
 {
