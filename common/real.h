@@ -58,16 +58,18 @@ typedef double real;
 #endif
 
 /* 0 when |x| is in the safe range (or x is 0, infinite or NaN: no power of
- * two mends those); else e with 2^(e - 1) <= |x| < 2^e, so that x / 2^e is
- * between 1/2 and 1. */
+ * two mends those); else the e of least magnitude for which x / 2^e is in
+ * it, just inside its nearer end (moving x no further than needed keeps
+ * whatever is divided or multiplied by 2^e along with it, such as a ray's
+ * t, as far from its own limits as it can be). */
 static inline int real_scale_exponent(real x)
 {
     x = real_abs(x);
     if ((x >= REAL_SAFE_LOW && x <= REAL_SAFE_HIGH) || !(x > 0 && x <= REAL_MAX))
         return 0;
-    int e;
+    int e; /* x = f 2^e, 1/2 <= f < 1 */
     frexp((double)x, &e);
-    return e;
+    return x > REAL_SAFE_HIGH ? e - REAL_SAFE_EXPONENT : e + REAL_SAFE_EXPONENT - 1;
 }
 
 /* Whether the whole number x is odd, with no conversion to an integer type

@@ -242,7 +242,33 @@ static void test_any_length_of_d(void **state)
                          "triangle_intersect is given; the products with d overflowed or underflowed",
                          test_names[both[k]], exps[j], (double)ldexp(h1.t, -exps[j]), exps[j], (double)h1.beta,
                          (double)h1.gamma, hit ? "" : "a miss,", (double)h.t, (double)h.beta, (double)h.gamma);
+            /* the window scales with t: open at both ends, exactly at the hit's t */
+            const real t = h.t;
+            assert_false(triangle_intersect(&tilted, r, 0, t, both[k], &h));
+            assert_false(triangle_intersect(&tilted, r, t, REAL_INFINITY, both[k], &h));
+            assert_true(triangle_intersect(&tilted, r, t / 2, t * 2, both[k], &h));
         }
+    }
+    /* A hit near the top of the float range: a small triangle (edges about
+     * 2^-11, so that Cramer's products stay finite) in the plane x = 2^126;
+     * the ray from x = -2^127 along d = (2^126, 0, 0) meets it at t = 3
+     * exactly, which a d scaled all the way down to about 1 would turn into
+     * 3 2^127, beyond the largest float.  (The same scene in double, at 2^1022,
+     * is beyond the range of the degeneracy check of degenerate.h, which
+     * scales the coordinates to 1 in double: edges of 2^-11 would fall below
+     * the normal doubles.  In double the check stays at 2^126, where it only
+     * confirms the hit.) */
+    const int top_exp = 128;
+    const real x0 = (real)ldexp(1, top_exp - 2), e = (real)ldexp(0.75, -12);
+    const triangle far = {{x0, -e, -e}, {x0, e, -e}, {x0, 0, e}};
+    const ray r = {{(real)-ldexp(1, top_exp - 1), 0, 0}, {x0, 0, 0}};
+    for (int k = 0; k < N_TESTS; k++) {
+        triangle_hit h = {-7, -7, -7};
+        if (!triangle_intersect(&far, r, 0, REAL_INFINITY, both[k], &h) || h.t != 3)
+            fail_msg("--triangle=%s: the plane x = 2^%d, p = (-2^%d, 0, 0), d = (2^%d, 0, 0)\n    expected a hit at t "
+                     "3\n    got      t %a\n    likely mistake: triangle_intersect is given; d scaled further than "
+                     "needed, so that t overflowed",
+                     test_names[both[k]], top_exp - 2, top_exp - 1, top_exp - 2, (double)h.t);
     }
 }
 

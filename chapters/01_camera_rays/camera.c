@@ -15,7 +15,9 @@ void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
      *     w = -viewDir / |viewDir|
      *     u = (viewDir x viewUp) / |viewDir x viewUp|
      *     v = w x u
-     * Normalize with unit(), which also copes with very large or small vectors. */
+     * Normalize with unit(), which also copes with very large or small vectors; take the cross
+     * product of unit(viewDir) and unit(viewUp), not of the raw vectors, whose products can
+     * overflow (or underflow to 0) before unit() sees them. */
     EXERCISE_STUB("01_camera_rays", "camera.c", "basis");
     (void)view_dir;
     (void)view_up;

@@ -54,9 +54,10 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
      *     t0 = q / A,  t1 = C / q          (C = f.f - R^2; when q = 0 both roots are 0: t1 = t0)
      *     |t1| at most sqrt(|C| / A)       (else t1 = that, with t1's sign)                      (6)
      * (6): q^2 >= A |C| in exact arithmetic (q^2 >= B^2 >= A C, or q^2 >= disc >= -A C), so |C / q|
-     * is at most sqrt(|C| / A).  Rounding can break that only when B, disc and C are all rounding
-     * noise (a ray along the tangent at a point of the sphere), and C / q is then noise of any size:
-     * a hit far from the sphere.  Compare t1^2 A with |C| (no square root unless it is too large).
+     * is at most sqrt(|C| / A).  Rounding breaks that by a few ulps where it is nearly tight, and
+     * without limit where B, disc and C are all rounding noise (a ray along the tangent at a point
+     * of the sphere): C / q is then noise of any size, a hit far from the sphere.  Compare t1^2 A
+     * with |C| (no square root unless it is too large).
      * sign(B) must be +1 or -1, also for B = 0 (a ray whose origin is the point of its line closest to c):
      * a sign(0) = 0 makes q = 0 there, and C / q a division by zero.
      * Which of t0, t1 is nearer depends on the sign of B; sphere_nearest_root() sorts them. */
@@ -79,8 +80,8 @@ static bool roots_of(const sphere *s, ray r, sphere_formula formula, real *t0, r
  * about 1e9 and 1e-9: real.h, REAL_SAFE_EXPONENT).  The roots do not depend
  * on the units: with p, c and R divided by 2^m and d by 2^k, the same point
  * has t / 2^(m - k).  A power of two moves only the exponents, so data of
- * any size are solved as data near 1 round; data in the safe range are left
- * as they are. */
+ * any size are solved as data in the safe range round; data already there
+ * are left as they are. */
 bool sphere_roots(const sphere *s, ray r, sphere_formula formula, real *t0, real *t1)
 {
     const int m = vec3_scale_exponent(vec3_make(vec3_max_abs(r.p), vec3_max_abs(s->center), s->radius));

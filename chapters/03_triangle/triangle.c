@@ -40,8 +40,9 @@ static bool scaled_intersect(const triangle *tri, ray r, real t_min, real t_max,
 bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, triangle_test test, triangle_hit *hit)
 {
     /* d may have any length, and M is a product of |d| and two edges: a d
-     * far from 1 (beyond REAL_SAFE_EXPONENT, real.h) is first divided by a
-     * power of two 2^k, exactly, and t (and the window) multiplied by it. */
+     * beyond 2^+-REAL_SAFE_EXPONENT (real.h) is first divided by a power of
+     * two 2^k, exactly, that brings it just inside, and t (and the window)
+     * multiplied by it. */
     const int k = vec3_scale_exponent(r.d);
     if (k != 0)
         return scaled_intersect(tri, r, t_min, t_max, test, hit, k);

@@ -14,7 +14,9 @@ void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
      *     w = -viewDir / |viewDir|
      *     u = (viewDir x viewUp) / |viewDir x viewUp|
      *     v = w x u
-     * Normalize with unit(), which also copes with very large or small vectors. */
+     * Normalize with unit(), which also copes with very large or small vectors; take the cross
+     * product of unit(viewDir) and unit(viewUp), not of the raw vectors, whose products can
+     * overflow (or underflow to 0) before unit() sees them. */
     *w = vec3_neg(unit(view_dir));
     *u = unit(vec3_cross(unit(view_dir), unit(view_up)));
     *v = vec3_cross(*w, *u);
