@@ -83,7 +83,17 @@ FUZZ_TARGETS := scene obj options texture
 CROSS_TESTS := $(if $(wildcard tests/test_scenes.c),test_scenes)
 ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS) $(if $(wildcard fuzz/fuzz.h),test_fuzz_corpus)
 
-RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
+# Labs: chapters/NN_name/lab/ holds what measures or proves the lesson beside
+# it (counts, tables, sweeps, heat maps, the fast grid).  A lab is its own
+# program, BUILD/NN_name/lab, from lab/main.c, the lab's other files and the
+# stages of chapters 1..N; its suite tests/lab_NN_name.c links the same.  The
+# lesson never reads the lab: no stage file or renderer includes lab/.
+LAB_CHAPTERS := $(foreach c,$(CHAPTERS),$(if $(wildcard chapters/$c/lab/main.c),$c))
+lab_objs = $(call objs,$(sort $(filter-out %/main.c,$(wildcard chapters/$1/lab/*.c))))
+LAB_TESTS := $(foreach c,$(LAB_CHAPTERS),$(if $(wildcard tests/lab_$c.c),lab_$c))
+ALL_TESTS += $(LAB_TESTS)
+
+RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render) $(foreach c,$(LAB_CHAPTERS),$(BUILD)/$c/lab)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
 # The built-in scenes' images: out/, or out-student/ for the student build.
 OUT := out$(if $(filter 1,$(STUDENT)),-student$(if $(strip $(REFERENCE)),-ref$(subst $(eval) ,,$(strip $(REFERENCE)))))
@@ -120,6 +130,14 @@ $(OUT)/$1.png: $(BUILD)/$1/render
 	$(BUILD)/$1/render -o $$@
 
 $(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
+	@mkdir -p $$(@D)
+	$$(call link,$$^) -lcmocka -o $$@
+
+$(BUILD)/$1/lab: $(call objs,chapters/$1/lab/main.c) $(call lab_objs,$1) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
+	@mkdir -p $$(@D)
+	$$(call link,$$^) -o $$@
+
+$(BUILD)/tests/lab_$1: $(call objs,tests/lab_$1.c $(TEST_SUPPORT)) $(call lab_objs,$1) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
 	$$(call link,$$^) -lcmocka -o $$@
 
@@ -318,9 +336,13 @@ FIGURE_LISTS := $(sort $(wildcard chapters/$(if $(CHAPTER),$(CHAPTER:%_=%)*,[0-9
 FIG_BUILD ?= $(if $(filter command line environment,$(origin BUILD)),$(BUILD),build$(compiler))
 # "double/01_camera_rays" for each renderer a figure needs.
 # A gnuplot line (a plot) may run both builds of its chapter.
-FIG_NEEDS := $(if $(FIGURE_LISTS),$(shell awk 'NF >= 2 && $$1 !~ /^\#/ { n = split(FILENAME, p, "/"); if ($$2 == "gnuplot") { print "double/" p[n - 1]; print "float/" p[n - 1] } else print $$2 "/" p[n - 1] }' $(FIGURE_LISTS) | sort -u))
+FIG_NEEDS := $(if $(FIGURE_LISTS),$(shell awk 'NF >= 2 && $$1 !~ /^\#/ { n = split(FILENAME, p, "/"); if ($$2 == "gnuplot") { print "double/" p[n - 1]; print "float/" p[n - 1]; print "double-lab/" p[n - 1]; print "float-lab/" p[n - 1] } else print $$2 "/" p[n - 1] }' $(FIGURE_LISTS) | sort -u))
 FIG_DOUBLE := $(patsubst double/%,$(FIG_BUILD)/%/render,$(filter double/%,$(FIG_NEEDS)))
 FIG_FLOAT := $(patsubst float/%,$(FIG_BUILD)-float/%/render,$(filter float/%,$(FIG_NEEDS)))
+# A figure of a lab names its build double-lab or float-lab.
+# (A plot may run both; a chapter without a lab has none to build.)
+FIG_DOUBLE += $(patsubst double-lab/%,$(FIG_BUILD)/%/lab,$(filter $(LAB_CHAPTERS:%=double-lab/%),$(FIG_NEEDS)))
+FIG_FLOAT += $(patsubst float-lab/%,$(FIG_BUILD)-float/%/lab,$(filter $(LAB_CHAPTERS:%=float-lab/%),$(FIG_NEEDS)))
 
 # Puts labelled panels side by side (the `panels` lines of figures.txt).
 $(BUILD)/tools/panels: $(BUILD)/obj/tools/panels.o

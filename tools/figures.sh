@@ -15,7 +15,9 @@
 #
 #     gnuplot -e "output='docs/figures/OUTPUT.png'; build='BUILD'" SCRIPT.gp
 #
-# (the script may run the renderers of BUILD and BUILD-float for its data).
+# (the script may run the renderers and labs of BUILD and BUILD-float for its
+# data).  REAL double-lab or float-lab renders with the chapter's lab,
+# BUILD/NN_name/lab, in place of its renderer.
 #
 # @CORNELL@ in ARGS is the Cornell corpus folder; a figure that needs it is
 # skipped, with a note, when the folder is absent.  An OUTPUT named @NAME.png
@@ -119,8 +121,10 @@ for list in "$@"; do
         case "$real" in
             double) renderer=$build/$chapter/render ;;
             float) renderer=$build-float/$chapter/render ;;
+            double-lab) renderer=$build/$chapter/lab ;;
+            float-lab) renderer=$build-float/$chapter/lab ;;
             gnuplot) renderer=gnuplot ;;
-            *) echo "$list:$lineno: the build must be double, float or gnuplot, not '$real'" >&2; status=1; continue ;;
+            *) echo "$list:$lineno: the build must be double, float, double-lab, float-lab or gnuplot, not '$real'" >&2; status=1; continue ;;
         esac
         case "$name" in
             *.png) ;;

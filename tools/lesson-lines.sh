@@ -1,0 +1,63 @@
+#!/bin/bash
+# lesson-lines.sh [--check] - what a student reads and writes, chapter by chapter.
+#
+# For each chapters/NN_name/: the lesson's stage code (the .c and .h files a
+# student opens there, render.c aside), render.c, the lab beside it
+# (lab/*.c, lab/*.h), the README, and the lines the student writes (the
+# non-blank lines of the solutions' exercise regions, tools/skeleton.awk's
+# format).  With --check, fails naming every chapter past its budget:
+# LESSON_MAX lines of stage code, RENDER_MAX lines of render.c, and the whole
+# course's read-to-write ratio (stage code over written lines) past RATIO_MAX.
+# docs/design.md ("Lesson and lab") states the budgets and why.
+LESSON_MAX=250
+RENDER_MAX=60
+RATIO_MAX=15
+check=0
+[ "${1:-}" = --check ] && check=1
+lines() { cat "$@" 2>/dev/null | wc -l; }
+# The non-blank lines between an EXERCISE comment's end and its STUB.
+written() {
+    awk '/\/\* EXERCISE [A-Za-z0-9_]+:/ { s = ($0 ~ /\*\//) ? 2 : 1; next }
+         s == 1 { if ($0 ~ /\*\//) s = 2; next }
+         s == 2 && /^[ \t]*\/\* STUB[ \t]*$/ { s = 3; next }
+         s == 2 && NF { n++ }
+         s == 3 && /END EXERCISE \*\// { s = 0 }
+         END { print n + 0 }' "$@" /dev/null
+}
+status=0
+read_all=0
+written_all=0
+printf '%-18s %7s %7s %7s %8s %7s\n' chapter lesson render.c lab written README
+for dir in chapters/[0-9][0-9]_*/; do
+    c=$(basename "$dir")
+    shopt -s nullglob
+    stage=()
+    for f in "$dir"*.c "$dir"*.h; do [ "$(basename "$f")" = render.c ] || stage+=("$f"); done
+    lab=("$dir"lab/*.c "$dir"lab/*.h)
+    sol=(solutions/"$c"/*.c)
+    shopt -u nullglob
+    l=$(lines "${stage[@]}")
+    r=$(lines "$dir"render.c)
+    b=$( ((${#lab[@]})) && lines "${lab[@]}" || echo 0)
+    w=$( ((${#sol[@]})) && written "${sol[@]}" || echo 0)
+    m=$(lines "$dir"README.md)
+    printf '%-18s %7d %7d %7d %8d %7d\n' "$c" "$l" "$r" "$b" "$w" "$m"
+    read_all=$((read_all + l))
+    written_all=$((written_all + w))
+    if [ "$l" -gt "$LESSON_MAX" ]; then
+        echo "$c: the lesson's stage code is $l lines, past the budget of $LESSON_MAX (move measurement to lab/)" >&2
+        status=1
+    fi
+    if [ "$r" -gt "$RENDER_MAX" ]; then
+        echo "$c: render.c is $r lines, past the budget of $RENDER_MAX" >&2
+        status=1
+    fi
+done
+ratio=$(awk -v r="$read_all" -v w="$written_all" 'BEGIN { printf "%.1f", w ? r / w : 0 }')
+echo "course: $read_all lines of stage code read for $written_all written: $ratio to 1"
+if awk -v r="$read_all" -v w="$written_all" -v m="$RATIO_MAX" 'BEGIN { exit !(w == 0 || r > m * w) }'; then
+    echo "course: read-to-write ratio $ratio to 1, past the budget of $RATIO_MAX to 1" >&2
+    status=1
+fi
+[ "$check" = 1 ] && exit "$status"
+exit 0
