@@ -101,7 +101,7 @@ IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
         handout handout-libs reference-libs \
-        figure-renderers figures check-figures snippets check-snippets check-links check fuzz fuzz-build deps-fuzz \
+        figure-renderers figures check-figures snippets check-snippets outputs check-outputs check-lessons check-links check fuzz fuzz-build deps-fuzz \
         test-extremes check-grid-images globe-texture
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
@@ -370,7 +370,7 @@ check-figures: figure-renderers
 
 # ---- snippets: the code shown in the texts, taken from the source ----------------
 
-SNIPPET_TEXTS := $(sort $(wildcard chapters/[0-9][0-9]_*/README.md docs/*.md))
+SNIPPET_TEXTS := $(sort $(wildcard chapters/[0-9][0-9]_*/README.md chapters/[0-9][0-9]_*/lab/README.md docs/*.md))
 
 snippets:
 	@tools/snippets.sh fill $(SNIPPET_TEXTS)
@@ -382,14 +382,25 @@ check-links:
 check-snippets:
 	@tools/snippets.sh check $(SNIPPET_TEXTS)
 
+# The example outputs of the texts (<!-- output: COMMAND -->), from the renderers and labs of BUILD.
+outputs: renderers
+	@tools/outputs.sh fill $(BUILD) $(SNIPPET_TEXTS)
+
+check-outputs: renderers
+	@tools/outputs.sh check $(BUILD) $(SNIPPET_TEXTS)
+
+# What a student reads and writes, per chapter, against the budgets (tools/lesson-lines.sh).
+check-lessons:
+	@tools/lesson-lines.sh --check
+
 # Chapter 11 renders the images of chapter 10, byte for byte.
-check-grid-images: $(BUILD)/10_interpolation/render $(BUILD)/11_grid/render
+check-grid-images: $(BUILD)/10_interpolation/render $(BUILD)/11_grid/render $(BUILD)/11_grid/lab
 	@tools/check-grid-images.sh $(BUILD)
 
 # Text, skeletons and figures agree with their sources; the grid changes no
 # pixel (in the repository; a student's copy has no solutions/ to compare
 # them with).
-check: $(if $(HANDOUT),,check-skeletons check-snippets check-figures check-links check-grid-images)
+check: $(if $(HANDOUT),,check-skeletons check-snippets check-outputs check-figures check-links check-grid-images)
 	@$(if $(HANDOUT),echo "make check: nothing to check in a student's copy (it compares texts, skeletons and figures with solutions/)")
 
 # ---- tests ----------------------------------------------------------------------

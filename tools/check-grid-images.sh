@@ -2,12 +2,13 @@
 # check-grid-images.sh BUILD [SIZE] - chapter 11's grid changes no pixel.
 #
 # Chapter 11's renderer is chapter 10's stage with the grid as its
-# closest-hit query.  Renders every scene of the Cornell corpus and every
-# scene file of chapters 04-10 by chapter 10's renderer and by chapter 11's,
-# and chapter 11's built-in scene through its grid and through the linear
-# scan (--accel=list, chapter 10's query), and fails naming each pair of PNGs
-# that are not byte for byte the same.  (The built-in scenes of chapters
-# 05-10 are compared in the same way by tests/test_11_grid.c.)  SIZE (WxH,
+# closest-hit query; its lab renders the same through the fast grid.
+# Renders every scene of the Cornell corpus and every scene file of chapters
+# 04-10 by chapter 10's renderer, by chapter 11's and by its lab's, and
+# chapter 11's built-in scene through both grids and through the linear scan
+# (--accel=list, chapter 10's query), and fails naming each pair of PNGs that
+# are not byte for byte the same.  (The built-in scenes of chapters 05-10 are
+# compared in the same way by tests/test_11_grid.c and tests/lab_11_grid.c.)  SIZE (WxH,
 # default 160x160) keeps the linear scan of the big meshes short; SIZE=scene
 # renders each scene at its own size.  The corpus is skipped, with a note,
 # when absent.
@@ -27,16 +28,19 @@ same() { # name, a.png, b.png
         status=1
     fi
 }
-both() { # scene: chapter 10's renderer and chapter 11's
+both() { # scene: chapter 10's renderer, chapter 11's (the lesson's grid) and its lab's (the fast grid)
     # shellcheck disable=SC2086
     "$build/10_interpolation/render" -q $opt -o "$tmp/10.png" "$1" &&
-        "$build/11_grid/render" -q $opt -o "$tmp/11.png" "$1" || { status=1; return; }
+        "$build/11_grid/render" -q $opt -o "$tmp/11.png" "$1" &&
+        "$build/11_grid/lab" -q --accel=fast $opt -o "$tmp/fast.png" "$1" || { status=1; return; }
     same "$1" "$tmp/10.png" "$tmp/11.png"
+    same "$1 (fast grid)" "$tmp/10.png" "$tmp/fast.png"
 }
 # shellcheck disable=SC2086
-"$build/11_grid/render" -q $opt -o "$tmp/grid.png" && "$build/11_grid/render" -q --accel=list $opt -o "$tmp/list.png" ||
-    exit 1
+"$build/11_grid/render" -q $opt -o "$tmp/grid.png" && "$build/11_grid/render" -q --accel=list $opt -o "$tmp/list.png" &&
+    "$build/11_grid/lab" -q $opt -o "$tmp/fast.png" || exit 1
 same "built-in scene" "$tmp/grid.png" "$tmp/list.png"
+same "built-in scene (fast grid)" "$tmp/fast.png" "$tmp/list.png"
 for scene in chapters/0[4-9]_*/scenes/*.xml chapters/10_*/scenes/*.xml; do
     [ -f "$scene" ] && both "$scene"
 done

@@ -1,4 +1,4 @@
-/* grid_vs_embree.c - chapter 11's grid against chapter 04's linear scan and
+/* grid_vs_embree.c - chapter 11's fast grid (its lab) against chapter 04's linear scan and
  * Intel Embree 3, on exactly the same rays.  Built and run by `make bench-grid`
  * only (bench/grid/grid.mk); never part of `make` or `make test`.
  *
@@ -27,7 +27,7 @@
 #include <embree3/rtcore.h>
 
 #include "04_many_shapes/closest_hit.h"
-#include "11_grid/grid.h"
+#include "11_grid/lab/fast_grid.h"
 #include "mesh.h"
 
 static double now(void)
@@ -233,7 +233,7 @@ enum { LINEAR, GRID, EMBREE };
 
 typedef struct {
     const surface_list *list;
-    const grid *g;
+    const fast_grid *g;
     RTCScene scene;
     const float_ray *rays;
     int size;
@@ -275,7 +275,7 @@ static double trace(const tracer *tr, int method, int step, int threads, bool cp
                 tr->prim[k] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? -1 : (int)rh.hit.primID;
             } else {
                 hit_record hit;
-                bool found = method == GRID ? grid_intersect(tr->g, to_ray(fr), 0, REAL_INFINITY, &hit)
+                bool found = method == GRID ? fast_grid_intersect(tr->g, to_ray(fr), 0, REAL_INFINITY, &hit)
                                             : surfaces_intersect(tr->list, to_ray(fr), 0, REAL_INFINITY, &hit);
                 tr->prim[k] = found ? hit.surface : -1;
             }
@@ -362,10 +362,10 @@ int main(int argc, char **argv)
     RTCScene scene = embree_scene(device, &fm);
     double embree_build = now() - t0;
 
-    grid g;
+    fast_grid g;
     char err[256];
     t0 = now();
-    if (grid_build(&g, &list, grid_default_options(), err, sizeof err) != 0) {
+    if (fast_grid_build(&g, &list, fast_grid_default_options(), err, sizeof err) != 0) {
         fprintf(stderr, "grid_vs_embree: %s\n", err);
         return 1;
     }
@@ -409,7 +409,7 @@ int main(int argc, char **argv)
     printf("  build (1 thread): grid %.3f s, Embree %.3f s\n", grid_build_time, embree_build);
     printf("  memory without the mesh: grid %.1f MB (build peak %.1f MB; %dx%dx%d cells, %ld entries), "
            "Embree %.1f MB (peak %.1f MB)\n",
-           (double)grid_memory(&g) / 1e6, (double)g.peak_bytes / 1e6, g.n[0], g.n[1], g.n[2], g.n_refs,
+           (double)fast_grid_memory(&g) / 1e6, (double)g.peak_bytes / 1e6, g.n[0], g.n[1], g.n[2], g.n_refs,
            (double)embree_bytes / 1e6, (double)embree_peak / 1e6);
 
     /* Agreement: the grid must match the linear scan exactly wherever both
@@ -431,11 +431,11 @@ int main(int argc, char **argv)
            " per ray: cells, tests, culled\n");
     for (int variant = 0; variant < (knobs == 2 ? 1 : knobs ? 4 : 0); variant++)
         for (size_t k = 0; k < sizeof densities / sizeof densities[0]; k++) {
-            grid h;
-            grid_options opt = {.density = densities[k], .max_cells = GRID_DEFAULT_MAX_CELLS,
+            fast_grid h;
+            fast_grid_options opt = {.density = densities[k], .max_cells = FAST_GRID_DEFAULT_MAX_CELLS,
                                 .mailbox = variant != 1, .leap = variant != 2, .cull = variant != 3};
             t0 = now();
-            if (grid_build(&h, &list, opt, err, sizeof err) != 0) {
+            if (fast_grid_build(&h, &list, opt, err, sizeof err) != 0) {
                 fprintf(stderr, "grid_vs_embree: %s\n", err);
                 return 1;
             }
@@ -443,22 +443,22 @@ int main(int argc, char **argv)
             tr.g = &h;
             tr.prim = prim[GRID];
             double t = best_of(&tr, GRID, 1, 1, true, runs);
-            grid_counts counts = {0, 0, 0};
+            fast_grid_counts counts = {0, 0, 0};
             for (long r = 0; r < n_rays; r += 7) {
                 hit_record hit;
-                grid_intersect_counted(&h, to_ray(&rays[r]), 0, REAL_INFINITY, &hit, &counts);
+                fast_grid_intersect_counted(&h, to_ray(&rays[r]), 0, REAL_INFINITY, &hit, &counts);
             }
             double sampled = (double)((n_rays + 6) / 7);
             printf("    %4.1f  %-3s  %-3s  %-3s  %8.3f  %7.3f  %7.1f  %6.2f  %6.2f  %6.2f\n", densities[k],
                    opt.mailbox ? "on" : "off", opt.leap ? "on" : "off", opt.cull ? "on" : "off", mrays / t, build,
-                   (double)grid_memory(&h) / 1e6, (double)counts.cells / sampled, (double)counts.tests / sampled,
+                   (double)fast_grid_memory(&h) / 1e6, (double)counts.cells / sampled, (double)counts.tests / sampled,
                    (double)counts.culled / sampled);
-            grid_free(&h);
+            fast_grid_free(&h);
         }
 
     rtcReleaseScene(scene);
     rtcReleaseDevice(device);
-    grid_free(&g);
+    fast_grid_free(&g);
     surface_list_free(&list);
     for (int m = 0; m < 3; m++)
         free(prim[m]);

@@ -76,8 +76,6 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
 
 static void release(void *view) { shading_release(view); }
 
-#define MAX_STAGE_KNOBS 14
-
 int shading_main(const shading_stage *stage, int argc, char **argv)
 {
     knob knobs[SHAPE_KNOBS + MAX_STAGE_KNOBS];

@@ -50,6 +50,7 @@ typedef struct {
     int (*builtin)(scene *desc); /* NULL: the shared built-in scene (shading_scene.h) */
 } shading_stage;
 /* end snippet */
+#define MAX_STAGE_KNOBS 14 /* the most knobs a stage may have */
 
 /* The renderer's main(): options, scene, render, PNG, summary (renderer.h). */
 int shading_main(const shading_stage *stage, int argc, char **argv);

@@ -1,117 +1,65 @@
 /* grid.h - chapter 11: a uniform grid over the scene, marched by a 3D-DDA.
  *
- * The lecture's "Acceleration and Regular Grids": split the scene's bounding
- * box into n_x x n_y x n_z equal cells; each cell lists the surfaces that
- * overlap it.  A ray walks through the cells it pierces, in order, with the
- * 3D-DDA of Amanatides and Woo (1987), and tests only the surfaces listed in
- * them.  It stops in the first cell that holds a hit no farther than the
- * cell's far boundary: a hit found in an earlier cell that lies beyond that
- * cell (a long triangle, a big sphere) does not end the march, because a
- * later cell may hold something closer.
+ * The lecture's "Acceleration and Regular Grids" (README, "The grid"): the
+ * scene's box split into n_x x n_y x n_z equal cells, each listing the
+ * surfaces whose bounding boxes overlap it; a ray visits the cells it
+ * pierces in order and tests only their surfaces, and a hit counts once it
+ * lies in the cell being visited.
  *
- * grid_intersect has the shape of chapter 04's surfaces_intersect, with the
- * grid in place of the list, and returns the same hit: the same surface and
- * bit for bit the same t (every surface is tested by chapter 04's
- * surface_intersect, with the list's knobs, on the ray as given).  Surfaces
- * hit at exactly the same t: the first in the list wins, as in the linear scan.
- * So a renderer swaps the one for the other in one line.
- *
- * Knobs (docs/design.md, "Knobs"): the cell density (cells per surface) with
- * a cap on the number of cells, mailboxing (a surface already tested along
- * the ray is not tested again), and leaping (a ray in an empty cell whose
- * neighbours ahead of it, up to s - 1 cells away along each axis, are empty too
- * crosses that whole block of empty cells in one step, as in Cohen and
- * Sheffer's proximity clouds, with a block per octant of directions),
- * and culling (a surface of the cell is handed to surface_intersect only
- * when the ray passes through the part of the surface's bounding box inside
- * that cell, within the window).
+ * grid_intersect answers chapter 04's question, surfaces_intersect's: the
+ * same surface and bit for bit the same t, the first in the list among
+ * equal t.  So a renderer swaps the one for the other in one line.
  */
 #ifndef CH11_GRID_H
 #define CH11_GRID_H
 
-#include <stdbool.h>
 #include <stddef.h>
 #include <stdint.h>
 
 #include "04_many_shapes/surface.h"
 
-/* snippet: grid_options */
-typedef struct {
-    double density;  /* cells per surface: n_x n_y n_z is about density x (number of surfaces) */
-    long max_cells;  /* the cap on n_x n_y n_z */
-    bool mailbox;    /* skip a surface already tested along the ray */
-    bool leap;       /* leap over blocks of empty cells in one step */
-    bool cull;       /* test a surface only when the ray passes through its box */
-} grid_options;
-/* end snippet */
-
-#define GRID_DEFAULT_DENSITY 2.0
-#define GRID_DEFAULT_MAX_CELLS (1L << 24)
-
-/* A surface's box inside a cell is kept in steps of 1/GRID_BOX_STEPS of the
- * cell's frame, one byte per side; 127 leaves each byte's top bit free, so
- * that the march compares all six sides at once in one 64-bit word. */
-#define GRID_BOX_STEPS 127
-
 /* snippet: grid */
-/* One entry of a cell's list: 12 bytes, read in order with the cell. */
 typedef struct {
-    uint32_t surface; /* index into the surface list */
-    uint8_t box[8];   /* the part of the surface's box (widened by the margin) inside the cell,
-                       * in 127ths of the cell's frame (the cell widened by the margin),
-                       * rounded outwards (lo x, y, z, hi x, y, z, then two zeros, so that
-                       * the march reads all eight at once); zeros when culling is off */
-} grid_entry;
+    double density; /* cells per surface: n_x n_y n_z is about density x (number of surfaces) */
+    long max_cells; /* the cap on n_x n_y n_z */
+} grid_options;
 
 typedef struct {
     const surface_list *list; /* the surfaces; the grid holds their indices only */
     vec3 lo, hi;              /* the grid's box: the surfaces' bounding box, widened by `margin` */
     vec3 cell;                /* the size of one cell along x, y and z */
-    vec3 inv_cell;            /* 1 / cell */
-    real lo_a[3], cell_a[3];  /* lo and cell again, as arrays the march indexes by axis */
-    real inv_cell_a[3];       /* inv_cell, as an array */
-    real per_unit[3];         /* GRID_BOX_STEPS / (cell_a + 2 margin): steps of a cell's frame per unit of length */
-    real frame_step[3];       /* (cell_a + 2 margin) / GRID_BOX_STEPS: the length of one step of a cell's frame */
-    real *plane[3];           /* plane[a][k] = lo_a + k cell_a: the cell boundaries along axis a, for
-                               * k = -255 .. n_a + 255 (a leap's cube may reach beyond the grid) */
     int n[3];                 /* cells along x, y and z */
-    /* The cells' lists, flat (compressed sparse rows): the surfaces of cell
-     * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],
-     * in increasing index. */
-    uint32_t *start;          /* n_x n_y n_z + 1 offsets */
-    grid_entry *refs;         /* the entries: surface indices and their boxes in the cell */
-    uint8_t *empty;           /* per cell c and octant o (bit 0: x decreasing, 1: y, 2: z),
-                               * empty[8 c + o]: the cube of cells from c up to empty[8 c + o] - 1
-                               * cells ahead in octant o holds nothing; 0 for a cell with
-                               * surfaces.  NULL when leaping is off */
+    long n_cells, n_refs;
+    /* Cell c = i + n_x (j + n_y k) lists refs[start[c]] .. refs[start[c + 1] - 1]. */
+    uint32_t *start;          /* n_cells + 1 offsets */
+    uint32_t *refs;           /* surface indices, cell after cell, each cell's in increasing order */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
-    long n_cells, n_refs, n_unbinned;
-    real margin;              /* every surface's box is widened by this before it is binned */
-    real scale;               /* the largest coordinate of the box, for the rounding bounds */
-    bool mailbox;
-    bool cull;                /* refs[].box is filled in */
-    size_t peak_bytes;        /* the most memory the build held at once */
+    long n_unbinned;
+    real margin;              /* every box is widened by this: more than rounding moves a point */
 } grid;
 /* end snippet */
 
 /* What a march did: added to by grid_intersect_counted. */
 typedef struct {
-    uint64_t cells;  /* cells visited */
-    uint64_t tests;  /* surface_intersect calls */
-    uint64_t culled; /* surfaces of those cells whose boxes the ray passes by */
+    uint64_t cells; /* cells visited */
+    uint64_t tests; /* surface_intersect calls */
 } grid_counts;
 
-/* The default knobs: GRID_DEFAULT_DENSITY, GRID_DEFAULT_MAX_CELLS, mailboxing, leaping and culling on. */
+#define GRID_DEFAULT_DENSITY 2.0
+#define GRID_DEFAULT_MAX_CELLS (1L << 24)
+
 grid_options grid_default_options(void);
 
 /* Builds the grid of `list`, which must outlive it and not change.  Returns
- * 0, or -1 with the problem in err (out of memory, more cell entries than
- * 32-bit offsets hold, a bad knob). */
+ * 0, or -1 with the problem in err (out of memory, a bad knob). */
 int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, size_t err_size);
 void grid_free(grid *g);
-
-/* The grid's own memory in bytes (the surfaces aside). */
 size_t grid_memory(const grid *g);
+
+/* Cells along each axis for `surfaces` surfaces in a box of the given
+ * extents: about density x surfaces cells, as cubic as the box allows, at
+ * most max_cells; an axis of zero extent gets one cell. */
+void grid_resolution(const double extent[3], long surfaces, double density, long max_cells, int n[3]);
 
 /* The cells a box [box_lo, box_hi] overlaps: first[a] .. last[a] along each
  * axis a, clamped to the grid; first[a] > last[a] on some axis when the box
@@ -120,10 +68,9 @@ size_t grid_memory(const grid *g);
 void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int last[3]);
 
 /* The hit with the smallest t in (t_min, t_max), as surfaces_intersect
- * finds it over g->list: the same surface, the same t, the same record. */
+ * finds it over g->list; grid_intersect_counted adds what the march did to
+ * *counts (when not NULL). */
 bool grid_intersect(const grid *g, ray r, real t_min, real t_max, hit_record *hit);
-
-/* The same, adding what the march did to *counts (when not NULL). */
 bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_record *hit, grid_counts *counts);
 
 #endif

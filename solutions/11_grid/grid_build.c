@@ -1,4 +1,4 @@
-/* grid_build.c - chapter 11: the cells of the grid and the surfaces in each. */
+/* grid_build.c - chapter 11: the grid's cells and the surfaces listed in each. */
 #include "11_grid/grid.h"
 
 #include <math.h>
@@ -7,14 +7,11 @@
 
 grid_options grid_default_options(void)
 {
-    return (grid_options){.density = GRID_DEFAULT_DENSITY,
-                          .max_cells = GRID_DEFAULT_MAX_CELLS,
-                          .mailbox = true,
-                          .leap = true,
-                          .cull = true};
+    return (grid_options){.density = GRID_DEFAULT_DENSITY, .max_cells = GRID_DEFAULT_MAX_CELLS};
 }
 
 static real get(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
+static vec3 widen(vec3 v, real m) { return vec3_make(v.x + m, v.y + m, v.z + m); }
 
 /* A surface's bounding box: a sphere's centre +- R, a triangle's vertices' extremes. */
 static void surface_bounds(const surface *s, vec3 *lo, vec3 *hi)
@@ -24,22 +21,60 @@ static void surface_bounds(const surface *s, vec3 *lo, vec3 *hi)
         vec3 c = s->sphere.center;
         *lo = vec3_make(c.x - r, c.y - r, c.z - r);
         *hi = vec3_make(c.x + r, c.y + r, c.z + r);
-    } else {
-        const triangle *t = &s->triangle;
-        *lo = vec3_make(real_fmin(t->a.x, real_fmin(t->b.x, t->c.x)), real_fmin(t->a.y, real_fmin(t->b.y, t->c.y)),
-                        real_fmin(t->a.z, real_fmin(t->b.z, t->c.z)));
-        *hi = vec3_make(real_fmax(t->a.x, real_fmax(t->b.x, t->c.x)), real_fmax(t->a.y, real_fmax(t->b.y, t->c.y)),
-                        real_fmax(t->a.z, real_fmax(t->b.z, t->c.z)));
+        return;
     }
+    const triangle *t = &s->triangle;
+    *lo = vec3_make(real_fmin(t->a.x, real_fmin(t->b.x, t->c.x)), real_fmin(t->a.y, real_fmin(t->b.y, t->c.y)),
+                    real_fmin(t->a.z, real_fmin(t->b.z, t->c.z)));
+    *hi = vec3_make(real_fmax(t->a.x, real_fmax(t->b.x, t->c.x)), real_fmax(t->a.y, real_fmax(t->b.y, t->c.y)),
+                    real_fmax(t->a.z, real_fmax(t->b.z, t->c.z)));
 }
 
-static vec3 widen(vec3 v, real m) { return vec3_make(v.x + m, v.y + m, v.z + m); }
+static bool bounded(const surface *s)
+{
+    vec3 lo, hi;
+    surface_bounds(s, &lo, &hi);
+    return vec3_is_finite(lo) && vec3_is_finite(hi);
+}
 
-/* The index of the cell holding coordinate x along axis a, as a real:
- * (x - lo_a) / cell_a. */
-static real cell_coordinate(const grid *g, vec3 x, int a) { return (get(x, a) - get(g->lo, a)) * get(g->inv_cell, a); }
+/* snippet: resolution */
+void grid_resolution(const double extent[3], long surfaces, double density, long max_cells, int n[3])
+{
+    /* EXERCISE resolution: the cells along each axis from the density (README, "The grid's box and
+     * resolution"): about density x surfaces cells in all, cubic cells over the box's spanned axes,
+     * never more than max_cells; an axis of zero extent gets one cell. */
+    double volume = 1;
+    int spanned = 0;
+    for (int a = 0; a < 3; a++)
+        if (extent[a] > 0) {
+            volume *= extent[a];
+            spanned++;
+        }
+    double wanted = fmin(density * (double)surfaces, (double)max_cells);
+    /* s cells per unit of length on every spanned axis: the product of extent_a s is `wanted` */
+    double s = spanned ? fmin(pow(fmax(wanted, 1) / volume, 1.0 / spanned), 1e300) : 0;
+    for (;;) {
+        double cells = 1;
+        for (int a = 0; a < 3; a++) {
+            double na = extent[a] > 0 ? fmin(fmax(round(extent[a] * s), 1), 1 << 20) : 1;
+            n[a] = (int)na;
+            cells *= na;
+        }
+        if (cells <= (double)max_cells)
+            return;
+        s *= 0.99 * pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1)); /* rounding overshot the cap */
+    }
+    /* STUB
+    (void)extent;
+    (void)surfaces;
+    (void)density;
+    (void)max_cells;
+    n[0] = n[1] = n[2] = 1;
+    END EXERCISE */
+}
+/* end snippet */
 
-/* A real cell index clamped to [lowest, highest] before it becomes an int,
+/* A cell coordinate clamped to [lowest, highest] before it becomes an int,
  * so that a far or non-finite coordinate never overflows the conversion. */
 static int clamp_index(real f, int lowest, int highest)
 {
@@ -53,16 +88,13 @@ static int clamp_index(real f, int lowest, int highest)
 /* snippet: cell_range */
 void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int last[3])
 {
-    /* EXERCISE cell_range: the cells the box [box_lo, box_hi] overlaps, axis by axis.
-     * Along axis a, coordinate x lies at f = (x - lo_a) / cell_a in units of cells from
-     * the grid's low corner (cell_coordinate(g, x, a) computes it): cell i covers
-     * i <= f <= i + 1, so boundaries belong to both cells they separate.  The box covers
-     *     first = ceil(f_lo) - 1   (f_lo = 2.0 touches cell 1; f_lo = 2.3 starts in cell 2)
-     *     last  = floor(f_hi)      (f_hi = 3.0 touches cell 3)
-     * clamped to the grid, 0 .. n_a - 1, with clamp_index (it never overflows an int).
-     * A box wholly outside the grid then has first > last. */
+    /* EXERCISE cell_range: the cells the box overlaps along each axis (README, "Listing the
+     * surfaces"), boundaries counting for the cells on both sides, clamped to the grid with
+     * clamp_index. */
     for (int a = 0; a < 3; a++) {
-        real f_lo = cell_coordinate(g, box_lo, a), f_hi = cell_coordinate(g, box_hi, a);
+        /* where the box starts and ends, in cells from the grid's low corner */
+        real f_lo = (get(box_lo, a) - get(g->lo, a)) / get(g->cell, a);
+        real f_hi = (get(box_hi, a) - get(g->lo, a)) / get(g->cell, a);
         first[a] = clamp_index(-real_floor(-f_lo) - 1, 0, g->n[a]); /* ceil(f_lo) - 1 */
         last[a] = clamp_index(real_floor(f_hi), -1, g->n[a] - 1);
     }
@@ -70,8 +102,8 @@ void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int 
     (void)g;
     (void)box_lo;
     (void)box_hi;
-    (void)cell_coordinate;
     (void)clamp_index;
+    (void)get;
     for (int a = 0; a < 3; a++) {
         first[a] = 0;
         last[a] = -1;
@@ -80,253 +112,81 @@ void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int 
 }
 /* end snippet */
 
-/* Whether a triangle can touch cell (i, j, k), by the separating axis test
- * of Akenine-Moller (2001): the triangle and the box are apart when their
- * projections on some axis are, and it suffices to try the box's three
- * axes (the cell range has done that), the triangle's normal and the nine
- * cross products of a box axis with a triangle edge.  The box is the cell
- * widened by the margin, and each comparison allows a rounding term on top,
- * so the test says yes too often, never too rarely: a triangle is listed in
- * every cell it meets.  Spheres and triangles within one cell's box along
- * every axis are binned by their boxes alone. */
-static bool triangle_touches_cell(const grid *g, const triangle *tri, int i, int j, int k)
-{
-    vec3 h = widen(vec3_scale(g->cell, (real)0.5), g->margin);
-    vec3 m = vec3_make(g->lo.x + ((real)i + (real)0.5) * g->cell.x, g->lo.y + ((real)j + (real)0.5) * g->cell.y,
-                       g->lo.z + ((real)k + (real)0.5) * g->cell.z);
-    /* the vertices relative to the cell's centre, and the edges */
-    const vec3 v[3] = {vec3_sub(tri->a, m), vec3_sub(tri->b, m), vec3_sub(tri->c, m)};
-    const vec3 e[3] = {vec3_sub(v[1], v[0]), vec3_sub(v[2], v[1]), vec3_sub(v[0], v[2])};
-    const real rounding = 8 * REAL_EPSILON * (g->scale + vec3_max_abs(m));
-    vec3 axes[10];
-    int n = 0;
-    axes[n++] = vec3_cross(e[0], e[1]); /* the normal */
-    const vec3 unit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++)
-            axes[n++] = vec3_cross(unit[a], e[b]);
-    for (int q = 0; q < n; q++) {
-        vec3 u = axes[q];
-        real p0 = vec3_dot(v[0], u), p1 = vec3_dot(v[1], u), p2 = vec3_dot(v[2], u);
-        real lo = p0 < p1 ? (p0 < p2 ? p0 : p2) : (p1 < p2 ? p1 : p2);
-        real hi = p0 > p1 ? (p0 > p2 ? p0 : p2) : (p1 > p2 ? p1 : p2);
-        real sum = real_abs(u.x) + real_abs(u.y) + real_abs(u.z);
-        real r = real_abs(u.x) * h.x + real_abs(u.y) * h.y + real_abs(u.z) * h.z + rounding * sum;
-        if (lo > r || hi < -r) /* apart along u (a NaN never separates) */
-            return false;
-    }
-    return true;
-}
-
-/* snippet: cull_box */
-/* The part of a surface's box [lo, hi] (widened by the margin) inside cell
- * (i, j, k), for culling: along each axis, in GRID_BOX_STEPS-ths of the cell's frame,
- * the cell widened by the margin on both sides, rounded outwards (floor for
- * the low side, ceil for the high side, each a hundredth of a step further
- * for the rounding of this arithmetic) and clamped to the frame.  One byte
- * per side: 6 bytes per entry, read in order with the entries, where a
- * float box per surface took 24 bytes read from anywhere. */
-static void cull_box(const grid *g, vec3 lo, vec3 hi, int i, int j, int k, uint8_t box[6])
-{
-    const int index[3] = {i, j, k};
-    for (int a = 0; a < 3; a++) {
-        double frame = (double)get(g->cell, a) + 2 * (double)g->margin;
-        double origin = (double)get(g->lo, a) + index[a] * (double)get(g->cell, a) - (double)g->margin;
-        double f_lo = ((double)get(lo, a) - g->margin - origin) / frame * GRID_BOX_STEPS - 0.01;
-        double f_hi = ((double)get(hi, a) + g->margin - origin) / frame * GRID_BOX_STEPS + 0.01;
-        box[a] = (uint8_t)(f_lo <= 0 ? 0 : f_lo >= GRID_BOX_STEPS ? GRID_BOX_STEPS : floor(f_lo));
-        box[3 + a] = (uint8_t)(f_hi <= 0 ? 0 : f_hi >= GRID_BOX_STEPS ? GRID_BOX_STEPS : ceil(f_hi));
-    }
-}
-/* end snippet */
-
-/* Lists surface s in every cell it overlaps: counts it there (fill NULL) or
- * writes its index at fill[cell]++. */
-static void bin_surface(grid *g, const surface *s, uint32_t index, uint32_t *count, uint32_t *fill)
+/* Lists surface k in every cell its box (widened by the margin) overlaps:
+ * counts it there (fill NULL) or writes k at fill[cell]++. */
+static void bin_surface(grid *g, int k, uint32_t *count, uint32_t *fill)
 {
     vec3 lo, hi;
-    surface_bounds(s, &lo, &hi);
-    if (!vec3_is_finite(lo) || !vec3_is_finite(hi))
-        return; /* unbinned: tested for every ray */
+    surface_bounds(&g->list->items[k], &lo, &hi);
     int first[3], last[3];
     grid_cell_range(g, widen(lo, -g->margin), widen(hi, g->margin), first, last);
-    bool one_cell = first[0] == last[0] && first[1] == last[1] && first[2] == last[2];
-    bool by_axes = s->kind == SHAPE_TRIANGLE && !one_cell;
-    for (int k = first[2]; k <= last[2]; k++)
-        for (int j = first[1]; j <= last[1]; j++)
-            for (int i = first[0]; i <= last[0]; i++) {
-                if (by_axes && !triangle_touches_cell(g, &s->triangle, i, j, k))
-                    continue;
-                long c = i + (long)g->n[0] * (j + (long)g->n[1] * k);
-                if (fill) {
-                    grid_entry *entry = &g->refs[fill[c]++];
-                    *entry = (grid_entry){.surface = index};
-                    if (g->cull)
-                        cull_box(g, lo, hi, i, j, k, entry->box);
-                } else
+    for (int z = first[2]; z <= last[2]; z++)
+        for (int y = first[1]; y <= last[1]; y++)
+            for (int x = first[0]; x <= last[0]; x++) {
+                long c = x + (long)g->n[0] * (y + (long)g->n[1] * z);
+                if (fill)
+                    g->refs[fill[c]++] = (uint32_t)k;
+                else
                     count[c]++;
             }
 }
 
-/* snippet: resolution */
-/* Cells along each axis: about density x N cells in all, as cubic as the box
- * allows (n_a proportional to the box's extent e_a).  An axis of zero extent
- * (a flat scene) gets one cell and the others share the count. */
-static void resolution(const double extent[3], long surfaces, double density, long max_cells, int n[3])
+/* The box of the surfaces with finite bounds; the others go to g->unbinned. */
+static long bound_all(grid *g, vec3 *lo, vec3 *hi)
 {
-    double volume = 1;
-    int spanned = 0;
-    for (int a = 0; a < 3; a++)
-        if (extent[a] > 0) {
-            volume *= extent[a];
-            spanned++;
+    const surface_list *list = g->list;
+    *lo = vec3_make(REAL_INFINITY, REAL_INFINITY, REAL_INFINITY);
+    *hi = vec3_neg(*lo);
+    long binned = 0;
+    for (int k = 0; k < list->n; k++) {
+        vec3 slo, shi;
+        surface_bounds(&list->items[k], &slo, &shi);
+        if (!bounded(&list->items[k])) {
+            g->unbinned[g->n_unbinned++] = (uint32_t)k;
+            continue;
         }
-    double wanted = fmin(density * (double)surfaces, (double)max_cells);
-    /* s cells per unit length along every spanned axis: prod (e_a s) = wanted */
-    double s = spanned ? fmin(pow(fmax(wanted, 1) / volume, 1.0 / spanned), 1e300) : 0;
-    for (;;) {
-        double cells = 1;
-        for (int a = 0; a < 3; a++) {
-            double na = extent[a] > 0 ? fmin(fmax(round(extent[a] * s), 1), 1 << 20) : 1;
-            n[a] = (int)na;
-            cells *= na;
-        }
-        if (cells <= (double)max_cells)
-            return;
-        s *= 0.99 * pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1));
+        *lo = vec3_make(real_fmin(lo->x, slo.x), real_fmin(lo->y, slo.y), real_fmin(lo->z, slo.z));
+        *hi = vec3_make(real_fmax(hi->x, shi.x), real_fmax(hi->y, shi.y), real_fmax(hi->z, shi.z));
+        binned++;
     }
-}
-/* end snippet */
-
-/* snippet: empty_distances */
-/* empty[8 c + o]: for a ray in cell c heading into octant o (bit 0: x
- * decreasing, bit 1: y, bit 2: z), the side s of the largest cube of empty
- * cells that has c as its corner and lies ahead of c in that octant: cells
- * i .. i + (s - 1) sgn_x along x, and so along y and z.  0 for a cell with
- * surfaces; at most 255; cells beyond the grid count as empty (a ray that
- * leaves the grid is done).  The classic "largest empty square" recurrence in
- * 3D: s = 1 + the least s of the 7 neighbours one step ahead, filled in the
- * order in which those neighbours come first. */
-static void empty_distances(grid *g)
-{
-    const int n[3] = {g->n[0], g->n[1], g->n[2]};
-    for (int o = 0; o < 8; o++) {
-        const int sx = o & 1 ? -1 : 1, sy = o & 2 ? -1 : 1, sz = o & 4 ? -1 : 1;
-        for (int kq = 0; kq < n[2]; kq++)
-            for (int jq = 0; jq < n[1]; jq++)
-                for (int iq = 0; iq < n[0]; iq++) {
-                    /* the cells ahead of (i, j, k) come first: walk against the octant */
-                    const int i = sx > 0 ? n[0] - 1 - iq : iq, j = sy > 0 ? n[1] - 1 - jq : jq,
-                              k = sz > 0 ? n[2] - 1 - kq : kq;
-                    const long c = i + (long)n[0] * (j + (long)n[1] * k);
-                    int side = 0;
-                    if (g->start[c + 1] == g->start[c]) {
-                        int least = 254;
-                        for (int corner = 1; corner < 8; corner++) {
-                            int ii = i + (corner & 1 ? sx : 0), jj = j + (corner & 2 ? sy : 0),
-                                kk = k + (corner & 4 ? sz : 0);
-                            if (ii < 0 || ii >= n[0] || jj < 0 || jj >= n[1] || kk < 0 || kk >= n[2])
-                                continue; /* beyond the grid: empty */
-                            int ahead = g->empty[8 * (ii + (long)n[0] * (jj + (long)n[1] * kk)) + o];
-                            least = ahead < least ? ahead : least;
-                        }
-                        side = 1 + least;
-                    }
-                    g->empty[8 * c + o] = (uint8_t)side;
-                }
-    }
-}
-/* end snippet */
-
-/* The entries of the table of cell boundaries: n_a + 1 planes per axis and
- * PLANES_BEYOND more on either side (the largest cube a leap takes). */
-#define PLANES_BEYOND 255
-static size_t plane_count(const grid *g)
-{
-    return (size_t)g->n[0] + g->n[1] + g->n[2] + 3 * (1 + 2 * PLANES_BEYOND);
+    return binned;
 }
 
 int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, size_t err_size)
 {
-    *g = (grid){.list = list, .mailbox = opt.mailbox, .cull = opt.cull};
+    *g = (grid){.list = list};
     if (!(opt.density > 0) || opt.max_cells < 1 || opt.max_cells > (1L << 30)) {
         snprintf(err, err_size, "grid: density must be > 0 and the cell cap 1 .. 2^30 (got %g, %ld)", opt.density,
                  opt.max_cells);
         return -1;
     }
-    /* The box of every surface with finite bounds; the others are tested for every ray. */
-    vec3 lo = vec3_make(REAL_INFINITY, REAL_INFINITY, REAL_INFINITY), hi = vec3_neg(lo);
-    long binned = 0;
-    for (int k = 0; k < list->n; k++) {
-        vec3 slo, shi;
-        surface_bounds(&list->items[k], &slo, &shi);
-        if (vec3_is_finite(slo) && vec3_is_finite(shi)) {
-            lo = vec3_make(real_fmin(lo.x, slo.x), real_fmin(lo.y, slo.y), real_fmin(lo.z, slo.z));
-            hi = vec3_make(real_fmax(hi.x, shi.x), real_fmax(hi.y, shi.y), real_fmax(hi.z, shi.z));
-            binned++;
-        } else {
-            g->n_unbinned++;
-        }
-    }
-    if (g->n_unbinned) {
-        g->unbinned = malloc((size_t)g->n_unbinned * sizeof *g->unbinned);
-        if (!g->unbinned)
-            goto out_of_memory;
-        long u = 0;
-        for (int k = 0; k < list->n; k++) {
-            vec3 slo, shi;
-            surface_bounds(&list->items[k], &slo, &shi);
-            if (!(vec3_is_finite(slo) && vec3_is_finite(shi)))
-                g->unbinned[u++] = (uint32_t)k;
-        }
-    }
+    g->unbinned = malloc((size_t)(list->n ? list->n : 1) * sizeof *g->unbinned);
+    if (!g->unbinned)
+        goto out_of_memory;
+    vec3 lo, hi;
+    long binned = bound_all(g, &lo, &hi);
     if (binned == 0)
-        return 0; /* no cells: n_cells = 0 and every ray misses the (empty) grid */
+        return 0; /* no cells: every ray misses the (empty) grid */
 
     /* snippet: margin */
     /* The margin: rounding moves a computed point (a hit, a cell boundary) by
-     * a few units of REAL_EPSILON times the size of its coordinates; every box
-     * is widened by far more than that, so a surface is listed in every cell
-     * its hits can be computed to lie in.  It also gives a flat scene's box a
-     * thickness. */
-    g->scale = real_fmax(vec3_max_abs(lo), vec3_max_abs(hi));
-    g->margin = 64 * REAL_EPSILON * g->scale;
+     * a few REAL_EPSILON times its coordinates; every box is widened by far
+     * more, so a surface is listed in every cell its hits can be computed to
+     * lie in.  It also gives a flat scene's box a thickness. */
+    real scale = real_fmax(vec3_max_abs(lo), vec3_max_abs(hi));
+    g->margin = 64 * REAL_EPSILON * scale;
     if (!(g->margin > 0))
         g->margin = 1; /* every surface is a point at the origin */
     /* end snippet */
     double extent[3] = {(double)hi.x - (double)lo.x, (double)hi.y - (double)lo.y, (double)hi.z - (double)lo.z};
-    resolution(extent, binned, opt.density, opt.max_cells, g->n);
+    grid_resolution(extent, binned, opt.density, opt.max_cells, g->n);
     g->lo = widen(lo, -g->margin);
     g->hi = widen(hi, g->margin);
     vec3 size = vec3_sub(g->hi, g->lo);
     g->cell = vec3_make(size.x / (real)g->n[0], size.y / (real)g->n[1], size.z / (real)g->n[2]);
-    g->inv_cell = vec3_make(1 / g->cell.x, 1 / g->cell.y, 1 / g->cell.z);
-    for (int a = 0; a < 3; a++) {
-        g->lo_a[a] = get(g->lo, a);
-        g->cell_a[a] = get(g->cell, a);
-        g->inv_cell_a[a] = get(g->inv_cell, a);
-        g->per_unit[a] = GRID_BOX_STEPS / (g->cell_a[a] + 2 * g->margin);
-        g->frame_step[a] = (g->cell_a[a] + 2 * g->margin) / GRID_BOX_STEPS;
-    }
     g->n_cells = (long)g->n[0] * g->n[1] * g->n[2];
-    /* The cell boundaries, one table for the three axes: the march reads them
-     * instead of computing lo_a + k cell_a at every crossing (the same values).
-     * A leap looks up to 255 cells beyond the grid's faces: the table goes on
-     * that far on both sides. */
-    real *planes = malloc(plane_count(g) * sizeof *planes);
-    if (!planes)
-        goto out_of_memory;
-    g->plane[0] = planes + PLANES_BEYOND;
-    g->plane[1] = g->plane[0] + g->n[0] + 1 + 2 * PLANES_BEYOND;
-    g->plane[2] = g->plane[1] + g->n[1] + 1 + 2 * PLANES_BEYOND;
-    for (int a = 0; a < 3; a++)
-        for (int k = -PLANES_BEYOND; k <= g->n[a] + PLANES_BEYOND; k++)
-            g->plane[a][k] = g->lo_a[a] + (real)k * g->cell_a[a];
 
-    /* Two passes over the surfaces: count each cell's surfaces, then, with the
-     * offsets summed from the counts, write them in increasing index.  A cell
-     * lists each surface at most once, so its count fits 32 bits; the same
-     * array then holds where the next index of each cell goes. */
+    /* Count each cell's surfaces, sum the counts into offsets, then write the indices. */
     uint32_t *count = calloc((size_t)g->n_cells, sizeof *count);
     g->start = malloc(((size_t)g->n_cells + 1) * sizeof *g->start);
     if (!count || !g->start) {
@@ -334,11 +194,12 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
         goto out_of_memory;
     }
     for (int k = 0; k < list->n; k++)
-        bin_surface(g, &list->items[k], (uint32_t)k, count, NULL);
+        if (bounded(&list->items[k]))
+            bin_surface(g, k, count, NULL);
     uint64_t total = 0;
-    for (long c = 0; c < g->n_cells; c++) {
+    for (long c = 0; c <= g->n_cells; c++) {
         g->start[c] = (uint32_t)total;
-        total += count[c];
+        total += c < g->n_cells ? count[c] : 0;
         if (total > UINT32_MAX) {
             free(count);
             grid_free(g);
@@ -346,29 +207,18 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
             return -1;
         }
     }
-    g->start[g->n_cells] = (uint32_t)total;
     g->n_refs = (long)total;
     g->refs = malloc((total ? (size_t)total : 1) * sizeof *g->refs);
     if (!g->refs) {
         free(count);
         goto out_of_memory;
     }
-    uint32_t *fill = count;
     for (long c = 0; c < g->n_cells; c++)
-        fill[c] = g->start[c];
+        count[c] = g->start[c]; /* now where each cell's next index goes */
     for (int k = 0; k < list->n; k++)
-        bin_surface(g, &list->items[k], (uint32_t)k, NULL, fill);
-    free(fill);
-    /* the most the build held at once: the grid and the fill array */
-    g->peak_bytes = grid_memory(g) + (size_t)g->n_cells * sizeof *fill;
-    if (opt.leap) {
-        g->empty = malloc(8 * (size_t)g->n_cells);
-        if (!g->empty)
-            goto out_of_memory;
-        empty_distances(g);
-        size_t now = grid_memory(g); /* the fill array is gone by now */
-        g->peak_bytes = now > g->peak_bytes ? now : g->peak_bytes;
-    }
+        if (bounded(&list->items[k]))
+            bin_surface(g, k, NULL, count);
+    free(count);
     return 0;
 
 out_of_memory:
@@ -382,20 +232,12 @@ void grid_free(grid *g)
     free(g->start);
     free(g->refs);
     free(g->unbinned);
-    free(g->empty);
-    if (g->plane[0])
-        free(g->plane[0] - PLANES_BEYOND);
-    g->plane[0] = g->plane[1] = g->plane[2] = NULL;
-    g->start = g->unbinned = NULL;
-    g->refs = NULL;
-    g->empty = NULL;
+    g->start = g->refs = g->unbinned = NULL;
     g->n_cells = g->n_refs = g->n_unbinned = 0;
 }
 
 size_t grid_memory(const grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
-    return sizeof *g + (cells + (size_t)g->n_unbinned) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof *g->refs +
-           (g->empty ? 8 * (size_t)g->n_cells : 0) +
-           (g->plane[0] ? plane_count(g) * sizeof(real) : 0);
+    return sizeof *g + (cells + (size_t)g->n_unbinned + (size_t)g->n_refs) * sizeof(uint32_t);
 }

@@ -1,5 +1,5 @@
-/* heat.c - chapter 11: a count per pixel as a colour. */
-#include "11_grid/heat.h"
+/* heat.c - chapter 11's lab: a count per pixel as a colour. */
+#include "11_grid/lab/heat.h"
 
 #include "display.h"
 

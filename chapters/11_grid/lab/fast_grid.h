@@ -1,0 +1,117 @@
+/* fast_grid.h - chapter 11's lab: the same query as the lesson's grid, made fast.
+ *
+ * The lesson's grid (11_grid/grid.h) lists each surface in the cells its box
+ * overlaps and marches the ray cell by cell.  This grid answers the same
+ * query, bit for bit, with more machinery: a triangle is listed only in the
+ * cells it touches (a separating-axis test), each entry carries the part of
+ * the surface's box inside its cell in bytes (culling), a mailbox skips
+ * surfaces already tested along the ray, and a ray in an empty cell leaps
+ * over the largest cube of empty cells ahead of it in one step (Cohen and
+ * Sheffer's proximity clouds, a cube per octant of directions).
+ *
+ * fast_grid_intersect returns what the lesson's grid_intersect and chapter
+ * 04's surfaces_intersect return: the same surface and bit for bit the same
+ * t, the first in the list among equal t.  The lab's README measures what
+ * each technique buys.
+ */
+#ifndef CH11_LAB_FAST_GRID_H
+#define CH11_LAB_FAST_GRID_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+
+#include "04_many_shapes/surface.h"
+
+/* snippet: fast_grid_options */
+typedef struct {
+    double density;  /* cells per surface: n_x n_y n_z is about density x (number of surfaces) */
+    long max_cells;  /* the cap on n_x n_y n_z */
+    bool mailbox;    /* skip a surface already tested along the ray */
+    bool leap;       /* leap over blocks of empty cells in one step */
+    bool cull;       /* test a surface only when the ray passes through its box */
+} fast_grid_options;
+/* end snippet */
+
+#define FAST_GRID_DEFAULT_DENSITY 2.0
+#define FAST_GRID_DEFAULT_MAX_CELLS (1L << 24)
+
+/* A surface's box inside a cell is kept in steps of 1/FAST_GRID_BOX_STEPS of the
+ * cell's frame, one byte per side; 127 leaves each byte's top bit free, so
+ * that the march compares all six sides at once in one 64-bit word. */
+#define FAST_GRID_BOX_STEPS 127
+
+/* snippet: grid */
+/* One entry of a cell's list: 12 bytes, read in order with the cell. */
+typedef struct {
+    uint32_t surface; /* index into the surface list */
+    uint8_t box[8];   /* the part of the surface's box (widened by the margin) inside the cell,
+                       * in 127ths of the cell's frame (the cell widened by the margin),
+                       * rounded outwards (lo x, y, z, hi x, y, z, then two zeros, so that
+                       * the march reads all eight at once); zeros when culling is off */
+} fast_grid_entry;
+
+typedef struct {
+    const surface_list *list; /* the surfaces; the grid holds their indices only */
+    vec3 lo, hi;              /* the grid's box: the surfaces' bounding box, widened by `margin` */
+    vec3 cell;                /* the size of one cell along x, y and z */
+    vec3 inv_cell;            /* 1 / cell */
+    real lo_a[3], cell_a[3];  /* lo and cell again, as arrays the march indexes by axis */
+    real inv_cell_a[3];       /* inv_cell, as an array */
+    real per_unit[3];         /* FAST_GRID_BOX_STEPS / (cell_a + 2 margin): steps of a cell's frame per unit of length */
+    real frame_step[3];       /* (cell_a + 2 margin) / FAST_GRID_BOX_STEPS: the length of one step of a cell's frame */
+    real *plane[3];           /* plane[a][k] = lo_a + k cell_a: the cell boundaries along axis a, for
+                               * k = -255 .. n_a + 255 (a leap's cube may reach beyond the grid) */
+    int n[3];                 /* cells along x, y and z */
+    /* The cells' lists, flat (compressed sparse rows): the surfaces of cell
+     * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],
+     * in increasing index. */
+    uint32_t *start;          /* n_x n_y n_z + 1 offsets */
+    fast_grid_entry *refs;         /* the entries: surface indices and their boxes in the cell */
+    uint8_t *empty;           /* per cell c and octant o (bit 0: x decreasing, 1: y, 2: z),
+                               * empty[8 c + o]: the cube of cells from c up to empty[8 c + o] - 1
+                               * cells ahead in octant o holds nothing; 0 for a cell with
+                               * surfaces.  NULL when leaping is off */
+    uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
+    long n_cells, n_refs, n_unbinned;
+    real margin;              /* every surface's box is widened by this before it is binned */
+    real scale;               /* the largest coordinate of the box, for the rounding bounds */
+    bool mailbox;
+    bool cull;                /* refs[].box is filled in */
+    size_t peak_bytes;        /* the most memory the build held at once */
+} fast_grid;
+/* end snippet */
+
+/* What a march did: added to by fast_grid_intersect_counted. */
+typedef struct {
+    uint64_t cells;  /* cells visited */
+    uint64_t tests;  /* surface_intersect calls */
+    uint64_t culled; /* surfaces of those cells whose boxes the ray passes by */
+} fast_grid_counts;
+
+/* The default knobs: FAST_GRID_DEFAULT_DENSITY, FAST_GRID_DEFAULT_MAX_CELLS, mailboxing, leaping and culling on. */
+fast_grid_options fast_grid_default_options(void);
+
+/* Builds the grid of `list`, which must outlive it and not change.  Returns
+ * 0, or -1 with the problem in err (out of memory, more cell entries than
+ * 32-bit offsets hold, a bad knob). */
+int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options opt, char *err, size_t err_size);
+void fast_grid_free(fast_grid *g);
+
+/* The grid's own memory in bytes (the surfaces aside). */
+size_t fast_grid_memory(const fast_grid *g);
+
+/* The cells a box [box_lo, box_hi] overlaps: first[a] .. last[a] along each
+ * axis a, clamped to the grid; first[a] > last[a] on some axis when the box
+ * lies wholly outside.  A box that touches a cell boundary overlaps the
+ * cells on both sides. */
+void fast_grid_cell_range(const fast_grid *g, vec3 box_lo, vec3 box_hi, int first[3], int last[3]);
+
+/* The hit with the smallest t in (t_min, t_max), as surfaces_intersect
+ * finds it over g->list: the same surface, the same t, the same record. */
+bool fast_grid_intersect(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit);
+
+/* The same, adding what the march did to *counts (when not NULL). */
+bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit, fast_grid_counts *counts);
+
+#endif

@@ -1,0 +1,47 @@
+/* fast_query.h - chapter 11's lab: the fast grid as the stage's closest-hit query, counted.
+ *
+ * The lab's renderer runs chapter 11's stage with --accel=list|grid|fast:
+ * the linear scan, the lesson's grid or the fast grid, each wrapped in
+ * chapter 10's face_query.  Every query adds what it did to the calling
+ * thread's tally, which the renderer reads per sample (heat maps) and sums
+ * (the report).
+ */
+#ifndef CH11_LAB_FAST_QUERY_H
+#define CH11_LAB_FAST_QUERY_H
+
+#include <stdint.h>
+
+#include "11_grid/grid_stage.h"
+#include "11_grid/lab/fast_grid.h"
+
+/* The lab's knobs beyond the lesson's grid_settings. */
+typedef struct {
+    int accel;   /* LAB_ACCEL_* */
+    int mailbox; /* --mailbox, --leap, --cull: 0 on, 1 off (the index of on|off) */
+    int leap;
+    int cull;
+} fast_knobs;
+enum { LAB_ACCEL_FAST, LAB_ACCEL_GRID, LAB_ACCEL_LIST };
+extern fast_knobs fast_settings;
+
+/* What the closest-hit queries of one thread did since the last reset. */
+typedef struct {
+    uint64_t queries;        /* one per ray of any kind */
+    fast_grid_counts counts; /* all of them together */
+    fast_grid_counts first;  /* the first query since the reset (a sample's eye ray) */
+} query_tally;
+extern _Thread_local query_tally query_tally_here;
+
+/* The query under fast_settings.accel, built over `list`. */
+typedef struct {
+    int accel;
+    const surface_list *list;
+    grid lesson;      /* LAB_ACCEL_GRID */
+    fast_grid fast;   /* LAB_ACCEL_FAST */
+    double build_seconds;
+} lab_query;
+
+/* A build_query_fn: chapter 10's face_query around a lab_query. */
+int lab_faces(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
+
+#endif

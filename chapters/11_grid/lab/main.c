@@ -1,0 +1,168 @@
+/* main.c - chapter 11's lab: the renderer of chapter 11 with the fast grid, counters and heat maps.
+ *
+ * Renders what chapter 11's renderer renders, through --accel=fast (the fast
+ * grid, fast_grid.h: the default here), grid (the lesson's) or list (chapter
+ * 04's linear scan); all three give the same image byte for byte.  Adds the
+ * fast grid's knobs --mailbox, --leap, --cull (on|off), --show=cells|tests (a
+ * heat map of the cells visited or the surfaces tested by each pixel's eye
+ * ray), --heat-max (the count shown white), and a report line: what the
+ * structure cost and what it did per ray.
+ */
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "04_many_shapes/shape_knobs.h"
+#include "10_interpolation/face_query.h"
+#include "11_grid/lab/fast_query.h"
+#include "11_grid/lab/heat.h"
+#include "renderer.h"
+
+static const char *const on_off[] = {"on", "off", NULL};
+static const char *const accel_choices[] = {"fast", "grid", "list", NULL};
+enum { SHOW_IMAGE, SHOW_CELLS, SHOW_TESTS };
+static const char *const show_choices[] = {"image", "cells", "tests", NULL};
+static int show_choice = SHOW_IMAGE;
+static int heat_max = 64;
+
+static const knob lab_knob_rows[] = {
+    {"accel", KNOB_CHOICE, &fast_settings.accel, accel_choices,
+     "fast grid (the lab's), grid (the lesson's), or chapter 04's linear scan"},
+    {"mailbox", KNOB_CHOICE, &fast_settings.mailbox, on_off, "fast grid: skip surfaces already tested along the ray"},
+    {"leap", KNOB_CHOICE, &fast_settings.leap, on_off, "fast grid: cross blocks of empty cells in one step"},
+    {"cull", KNOB_CHOICE, &fast_settings.cull, on_off, "fast grid: test a surface only when the ray meets its box"},
+    {"show", KNOB_CHOICE, &show_choice, show_choices, "the image, or each pixel's eye ray's cells visited or tests"},
+    {"heat-max", KNOB_INT, &heat_max, NULL, "--show=cells|tests: the count shown white"},
+};
+
+/* Per-thread totals, each on its own cache line, so that counting costs no
+ * traffic between the cores. */
+#define SLOTS 256
+typedef struct {
+    query_tally tally;
+    char pad[64 - sizeof(query_tally) % 64];
+} slot;
+
+typedef struct {
+    shading_view *view;
+    slot *slots;
+} prepared_view;
+
+static shading_stage the_stage;
+
+static void add_tally(query_tally *to, const query_tally *t)
+{
+    to->queries += t->queries;
+    to->counts.cells += t->counts.cells;
+    to->counts.tests += t->counts.tests;
+    to->counts.culled += t->counts.culled;
+}
+
+/* One sample: the stage's, with the queries of its rays counted. */
+static color sample(const void *prepared, real u, real v, uint64_t *rays)
+{
+    const prepared_view *pv = prepared;
+    query_tally_here = (query_tally){0};
+    color c = shading_sample(pv->view, u, v, rays);
+    int t = omp_get_thread_num();
+    if (t < SLOTS) {
+        add_tally(&pv->slots[t].tally, &query_tally_here);
+    } else {
+        query_tally *to = &pv->slots[0].tally;
+#pragma omp critical(lab_tally)
+        add_tally(to, &query_tally_here);
+    }
+    if (show_choice == SHOW_IMAGE)
+        return c;
+    /* The eye ray's march: what the structure does for the rays the camera casts. */
+    const fast_grid_counts *eye = &query_tally_here.first;
+    return heat_color(show_choice == SHOW_CELLS ? eye->cells : eye->tests, heat_max);
+}
+
+static void release(void *prepared)
+{
+    prepared_view *pv = prepared;
+    if (pv) {
+        shading_release(pv->view);
+        free(pv->slots);
+    }
+    free(pv);
+}
+
+static void *prepare(const scene *desc, char *err, size_t err_size)
+{
+    prepared_view *pv = calloc(1, sizeof *pv);
+    if (!pv || !(pv->slots = calloc(SLOTS, sizeof *pv->slots))) {
+        free(pv);
+        snprintf(err, err_size, "%s: out of memory", scene_name(desc));
+        return NULL;
+    }
+    pv->view = shading_prepare(&the_stage, desc, chosen_sphere_formula(), chosen_triangle_test(), err, err_size);
+    if (!pv->view) {
+        release(pv);
+        return NULL;
+    }
+    return pv;
+}
+
+/* The line after the summary: what the structure cost and what it did per ray. */
+static void report(const void *prepared, render_stats stats, FILE *out)
+{
+    const prepared_view *pv = prepared;
+    query_tally sum = {0};
+    for (int t = 0; t < SLOTS; t++)
+        add_tally(&sum, &pv->slots[t].tally);
+    double queries = sum.queries ? (double)sum.queries : 1;
+    const surface_list *list = &pv->view->list;
+    const face_query *fq = pv->view->query.accel; /* chapter 10's face_query around the lab's */
+    const lab_query *lq = fq->inner.accel;
+    if (lq->accel == LAB_ACCEL_LIST) {
+        fprintf(out, "11_grid: linear scan over %d surfaces: %d intersection tests per ray; traced in %.3f s\n",
+                list->n, list->n, stats.seconds);
+        return;
+    }
+    const bool fast = lq->accel == LAB_ACCEL_FAST;
+    const int *n = fast ? lq->fast.n : lq->lesson.n;
+    long cells = fast ? lq->fast.n_cells : lq->lesson.n_cells, refs = fast ? lq->fast.n_refs : lq->lesson.n_refs;
+    size_t bytes = fast ? fast_grid_memory(&lq->fast) : grid_memory(&lq->lesson);
+    fprintf(out,
+            "11_grid: %s grid %dx%dx%d = %ld cells for %d surfaces (%.2f per cell), %.1f MB, built in %.3f s; "
+            "per ray %.2f cells, %.2f intersection tests (%.2f more culled by their boxes); traced in %.3f s\n",
+            fast ? "fast" : "lesson's", n[0], n[1], n[2], cells, list->n,
+            cells ? (double)refs / (double)cells : 0.0, (double)bytes / 1e6, lq->build_seconds,
+            (double)sum.counts.cells / queries, (double)sum.counts.tests / queries,
+            (double)sum.counts.culled / queries, stats.seconds);
+}
+
+#define MAX_KNOBS (SHAPE_KNOBS + MAX_STAGE_KNOBS + 8)
+
+int main(int argc, char **argv)
+{
+    the_stage = grid_stage();
+    the_stage.build_query = lab_faces;
+    knob knobs[MAX_KNOBS];
+    int n_knobs = 0;
+    for (int k = 0; k < SHAPE_KNOBS; k++) /* --sphere and --triangle first */
+        knobs[n_knobs++] = shape_knobs[k];
+    for (int k = 0; k < the_stage.n_knobs; k++) /* the lesson's, but its --accel: the lab's has three choices */
+        if (strcmp(the_stage.knobs[k].name, "accel") != 0)
+            knobs[n_knobs++] = the_stage.knobs[k];
+    for (size_t k = 0; k < sizeof lab_knob_rows / sizeof lab_knob_rows[0]; k++)
+        knobs[n_knobs++] = lab_knob_rows[k];
+    const renderer r = {
+        .name = the_stage.name,
+        .summary = "11_grid lab: chapter 11's renderer through the fast grid, the lesson's or the list, counted",
+        .knobs = knobs,
+        .n_knobs = n_knobs,
+        .modelled = the_stage.modelled,
+        .default_width = 512,
+        .default_height = 512,
+        .builtin = the_stage.builtin,
+        .prepare = prepare,
+        .sample = sample,
+        .release = release,
+        .report = report,
+    };
+    return renderer_main(&r, argc, argv);
+}

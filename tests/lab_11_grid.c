@@ -1,0 +1,160 @@
+/* lab_11_grid.c - chapter 11's lab: the fast grid answers as the lesson's grid and the linear scan do.
+ *
+ * The cases where grids break (grid_cases.h) with the fast grid and every
+ * combination of its knobs, then what only the fast grid has: the mailbox
+ * (each surface tested once along a ray) and the empty cubes it leaps over.
+ */
+#include "11_grid/grid_stage.h"
+#include "11_grid/lab/fast_query.h"
+
+#define GRID fast_grid
+#define GRID_OPTIONS fast_grid_options
+#define GRID_BUILD fast_grid_build
+#define GRID_INTERSECT fast_grid_intersect
+#define GRID_FREE fast_grid_free
+#define GRID_DEFAULTS fast_grid_default_options
+#define GRID_STAGE fast_stage
+/* a few densities with every knob on, then mailboxing, leaping and culling
+ * off one at a time and all together */
+static const fast_grid_options knob_sets[] = {
+    {0.3, 1L << 20, true, true, true}, {2, 1L << 20, true, true, true},  {10, 1L << 20, true, true, true},
+    {2, 1L << 20, false, true, true},  {2, 1L << 20, true, false, true}, {2, 1L << 20, true, true, false},
+    {2, 1L << 20, false, false, false},
+};
+#define N_KNOB_SETS (sizeof knob_sets / sizeof knob_sets[0])
+
+/* Chapter 11's stage over the lab's query, with the fast grid. */
+static shading_stage fast_stage(void)
+{
+    shading_stage stage = grid_stage();
+    stage.build_query = lab_faces;
+    fast_settings = (fast_knobs){.accel = LAB_ACCEL_FAST};
+    return stage;
+}
+
+#include "grid_cases.h"
+
+static void build_fast(fast_grid *g, const surface_list *list, fast_grid_options opt)
+{
+    char err[256];
+    if (fast_grid_build(g, list, opt, err, sizeof err) != 0)
+        fail_msg("fast_grid_build: %s", err);
+}
+
+/* Mailboxing tests each surface once along a ray: a long thin triangle lying
+ * along a row of cells, which the ray passes without hitting it, is tested
+ * in every cell without the mailbox and once with it. */
+static void test_mailbox_counts(void **state)
+{
+    (void)state;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    /* tiny spheres at the corners of the box [0, 10] x [0, 1] x [0, 1] */
+    for (int k = 0; k < 8; k++)
+        surface_list_add_sphere(&list,
+                                (sphere){{(real)(10 * (k & 1)), (real)((k >> 1) & 1), (real)((k >> 2) & 1)},
+                                         (real)0.001},
+                                0, k);
+    /* a sliver along x at y = 0.3, in the plane z = 0.5 */
+    surface_list_add_triangle(&list, (triangle){{(real)0.2, (real)0.3, (real)0.5}, {(real)9.8, (real)0.3, (real)0.5},
+                                                {(real)9.8, (real)0.35, (real)0.5}},
+                              0, 8);
+    for (int m = 0; m < 2; m++) {
+        fast_grid g;
+        fast_grid_options opt = {.density = 1.25, .max_cells = 1000, .mailbox = m == 0};
+        build_fast(&g, &list, opt);
+        assert_int_equal(10, g.n[0]); /* 9 surfaces x 1.25 ~ 11 cells for a box 10 x 1 x 1 */
+        assert_int_equal(1, g.n[1]);
+        assert_int_equal(1, g.n[2]);
+        /* along +x at y = 0.6, z = 0.45: through all 10 cells, missing everything */
+        ray r = {{-1, (real)0.6, (real)0.45}, {1, 0, 0}};
+        fast_grid_counts counts = {0, 0, 0};
+        hit_record hit;
+        assert_false(fast_grid_intersect_counted(&g, r, 0, REAL_INFINITY, &hit, &counts));
+        assert_int_equal(10, counts.cells);
+        /* The sliver is in all 10 cells; the corner spheres in the end cells. */
+        assert_int_equal(m == 0 ? 1 + 8 : 10 + 8, counts.tests);
+        fast_grid_free(&g);
+    }
+    surface_list_free(&list);
+}
+
+/* The leap's cubes: for every cell and octant, empty[8 c + o] is the side of
+ * the largest cube of empty cells with c as its corner and lying ahead of c
+ * in octant o (cells beyond the grid count as empty, capped at 255), found
+ * here by growing the cube one cell at a time. */
+static bool cube_empty(const fast_grid *g, int i, int j, int k, int o, int side)
+{
+    const int sign[3] = {o & 1 ? -1 : 1, o & 2 ? -1 : 1, o & 4 ? -1 : 1};
+    for (int c = 0; c < side; c++)
+        for (int b = 0; b < side; b++)
+            for (int a = 0; a < side; a++) {
+                int ii = i + sign[0] * a, jj = j + sign[1] * b, kk = k + sign[2] * c;
+                if (ii < 0 || ii >= g->n[0] || jj < 0 || jj >= g->n[1] || kk < 0 || kk >= g->n[2])
+                    continue;
+                long cell = ii + (long)g->n[0] * (jj + (long)g->n[1] * kk);
+                if (g->start[cell + 1] > g->start[cell])
+                    return false;
+            }
+    return true;
+}
+
+static void test_empty_cubes(void **state)
+{
+    (void)state;
+    rng_state = 11;
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    for (int k = 0; k < 12; k++) { /* small spheres in a box far from the origin */
+        vec3 centre = uniform_vec(vec3_make(1000, -50, 3), vec3_make(1010, -42, 9));
+        surface_list_add_sphere(&list, (sphere){centre, uniform((real)0.05, (real)0.4)}, 0, k);
+    }
+    fast_grid g;
+    fast_grid_options opt = fast_grid_default_options();
+    opt.density = 40;
+    build_fast(&g, &list, opt);
+    assert_non_null(g.empty);
+    long occupied = 0;
+    for (long c = 0; c < g.n_cells; c++)
+        occupied += g.start[c + 1] > g.start[c];
+    if (occupied == 0)
+        fail_msg("no cell lists a surface (%d x %d x %d cells, 12 spheres): is cell_range still the exercise's stub?",
+                 g.n[0], g.n[1], g.n[2]);
+    const int largest = g.n[0] > g.n[1] ? (g.n[0] > g.n[2] ? g.n[0] : g.n[2]) : (g.n[1] > g.n[2] ? g.n[1] : g.n[2]);
+    long leaps = 0;
+    for (int k = 0; k < g.n[2]; k++)
+        for (int j = 0; j < g.n[1]; j++)
+            for (int i = 0; i < g.n[0]; i++)
+                for (int o = 0; o < 8; o++) {
+                    int side = 0;
+                    while (side <= largest && cube_empty(&g, i, j, k, o, side + 1))
+                        side++;
+                    if (side > largest) /* reaches past the grid on every axis */
+                        side = 255;
+                    long c = i + (long)g.n[0] * (j + (long)g.n[1] * k);
+                    if (g.empty[8 * c + o] != side)
+                        fail_msg("cell (%d, %d, %d), octant %d: empty cube of side %d expected, the grid says %d", i,
+                                 j, k, o, side, g.empty[8 * c + o]);
+                    leaps += side >= 2;
+                }
+    assert_true(leaps > 0); /* the scene leaves room to leap */
+    fast_grid_free(&g);
+    surface_list_free(&list);
+}
+
+static const graded_test tests[] = {
+    GRADED(test_random_scenes, 0),
+    GRADED(test_zero_components, 0),
+    GRADED(test_origins_on_the_grid, 0),
+    GRADED(test_flat_scenes, 0),
+    GRADED(test_huge_among_tiny, 0),
+    GRADED(test_start_inside_spanning_cells, 0),
+    GRADED(test_ties_first_in_list, 0),
+    GRADED(test_empty_and_single, 0),
+    GRADED(test_mailbox_counts, 0),
+    GRADED(test_empty_cubes, 0),
+    GRADED(test_cornell_scenes, 0),
+    GRADED(test_builtin_scenes_as_chapter_10, 0),
+};
+
+SUITE_MAIN("11_grid lab", tests)
