@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "01_camera_rays/pixel.h"
 #include "04_many_shapes/scene_surfaces.h"
 #include "04_many_shapes/shape_knobs.h"
 #include "05_lambert/shading_scene.h"
@@ -100,6 +101,7 @@ int shading_main(const shading_stage *stage, int argc, char **argv)
         .prepare = prepare,
         .sample = shading_sample,
         .release = release,
+        .pixel_to_image = pixel_to_image, /* chapter 01's: the student's own mapping */
     };
     return renderer_main(&r, argc, argv);
 }

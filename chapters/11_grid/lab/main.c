@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "01_camera_rays/pixel.h"
 #include "04_many_shapes/shape_knobs.h"
 #include "10_interpolation/face_query.h"
 #include "11_grid/lab/fast_query.h"
@@ -163,6 +164,7 @@ int main(int argc, char **argv)
         .sample = sample,
         .release = release,
         .report = report,
+        .pixel_to_image = pixel_to_image,
     };
     return renderer_main(&r, argc, argv);
 }
