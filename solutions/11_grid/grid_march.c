@@ -123,12 +123,10 @@ static int cell_of(const grid *g, int a, real x)
     return f >= (real)(g->n[a] - 1) ? g->n[a] - 1 : (int)f;
 }
 
-bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_record *hit, grid_counts *counts)
+/* Visits the cells r pierces, in order, testing each one's surfaces into
+ * *s, until the stop rule ends the march; returns the cells visited. */
+static uint64_t march(const grid *g, search *s, ray r, real t_min, real t_max)
 {
-    search s = {.list = g->list, .r = r, .t_min = t_min, .best_t = t_max, .best = -1};
-    uint64_t cells = 0;
-    for (long u = 0; u < g->n_unbinned; u++)
-        test_surface(&s, g->unbinned[u]);
     /* Rounding moves a computed crossing by a few REAL_EPSILON times the
      * coordinates involved: `reach` bounds that in length, slack_a in t. */
     const real reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + real_fmax(vec3_max_abs(g->lo), vec3_max_abs(g->hi)));
@@ -140,7 +138,8 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
         slack[a] = reach * real_abs(inv_d[a]);
     }
     if (g->n_cells == 0 || !enter_box(g, r, inv_d, slack, &t0, &t1))
-        goto done;
+        return 0;
+    uint64_t cells = 0;
 
     /* snippet: march */
     /* The first cell holds p + t0 d, moved back along the ray by the rounding of that point. */
@@ -157,12 +156,12 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
         cells++;
         long c = m.i[0] + (long)g->n[0] * (m.i[1] + (long)g->n[1] * m.i[2]);
         for (uint32_t e = g->start[c]; e < g->start[c + 1]; e++)
-            test_surface(&s, g->refs[e]);
+            test_surface(s, g->refs[e]);
         /* The cell ends where the ray crosses its nearest boundary. */
         int a = m.next[0] < m.next[1] ? (m.next[0] < m.next[2] ? 0 : 2) : (m.next[1] < m.next[2] ? 1 : 2);
         /* EXERCISE stop: the stop rule (README, "When to stop"): end the march once the best hit
          * lies in this cell, allowing for the boundary's rounding slack; else step to the next cell. */
-        if (s.best_t <= m.next[a] - slack[a])
+        if (s->best_t <= m.next[a] - slack[a])
             break;
         /* STUB
         (void)slack;
@@ -172,8 +171,15 @@ bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_re
             break;
     }
     /* end snippet */
+    return cells;
+}
 
-done:
+bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_record *hit, grid_counts *counts)
+{
+    search s = {.list = g->list, .r = r, .t_min = t_min, .best_t = t_max, .best = -1};
+    for (long u = 0; u < g->n_unbinned; u++)
+        test_surface(&s, g->unbinned[u]);
+    uint64_t cells = march(g, &s, r, t_min, t_max);
     if (counts) {
         counts->cells += cells;
         counts->tests += s.tests;
