@@ -18,7 +18,7 @@ void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
      * Normalize with unit(), which also copes with very large or small vectors; take the cross
      * product of unit(viewDir) and unit(viewUp), not of the raw vectors, whose products can
      * overflow (or underflow to 0) before unit() sees them. */
-    EXERCISE_STUB("01_camera_rays", "camera.c", "basis");
+    EXERCISE_STUB("01_camera_rays", "camera.c", "basis"); /* delete this line when done */
     (void)view_dir;
     (void)view_up;
     *u = vec3_make(0, 0, 0);
@@ -75,14 +75,14 @@ ray camera_ray(const camera *cam, real u, real v)
         /* TODO perspective: perspective projection, "same origin, different directions":
          *     p = e,   d = -d w + us u + vs v   (d: the projection distance; us u + vs v is `offset`)
          * Do not normalize d: then t = 1 is the image plane. */
-        EXERCISE_STUB("01_camera_rays", "camera.c", "perspective");
+        EXERCISE_STUB("01_camera_rays", "camera.c", "perspective"); /* delete this line when done */
         (void)offset;
         r.p = cam->e;
         r.d = vec3_make(0, 0, 0);
     } else {
         /* TODO orthographic: parallel projection, "same direction, different origins":
          *     p = e + us u + vs v,   d = -w */
-        EXERCISE_STUB("01_camera_rays", "camera.c", "orthographic");
+        EXERCISE_STUB("01_camera_rays", "camera.c", "orthographic"); /* delete this line when done */
         r.p = cam->e;
         r.d = vec3_make(0, 0, 0);
     }

@@ -10,7 +10,7 @@ void pixel_to_image(int i, int j, int nx, int ny, real du, real dv, real *u, rea
      * (du, dv) is the sample's place inside the pixel; one sample per pixel takes its centre,
      * du = dv = 0.5, which is the lecture's u = (i + 0.5)/n_x, v = (j + 0.5)/n_y.
      * i counts columns (along u, to the right), j rows (along v, upwards: j = 0 is the bottom row). */
-    EXERCISE_STUB("01_camera_rays", "pixel.c", "pixel");
+    EXERCISE_STUB("01_camera_rays", "pixel.c", "pixel"); /* delete this line when done */
     (void)i;
     (void)j;
     (void)nx;

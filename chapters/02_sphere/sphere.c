@@ -18,7 +18,7 @@ static bool textbook_roots(const sphere *s, ray r, real *t0, real *t1)
      *     f = p - c,  A = d.d,  B = d.f,  C = f.f - R^2,  discriminant B^2 - A C
      *     no root when the discriminant is negative (or NaN: test !(disc >= 0));
      *     else t0 = (-B - sqrt(disc)) / A,  t1 = (-B + sqrt(disc)) / A */
-    EXERCISE_STUB("02_sphere", "sphere.c", "textbook");
+    EXERCISE_STUB("02_sphere", "sphere.c", "textbook"); /* delete this line when done */
     (void)s;
     (void)r;
     *t0 = *t1 = 0;
@@ -43,7 +43,7 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
      *     l = f + t_m d               the perpendicular from c to the line, |l| = l_m
      *     disc = A (R^2 - l.l)        equal to B^2 - A C, without its cancellation             (4)
      * Keep l as a vector: l.l is small when the ray passes near c, B^2 and A C are not. */
-    EXERCISE_STUB("02_sphere", "sphere.c", "robust_discriminant");
+    EXERCISE_STUB("02_sphere", "sphere.c", "robust_discriminant"); /* delete this line when done */
     (void)f;
     (void)B;
     real disc = -1;
@@ -61,7 +61,7 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
      * sign(B) must be +1 or -1, also for B = 0 (a ray whose origin is the point of its line closest to c):
      * a sign(0) = 0 makes q = 0 there, and C / q a division by zero.
      * Which of t0, t1 is nearer depends on the sign of B; sphere_nearest_root() sorts them. */
-    EXERCISE_STUB("02_sphere", "sphere.c", "robust_roots");
+    EXERCISE_STUB("02_sphere", "sphere.c", "robust_roots"); /* delete this line when done */
     (void)A;
     (void)disc;
     *t0 = *t1 = 0;
@@ -105,7 +105,7 @@ vec3 sphere_normal(const sphere *s, vec3 x)
      *     n = (x - c) / |x - c|
      * |x - c| is R up to rounding; dividing by the computed length makes n a unit vector all the same.
      * x - c is never zero at a hit (it has length R), but guard it so that no NaN leaves this function. */
-    EXERCISE_STUB("02_sphere", "sphere.c", "normal");
+    EXERCISE_STUB("02_sphere", "sphere.c", "normal"); /* delete this line when done */
     (void)s;
     (void)x;
     return vec3_make(0, 0, 0);
@@ -121,7 +121,7 @@ bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
      *     the near root when t_min < near < t_max, else the far root when t_min < far < t_max, else none.
      * The window is open: a root equal to t_min or t_max is outside it.  So a ray that starts on the
      * sphere (a root t = 0 with t_min = 0) does not hit it again where it starts. */
-    EXERCISE_STUB("02_sphere", "sphere.c", "nearest");
+    EXERCISE_STUB("02_sphere", "sphere.c", "nearest"); /* delete this line when done */
     (void)t0;
     (void)t1;
     (void)t_min;

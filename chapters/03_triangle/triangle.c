@@ -24,7 +24,7 @@ static inline bool cramer(const triangle *tri, ray r, real t_min, real t_max, tr
      * check's business, in triangle_intersect.)  Hit when t_min < t < t_max and the point
      * is inside, edges included: beta >= 0, gamma >= 0, beta + gamma <= 1.
      * Write the comparisons so that a NaN fails them: !(t > t_min && t < t_max). */
-    EXERCISE_STUB("03_triangle", "triangle.c", "cramer");
+    EXERCISE_STUB("03_triangle", "triangle.c", "cramer"); /* delete this line when done */
     (void)tri;
     (void)r;
     (void)t_min;

@@ -13,7 +13,7 @@ color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)
      * away from the light catches cos(theta) of what it catches facing it)
      * and the point source's falloff (its power spreads over a sphere of area
      * 4 pi r^2).  Multiply channel by channel: color_mul(k_d, I). */
-    EXERCISE_STUB("05_lambert", "lambert.c", "lambert");
+    EXERCISE_STUB("05_lambert", "lambert.c", "lambert"); /* delete this line when done */
     (void)k_d;
     (void)point;
     (void)n;

@@ -12,7 +12,7 @@ bool light_blocked(const tracer *tr, const shading_point *sp, vec3 light_pos, ep
      *     count it: ++rays[RAY_SHADOW];
      *     it is blocked when tr->closest_hit(tr->accel, ray, 0, t_max, &hit)
      *     finds a surface in (0, t_max). */
-    EXERCISE_STUB("06_shadows", "shadow.c", "shadow");
+    EXERCISE_STUB("06_shadows", "shadow.c", "shadow"); /* delete this line when done */
     (void)tr;
     (void)sp;
     (void)light_pos;

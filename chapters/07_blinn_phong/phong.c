@@ -13,7 +13,7 @@ vec3 half_vector(vec3 v, vec3 l)
      * l = -v, the light straight behind the surface seen head-on, v + l is 0
      * and h has no direction: that case never reaches here, since the light
      * is then behind the surface.) */
-    EXERCISE_STUB("07_blinn_phong", "phong.c", "half");
+    EXERCISE_STUB("07_blinn_phong", "phong.c", "half"); /* delete this line when done */
     (void)v;
     return l;
 }
@@ -29,7 +29,7 @@ color blinn_phong_specular(color k_s, real p, vec3 point, vec3 n, vec3 v, const 
      * with r = |light.pos - point|, l = (light.pos - point) / r and
      * h = half_vector(v, l).  real_pow(x, p) is x^p.  Channel by channel:
      * color_mul(k_s, I). */
-    EXERCISE_STUB("07_blinn_phong", "phong.c", "specular");
+    EXERCISE_STUB("07_blinn_phong", "phong.c", "specular"); /* delete this line when done */
     (void)k_s;
     (void)p;
     (void)point;

@@ -39,7 +39,7 @@ color shade_phong(const tracer *tr, const shading_point *sp, int depth, uint64_t
      * skip a light behind the surface without casting a shadow ray
      * (light_in_front, chapter 06), ask light_blocked (chapter 06, with the
      * policy tracer_eps(tr)), and add light_contribution to result. */
-    EXERCISE_STUB("07_blinn_phong", "shade_phong.c", "lights");
+    EXERCISE_STUB("07_blinn_phong", "shade_phong.c", "lights"); /* delete this line when done */
     return result;
 }
 /* end snippet */

@@ -12,7 +12,7 @@ vec3 reflect(vec3 d, vec3 n)
      *     written for the ray's direction d = -v:
      *         r = d - 2 (d . n) n
      *     n is a unit vector; d may have any length (r gets the same one). */
-    EXERCISE_STUB("08_mirrors", "mirror.c", "reflect");
+    EXERCISE_STUB("08_mirrors", "mirror.c", "reflect"); /* delete this line when done */
     (void)n;
     return d;
 }
@@ -31,7 +31,7 @@ color mirror_radiance(const tracer *tr, const shading_point *sp, color k_m, int 
      *     - count it: ++rays[RAY_REFLECTED];
      *     - and trace it, one level deeper: trace(&next.tr, ray, 0,
      *       REAL_INFINITY, depth + 1, rays). */
-    EXERCISE_STUB("08_mirrors", "mirror.c", "recursion");
+    EXERCISE_STUB("08_mirrors", "mirror.c", "recursion"); /* delete this line when done */
     (void)tr;
     (void)sp;
     (void)k_m;

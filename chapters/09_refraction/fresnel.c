@@ -13,7 +13,7 @@ real fresnel_exact(real cos_i, real cos_t, real eta_i, real eta_t)
      *     r_s = (eta_i cos_i - eta_t cos_t) / (eta_i cos_i + eta_t cos_t)
      *     r_p = (eta_t cos_i - eta_i cos_t) / (eta_t cos_i + eta_i cos_t)
      *     R = (r_s^2 + r_p^2) / 2 */
-    EXERCISE_STUB("09_refraction", "fresnel.c", "fresnel");
+    EXERCISE_STUB("09_refraction", "fresnel.c", "fresnel"); /* delete this line when done */
     (void)cos_i;
     (void)cos_t;
     (void)eta_i;
@@ -30,7 +30,7 @@ real fresnel_schlick(real cos_i, real cos_t, real eta_i, real eta_t)
      *     R = R_0 + (1 - R_0) (1 - cos)^5
      *     with cos the cosine on the side of the smaller index: cos_i when
      *     eta_i <= eta_t (into glass), cos_t otherwise (out of it). */
-    EXERCISE_STUB("09_refraction", "fresnel.c", "schlick");
+    EXERCISE_STUB("09_refraction", "fresnel.c", "schlick"); /* delete this line when done */
     (void)cos_i;
     (void)cos_t;
     (void)eta_i;

@@ -12,7 +12,7 @@ bool refract(vec3 d, vec3 n, real eta_i, real eta_t, vec3 *T, real *cos_t)
      *     reflection): return false;
      *     otherwise cos(theta_t) = sqrt(1 - |S_t|^2), C_t = -cos(theta_t) n,
      *     *T = C_t + S_t, *cos_t = cos(theta_t), and return true. */
-    EXERCISE_STUB("09_refraction", "refract.c", "refract");
+    EXERCISE_STUB("09_refraction", "refract.c", "refract"); /* delete this line when done */
     (void)n;
     (void)eta_i;
     (void)eta_t;

@@ -13,7 +13,7 @@ int texel_index(texture_kind kind, long long i, int n)
      *     RepeatTexture: i mod n, in [0, n) also for negative i
      *         (C's % keeps the sign of i: -1 % 4 is -1, which must become 3);
      *     ClampTexture: i clamped to [0, n - 1]. */
-    EXERCISE_STUB("10_interpolation", "texture.c", "wrap");
+    EXERCISE_STUB("10_interpolation", "texture.c", "wrap"); /* delete this line when done */
     (void)kind;
     (void)i;
     (void)n;
@@ -50,7 +50,7 @@ color texture_nearest(const scene_texture *tex, mesh_uv uv)
      *     column, row).  (For x < -1/2 dropping the fraction rounds up, not
      *     down: texel 0 is read from x = -3/2 to 1/2, a whole texel more
      *     than the others.  The course's images show it, so it stays.) */
-    EXERCISE_STUB("10_interpolation", "texture.c", "nearest");
+    EXERCISE_STUB("10_interpolation", "texture.c", "nearest"); /* delete this line when done */
     (void)x;
     (void)y;
     return texture_image_texel(img, 0, 0);
@@ -70,7 +70,7 @@ color texture_bilinear(const scene_texture *tex, mesh_uv uv)
      *         top    = (1 - s) T(x0, y0)     + s T(x0 + 1, y0)
      *         bottom = (1 - s) T(x0, y0 + 1) + s T(x0 + 1, y0 + 1)
      *         result = (1 - t) top + t bottom */
-    EXERCISE_STUB("10_interpolation", "texture.c", "bilinear");
+    EXERCISE_STUB("10_interpolation", "texture.c", "bilinear"); /* delete this line when done */
     (void)x;
     (void)y;
     return texture_image_texel(img, 0, 0);

@@ -176,7 +176,7 @@ static inline bool dda_step(const grid *g, dda *m, int a, const real p[3], const
      *              (crossing(g, a, plane, p, inv_d) computes it)
      * Compute next_a from the plane each time rather than adding a fixed
      * t step: the sum would gather one rounding per cell. */
-    EXERCISE_STUB("11_grid", "grid_march.c", "dda_step");
+    EXERCISE_STUB("11_grid", "grid_march.c", "dda_step"); /* delete this line when done */
     (void)g;
     (void)m;
     (void)a;
