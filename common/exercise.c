@@ -32,7 +32,7 @@ void exercise_announce(const char *chapter, const char *file, const char *exerci
      * tools/grade.c shows the line up to "); it returns". */
     fprintf(stderr,
             "chapter %.*s: %s is still an exercise (TODO %s in chapters/%s/%s); it returns a placeholder "
-            "(chapters/%s/README.md, Exercises)\n",
+            "until you write it and delete the EXERCISE_STUB line (chapters/%s/README.md, Exercises)\n",
             number, chapter, function, exercise, chapter, file, chapter);
 }
 
@@ -54,7 +54,8 @@ void exercise_report(FILE *out, const char *name)
         return;
     /* Sorted, so the line does not depend on which thread ran a stub first. */
     qsort(noted, (size_t)n, sizeof noted[0], by_place);
-    fprintf(out, "%s: placeholders of unfinished exercises (see chapters/NN_name/README.md, Exercises):", name);
+    fprintf(out, "%s: placeholders of unfinished exercises (each says so until its EXERCISE_STUB line is deleted; "
+                 "see chapters/NN_name/README.md, Exercises):", name);
     for (int k = 0; k < n; k++)
         fprintf(out, " %s/%s:%s", noted[k].chapter, noted[k].file, noted[k].function);
     fprintf(out, "\n");

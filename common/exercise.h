@@ -5,16 +5,20 @@
  *
  *     EXERCISE_STUB("01_camera_rays", "camera.c", "perspective");
  *
+ * followed by a comment that tells the student to delete the line when done.
+ *
  * In a test suite the first call prints one line on stderr, for example
  *
  *     chapter 01: camera_ray is still an exercise (TODO perspective in chapters/01_camera_rays/camera.c);
- *     it returns a placeholder (chapters/01_camera_rays/README.md, Exercises)
+ *     it returns a placeholder until you write it and delete the EXERCISE_STUB line
+ *     (chapters/01_camera_rays/README.md, Exercises)
  *
  * so that a failed test is never a mystery.  A renderer (renderer_main)
  * calls exercise_defer() first: the stubs are then only noted, and
  * exercise_report() prints one line naming all that ran, once the image is
  * done.  Later calls, from any thread, print nothing.  Solutions never call
- * it: a finished exercise is silent.
+ * it: a finished exercise is silent once the student has deleted the line,
+ * as its comment says.
  */
 #ifndef RT_EXERCISE_H
 #define RT_EXERCISE_H

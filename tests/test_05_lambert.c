@@ -48,9 +48,11 @@ static void test_irradiance_facing(void **state)
     const char *in = describe("lambert(k_d = (0.3, 0.2, 0.7), light 2.5 straight above the point, I = (10, 20, 5))");
     const suspect sr[] = {
         {0.3 * 10, "no falloff: divide by r^2, the squared distance to the light"},
-        {0.3 * 10 / 2.5, "divided by r, not r^2: the light spreads over a sphere of area 4 pi r^2"},
-        {0.3 * 10 * 2.5 / 6.25, "l not normalized: n . (light.pos - point) is r times the cosine"},
+        {0.3 * 10 / 2.5, "divided by r, not r^2 (the light spreads over a sphere of area 4 pi r^2), or l not "
+                         "normalized (n . (light.pos - point) is r times the cosine)"},
+        {0, "nothing from a light straight above: l points from the point towards the light, light.pos - point"},
         {10 / 6.25, "k_d missing: the surface reflects k_d of the irradiance"},
+        {0.3 / acos(-1.0) * 10 / 6.25, "divided by pi: the scene's diffuseColor is k_d = R / pi already"},
         {(0.3 + 10) / 6.25, "k_d added to I: multiply them, channel by channel (color_mul)"},
     };
     assert_close_why(0.3 * 10 / 6.25, L.r, FAR_TOL(0.5, 2.5), describe("%s: red", in),
@@ -79,7 +81,9 @@ static void test_cosine_law(void **state)
         const suspect sc[] = {
             {0.25 * cos(theta), "negative: clamp the cosine, max(0, n . l): a light behind the surface gives nothing"},
             {0.25, "no cosine: the irradiance falls with cos(theta) = n . l as the surface tilts away"},
-            {0.25 * 9 / 3 * fmax(0, cos(theta)), "divided by r, not r^2"},
+            {0.25 * 9 / 3 * fmax(0, cos(theta)), "divided by r, not r^2, or l not normalized"},
+            {0.25 * fabs(cos(theta)), "|n . l|: a light behind the surface gives nothing, max(0, n . l)"},
+            {0.25 * fmax(0, -cos(theta)), "l points away from the light: l = (light.pos - point) / r"},
         };
         assert_close_why(expected, L.r, FAR_TOL(0.25, 3),
                          describe("lambert(k_d = 0.25, I = 9, light 3 away at %g degrees from n): red", degrees[k]),

@@ -113,6 +113,116 @@ static void test_light_on_a_surface(void **state)
     scene_free(&desc);
 }
 
+/* A light behind the surface, as its shading normal sees it, is blocked by
+ * the surface itself, and no shadow ray is cast.  Seen from below, the
+ * floor's shading normal is -y (turned towards the viewer) while its
+ * geometric normal stays +y: a light below it is then in front. */
+static void test_light_behind_the_surface(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    add_floor(&desc);
+    const vec3 below = vec3_add(spot, vec3_make((real)1.25, -7, (real)0.75)); /* an eye under the floor */
+    const vec3 under = vec3_add(spot, vec3_make(1, -3, 1)), over = vec3_add(spot, vec3_make(1, 3, 1));
+    const char *side = "the side was judged by the geometric normal hit.normal: use the shading normal sp->n, which "
+                       "faces the viewer";
+    const struct {
+        vec3 eye, light;
+        bool blocked;
+        const char *what, *hint;
+    } cases[] = {
+        {eye, under, true, "a light below the floor, the eye above it",
+         "a light behind the surface is blocked by the surface itself: n . (light_pos - point) <= 0"},
+        {below, under, false, "a light below the floor, the eye below it too", side},
+        {below, over, true, "a light above the floor, the eye below it", side},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        shading_point sp;
+        shading_view *view = shade_at(&desc, cases[k].eye, spot, &sp);
+        uint64_t rays[RAY_KINDS] = {0};
+        bool blocked = light_blocked(&view->tr, &sp, cases[k].light, EPS_BOUND, rays);
+        if (blocked != cases[k].blocked)
+            fail_msg("light_blocked with %s: %s, expected %s\n    likely mistake: %s", cases[k].what,
+                     blocked ? "blocked" : "not blocked", cases[k].blocked ? "blocked" : "not blocked", cases[k].hint);
+        if (rays[RAY_SHADOW] != (cases[k].blocked ? 0u : 1u))
+            fail_msg("light_blocked with %s: %llu shadow rays counted, expected %d\n    likely mistake: %s",
+                     cases[k].what, (unsigned long long)rays[RAY_SHADOW], cases[k].blocked ? 0 : 1,
+                     cases[k].blocked ? "no shadow ray towards a light behind the surface: the surface blocks it"
+                                      : "count the one shadow ray cast");
+        shading_release(view);
+    }
+    scene_free(&desc);
+}
+
+/* A closest-hit query that records the segment it is asked about and finds nothing. */
+static struct {
+    ray r;
+    real t_min, t_max;
+    int calls;
+} asked;
+
+static bool record_query(const void *accel, ray r, real t_min, real t_max, hit_record *hit)
+{
+    (void)accel;
+    (void)hit;
+    asked.r = r;
+    asked.t_min = t_min;
+    asked.t_max = t_max;
+    ++asked.calls;
+    return false;
+}
+
+/* The shadow ray is the segment spawn_ray_to gives with the caller's policy:
+ * the same start and the same end, whatever the length of its direction.
+ * Both ends are computed as spawn_ray_to computes them, or from a direction
+ * scaled by the student, a few roundings of coordinates of size ~30 apart. */
+static void test_shadow_ray_is_the_segment(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    add_floor(&desc);
+    shading_point sp;
+    shading_view *view = shade_at(&desc, eye, spot, &sp);
+    tracer tr = view->tr;
+    tr.closest_hit = record_query;
+    const vec3 light = vec3_add(spot, vec3_make((real)1.5, 6, (real)-0.75));
+    for (int p = 0; p < 3; p++) {
+        real t_end;
+        ray expected = spawn_ray_to(&sp, light, policies[p], &t_end);
+        uint64_t rays[RAY_KINDS] = {0};
+        asked.calls = 0;
+        light_blocked(&tr, &sp, light, policies[p], rays);
+        const char *in = describe("light_blocked(policy %s, a light 6 above the floor point)", eps_policy_names[p]);
+        if (asked.calls != 1)
+            fail_msg("%s: tr->closest_hit asked %d times, expected once\n    likely mistake: one shadow ray, "
+                     "through the tracer's query tr->closest_hit", in, asked.calls);
+        suspect_vec3 starts[3 + 1];
+        int n = 0;
+        starts[n++] = (suspect_vec3){sp.hit.point, "the ray starts at the point itself: leave the surface by the "
+                                                   "policy given (spawn_ray_to with `policy`)"};
+        for (int q = 0; q < 3; q++)
+            if (q != p) {
+                real unused;
+                starts[n++] = (suspect_vec3){spawn_ray_to(&sp, light, policies[q], &unused).p,
+                                             "another policy than the one given: pass `policy` on"};
+            }
+        assert_vec3_why(expected.p, ray_at(asked.r, asked.t_min), TOL(30), describe("%s: where the segment starts", in),
+                        "the segment spawn_ray_to gives, from t = 0", starts, n);
+        const suspect_vec3 ends[] = {
+            {light, "the segment reaches the light: end it at the t_max that spawn_ray_to gives, a little before"},
+            {sp.hit.point, "the segment runs from the light to the point: the shadow ray goes towards the light"},
+            {ray_at((ray){expected.p, vec3_normalize(expected.d)}, t_end),
+             "d normalized, the window kept: the light is at t = 1 only with spawn_ray_to's own d"},
+        };
+        assert_vec3_why(ray_at(expected, t_end), ray_at(asked.r, asked.t_max), TOL(30),
+                        describe("%s: where the segment ends", in), "at t_max, as spawn_ray_to gives it", ends, 3);
+    }
+    shading_release(view);
+    scene_free(&desc);
+}
+
 /* ---- the shade function: only the shadow rays that matter ------------------------------------- */
 
 static void test_shadow_rays_only_when_needed(void **state)
@@ -228,6 +338,8 @@ static void test_no_acne_no_leak(void **state)
 static const graded_test tests[] = {
     GRADED(test_occluder_between_beyond_behind, 4),
     GRADED(test_light_on_a_surface, 3),
+    GRADED(test_light_behind_the_surface, 2),
+    GRADED(test_shadow_ray_is_the_segment, 2),
     GRADED(test_shadow_rays_only_when_needed, 2),
     GRADED(test_no_acne_no_leak, 3),
     GRADED(test_spawn_ray_offsets, 0),    /* handed out complete: no points */

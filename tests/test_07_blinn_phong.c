@@ -28,34 +28,56 @@ static vec3 at_angle(vec3 n, vec3 towards, double theta)
     return vec3_add(vec3_scale(n, (real)cos(theta)), vec3_scale(side, (real)sin(theta)));
 }
 
-/* ---- the half vector ------------------------------------------------------------------------ */
+/* ---- the half vector, inside the term ------------------------------------------------------ */
 
-/* In the mirror configuration (l is v reflected about n) the half vector is
- * n; in general it is a unit vector at equal angles from v and l. */
+/* k_s max(0, n . h)^p I / r^2 for k_s = 0.9, I = 10, r = 2.5 (k_s I / r^2 = 1.44), with n . h = c. */
+static double specular_of(double c, double p) { return 0.9 * 10 / 6.25 * pow(fmax(0, c), p); }
+
+/* In the mirror configuration (the viewer at l mirrored about n) the half
+ * vector is n, so every exponent gives k_s I / r^2.  The light is 2.5 away at
+ * theta from n, the viewer at -theta.  A half vector that is not the unit
+ * bisector of the two unit vectors v and l gives another n . h. */
 static void test_half_vector(void **state)
 {
     (void)state;
     vec3 n = unit_normal(), side = {1, 0.25, 0};
+    color k_s = {0.9, 0.7, 0.3};
+    const double p = 20;
     for (double deg = 5; deg < 90; deg += 21) {
-        vec3 v = at_angle(n, side, deg * pi / 180);
-        vec3 l = at_angle(n, side, -deg * pi / 180); /* the mirror direction */
-        const suspect_vec3 sh[] = {
-            {vec3_add(v, l), "not normalized: h = (v + l) / |v + l|"},
-            {vec3_scale(vec3_add(v, l), 0.5), "halved, not normalized: |v + l| / 2 is cos(angle / 2), not 1"},
-            {l, "h is l: the half vector lies half-way between v and l"},
-            {v, "h is v: the half vector lies half-way between v and l"},
+        vec3 l = at_angle(n, side, deg * pi / 180), v = at_angle(n, side, -deg * pi / 180);
+        scene_light light = {.position = vec3_add(point, vec3_scale(l, 2.5)), .intensity = {10, 10, 10}};
+        color L = blinn_phong_specular(k_s, (real)p, point, n, v, &light, PHONG_COURSE);
+        double c = cos(deg * pi / 180);
+        const suspect sh[] = {
+            {specular_of(2 * c, p), "h not normalized: h = (v + l) / |v + l|, a unit vector"},
+            {specular_of(c, p), "n . h is cos(theta), not 1: h halved ((v + l) / 2 is not a unit vector), or h "
+                                "taken as l or v; h is the unit bisector (v + l) / |v + l|"},
+            {specular_of(vec3_dot(n, vec3_normalize(vec3_add(v, vec3_scale(l, 2.5)))), p),
+             "l not normalized before the bisector: l = (light.pos - point) / r"},
+            {0, "no highlight in the mirror configuration: l points from the point towards the light, and h is "
+                "the sum v + l, not the difference"},
         };
-        assert_vec3_why(n, half_vector(v, l), TOL(1),
-                        describe("half_vector(v, l) with l the mirror of v about n, %g degrees from it", deg),
-                        "h = (v + l) / |v + l|, which is n in the mirror configuration", sh, sizeof sh / sizeof sh[0]);
+        assert_close_why(specular_of(1, p), L.r, FAR_TOL(1.44, 2.5) * p,
+                         describe("blinn_phong_specular(k_s.r = 0.9, p = 20, I = 10, r = 2.5, course form, the viewer "
+                                  "at the mirror of the light, %g degrees from n): red", deg),
+                         "k_s max(0, n . h)^p I / r^2 with h = (v + l) / |v + l|, which is n here", sh,
+                         sizeof sh / sizeof sh[0]);
     }
-    vec3 v = vec3_normalize(vec3_make(0.3, 0.9, -0.2)), l = vec3_normalize(vec3_make(-0.7, 0.1, 0.5));
-    vec3 h = half_vector(v, l);
-    assert_close(1, vec3_length(h), TOL(1));
-    assert_close(vec3_dot(h, v), vec3_dot(h, l), TOL(1));
-    assert_true(vec3_dot(h, v) > 0);
-    /* the bisector of v and l lies in their plane */
-    assert_close(0, vec3_dot(h, vec3_cross(v, l)), TOL(1));
+    /* A fractional exponent: the viewer 20 degrees further from the mirror, so n . h = cos(10 degrees), and
+     * p = 12.5: cos(10 deg)^12.5, not the 12th or 13th power (0.6 % apart). */
+    vec3 l = at_angle(n, side, 40 * pi / 180), v = at_angle(n, side, -60 * pi / 180);
+    scene_light light = {.position = vec3_add(point, vec3_scale(l, 2.5)), .intensity = {10, 10, 10}};
+    double c = cos(10 * pi / 180);
+    const suspect sp[] = {
+        {specular_of(c, 12), "an integer power: p = 12.5 is not an integer; real_pow(x, p)"},
+        {specular_of(c, 13), "an integer power rounded up: p = 12.5 is not an integer; real_pow(x, p)"},
+    };
+    assert_close_why(specular_of(c, 12.5),
+                     blinn_phong_specular(k_s, (real)12.5, point, n, v, &light, PHONG_COURSE).r,
+                     FAR_TOL(1.44, 2.5) * 12.5,
+                     "blinn_phong_specular(k_s.r = 0.9, p = 12.5, I = 10, r = 2.5, course form, n . h = cos(10 "
+                     "degrees)): red",
+                     "k_s max(0, n . h)^p I / r^2 for a fractional p", sp, 2);
 }
 
 /* ---- the specular term ------------------------------------------------------------------- */
@@ -273,6 +295,7 @@ static void test_two_lights_add(void **state)
         {desc.ambient.r + La.r, "only the first light: loop over all n_lights"},
         {desc.ambient.r + Lb.r, "only the last light: add (+=) each contribution to result, do not replace it"},
         {La.r + Lb.r, "ambient missing: start from result = ambient"},
+        {2 * desc.ambient.r + La.r + Lb.r, "ambient added with each light: it is added once"},
     };
     assert_close_why(desc.ambient.r + La.r + Lb.r, both.r, TOL(1),
                      describe("shade_phong: a Phong floor point, ambient 0.02, two lights in front, nothing between"),
@@ -323,7 +346,7 @@ static void test_ambient_and_lights_behind(void **state)
     assert_close(desc.ambient.g, c.g, 0);
     assert_close(desc.ambient.b, c.b, 0);
     check_shadow_rays(0, rays[RAY_SHADOW], "shade_phong: both lights behind the floor",
-                      "a light behind the surface (light_in_front false) casts no shadow ray");
+                      "a light behind the surface casts no shadow ray: ask light_blocked, which answers it without one");
 
     /* a light in the mirror direction of the eye: Lambert only, one shadow ray */
     vec3 mirror = vec3_sub(eye, spot);
@@ -343,7 +366,7 @@ static void test_ambient_and_lights_behind(void **state)
 /* The floor seen from below, its back face: the shading normal n is turned
  * towards the viewer (-y), so a light below the floor lights the point and a
  * light above it is behind the surface: no shadow ray, nothing added (chapter
- * 05's rule, through light_in_front, which looks at n, not the geometric
+ * 05's rule, through light_blocked, which looks at n, not the geometric
  * normal +y). */
 static void test_back_face_lights(void **state)
 {
@@ -367,7 +390,7 @@ static void test_back_face_lights(void **state)
     assert_true(L.r > 0.01);
     const suspect sf[] = {
         {desc.ambient.r, "the light below was skipped: in front means n . l > 0 for the shading normal n "
-                         "(light_in_front), not the geometric normal hit.normal"},
+                         "(light_blocked judges it so), not the geometric normal hit.normal"},
     };
     assert_close_why(desc.ambient.r + L.r, c.r, TOL(1),
                      describe("shade_phong: the back of a Phong floor seen from below, one light below it, one "
@@ -376,7 +399,7 @@ static void test_back_face_lights(void **state)
                      sizeof sf / sizeof sf[0]);
     assert_close(desc.ambient.b + L.b, c.b, TOL(1));
     check_shadow_rays(1, rays[RAY_SHADOW], "shade_phong: the back of the floor, one light below it, one above it",
-                      "a shadow ray for the light in front of the shading normal only (light_in_front)");
+                      "a shadow ray for the light in front of the shading normal only (light_blocked judges it so)");
     scene_free(&desc);
 }
 

@@ -13,11 +13,15 @@
 #
 # The skeleton keeps the EXERCISE comment (as "TODO name: ..."), drops the
 # solution's code, and puts the STUB lines in its place as live code, after
-# a line EXERCISE_STUB("NN_name", "FILE.c", "name"); (common/exercise.h),
-# which says once on stderr that the exercise is still to do.  A file that
+# a line EXERCISE_STUB("NN_name", "FILE.c", "name"); /* delete ... */
+# (common/exercise.h), which says once on stderr that the exercise is still
+# to do; its comment tells the student to delete the line with the stub.  A file that
 # has exercises also gets #include "exercise.h" after its first #include.
 # Everything outside exercises is copied unchanged.
-BEGIN { state = "copy"; n = 0; exercises = 0; name = "" }
+BEGIN {
+    state = "copy"; n = 0; exercises = 0; name = ""
+    notice = "/* delete this line when done */"
+}
 
 # Keeps the skeleton's lines until the end, to add the #include.
 function out(line) { lines[++n] = line }
@@ -45,7 +49,7 @@ state == "comment" {
 }
 state == "solution" && /^[ \t]*\/\* STUB[ \t]*$/ {
     match($0, /^[ \t]*/)
-    out(substr($0, 1, RLENGTH) "EXERCISE_STUB(\"" chapter "\", \"" file "\", \"" name "\");")
+    out(substr($0, 1, RLENGTH) "EXERCISE_STUB(\"" chapter "\", \"" file "\", \"" name "\"); " notice)
     state = "stub"
     next
 }

@@ -46,7 +46,7 @@ function region(path, name, lang,    line, depth, found, n, k, lines, indent, le
             if (--depth == 0) break
             continue
         }
-        if (line ~ /^[ \t]*EXERCISE_STUB\(.*\);[ \t]*$/) continue
+        if (line ~ /^[ \t]*EXERCISE_STUB\(.*\);[ \t]*(\/\*.*\*\/)?[ \t]*$/) continue
         lines[++n] = line
     }
     close(path)

@@ -11,14 +11,9 @@ static vec3 unit(vec3 a) { return vec3_normalize(vec3_scale(a, 1 / vec3_max_abs(
 /* snippet: basis */
 void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
 {
-    /* TODO basis: the camera's orthonormal basis (lecture, "Specifying views"; <camera> in docs/scenes.md):
-     *     w = -viewDir / |viewDir|
-     *     u = (viewDir x viewUp) / |viewDir x viewUp|
-     *     v = w x u
-     * Normalize with unit(), which also copes with very large or small vectors; take the cross
-     * product of unit(viewDir) and unit(viewUp), not of the raw vectors, whose products can
-     * overflow (or underflow to 0) before unit() sees them. */
-    EXERCISE_STUB("01_camera_rays", "camera.c", "basis");
+    /* TODO basis: the orthonormal basis u (right), v (up), w (backwards) from viewDir and viewUp
+     * (README, "The basis", which also says which products can overflow and how unit() avoids it). */
+    EXERCISE_STUB("01_camera_rays", "camera.c", "basis"); /* delete this line when done */
     (void)view_dir;
     (void)view_up;
     *u = vec3_make(0, 0, 0);
@@ -65,27 +60,12 @@ bool camera_from_scene(camera *cam, const scene *desc, char *err, size_t err_siz
 /* snippet: camera_ray */
 ray camera_ray(const camera *cam, real u, real v)
 {
-    /* Where (u, v) lies on the image rectangle, in the basis u, v, centred
-     * on the view direction: from -width/2 to width/2, -height/2 to height/2. */
-    real us = (u - (real)0.5) * cam->width;
-    real vs = (v - (real)0.5) * cam->height;
-    vec3 offset = vec3_add(vec3_scale(cam->u, us), vec3_scale(cam->v, vs));
-    ray r;
-    if (cam->kind == CAMERA_PERSPECTIVE) {
-        /* TODO perspective: perspective projection, "same origin, different directions":
-         *     p = e,   d = -d w + us u + vs v   (d: the projection distance; us u + vs v is `offset`)
-         * Do not normalize d: then t = 1 is the image plane. */
-        EXERCISE_STUB("01_camera_rays", "camera.c", "perspective");
-        (void)offset;
-        r.p = cam->e;
-        r.d = vec3_make(0, 0, 0);
-    } else {
-        /* TODO orthographic: parallel projection, "same direction, different origins":
-         *     p = e + us u + vs v,   d = -w */
-        EXERCISE_STUB("01_camera_rays", "camera.c", "orthographic");
-        r.p = cam->e;
-        r.d = vec3_make(0, 0, 0);
-    }
+    /* TODO rays: the eye ray through (u, v), for both kinds of camera: first the point of the image
+     * rectangle that (u, v) names, then the ray of the projection (README, "The rays"). */
+    EXERCISE_STUB("01_camera_rays", "camera.c", "rays"); /* delete this line when done */
+    (void)u;
+    (void)v;
+    ray r = {cam->e, vec3_make(0, 0, 0)};
     return r;
 }
 /* end snippet */

@@ -14,11 +14,9 @@
  * Returns false when the discriminant is negative (the ray misses). */
 static bool textbook_roots(const sphere *s, ray r, real *t0, real *t1)
 {
-    /* TODO textbook: the lecture's quadratic formula (2), "Ray-sphere intersection: algebraic".
-     *     f = p - c,  A = d.d,  B = d.f,  C = f.f - R^2,  discriminant B^2 - A C
-     *     no root when the discriminant is negative (or NaN: test !(disc >= 0));
-     *     else t0 = (-B - sqrt(disc)) / A,  t1 = (-B + sqrt(disc)) / A */
-    EXERCISE_STUB("02_sphere", "sphere.c", "textbook");
+    /* TODO textbook: both roots of the quadratic (1) by the lecture's formula (2), or false when it has
+     * no real root (README, "The equations"). */
+    EXERCISE_STUB("02_sphere", "sphere.c", "textbook"); /* delete this line when done */
     (void)s;
     (void)r;
     *t0 = *t1 = 0;
@@ -38,30 +36,17 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     vec3 f = vec3_sub(r.p, s->center);
     real A = vec3_dot(r.d, r.d);
     real B = vec3_dot(r.d, f);
-    /* TODO robust_discriminant: the discriminant from the geometric form, "Ray-sphere intersection: geometric".
-     *     t_m = -B / A                the parameter of the point of the line closest to c      (3)
-     *     l = f + t_m d               the perpendicular from c to the line, |l| = l_m
-     *     disc = A (R^2 - l.l)        equal to B^2 - A C, without its cancellation             (4)
-     * Keep l as a vector: l.l is small when the ray passes near c, B^2 and A C are not. */
-    EXERCISE_STUB("02_sphere", "sphere.c", "robust_discriminant");
+    /* TODO robust_discriminant: the discriminant of (1) by the geometric form (3)-(4) (README, "The
+     * equations" and "Why two formulas"). */
+    EXERCISE_STUB("02_sphere", "sphere.c", "robust_discriminant"); /* delete this line when done */
     (void)f;
     (void)B;
     real disc = -1;
     if (!(disc >= 0)) /* a miss, or NaN from d = 0 */
         return false;
-    /* TODO robust_roots: the stable pair of roots (5)
-     *     q = -(B + sign(B) sqrt(disc))    B and sign(B) sqrt(disc) have the same sign: no cancellation
-     *     t0 = q / A,  t1 = C / q          (C = f.f - R^2; when q = 0 both roots are 0: t1 = t0)
-     *     |t1| at most sqrt(|C| / A)       (else t1 = that, with t1's sign)                      (6)
-     * (6): q^2 >= A |C| in exact arithmetic (q^2 >= B^2 >= A C, or q^2 >= disc >= -A C), so |C / q|
-     * is at most sqrt(|C| / A).  Rounding breaks that by a few ulps where it is nearly tight, and
-     * without limit where B, disc and C are all rounding noise (a ray along the tangent at a point
-     * of the sphere): C / q is then noise of any size, a hit far from the sphere.  Compare t1^2 A
-     * with |C| (no square root unless it is too large).
-     * sign(B) must be +1 or -1, also for B = 0 (a ray whose origin is the point of its line closest to c):
-     * a sign(0) = 0 makes q = 0 there, and C / q a division by zero.
-     * Which of t0, t1 is nearer depends on the sign of B; sphere_nearest_root() sorts them. */
-    EXERCISE_STUB("02_sphere", "sphere.c", "robust_roots");
+    /* TODO robust_roots: the stable pair of roots (5) with the bound (6) on t1 (README, "The
+     * equations", "Stable roots"; the Exercises section warns about B = 0). */
+    EXERCISE_STUB("02_sphere", "sphere.c", "robust_roots"); /* delete this line when done */
     (void)A;
     (void)disc;
     *t0 = *t1 = 0;
@@ -101,11 +86,9 @@ bool sphere_roots(const sphere *s, ray r, sphere_formula formula, real *t0, real
 /* snippet: normal */
 vec3 sphere_normal(const sphere *s, vec3 x)
 {
-    /* TODO normal: the outward unit normal at the hit point x:
-     *     n = (x - c) / |x - c|
-     * |x - c| is R up to rounding; dividing by the computed length makes n a unit vector all the same.
-     * x - c is never zero at a hit (it has length R), but guard it so that no NaN leaves this function. */
-    EXERCISE_STUB("02_sphere", "sphere.c", "normal");
+    /* TODO normal: the outward unit normal at the hit point x (README, "Exercises": why not divide
+     * by R), never NaN. */
+    EXERCISE_STUB("02_sphere", "sphere.c", "normal"); /* delete this line when done */
     (void)s;
     (void)x;
     return vec3_make(0, 0, 0);
@@ -115,13 +98,9 @@ vec3 sphere_normal(const sphere *s, vec3 x)
 /* snippet: nearest */
 bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
 {
-    /* TODO nearest: the nearest root inside the open window (t_min, t_max), the lecture's
-     * s.intersect(ray, tMin, tMax):
-     *     near = min(t0, t1), far = max(t0, t1)        (the formulas do not sort them)
-     *     the near root when t_min < near < t_max, else the far root when t_min < far < t_max, else none.
-     * The window is open: a root equal to t_min or t_max is outside it.  So a ray that starts on the
-     * sphere (a root t = 0 with t_min = 0) does not hit it again where it starts. */
-    EXERCISE_STUB("02_sphere", "sphere.c", "nearest");
+    /* TODO nearest: the nearest of the two roots inside the open window (t_min, t_max), the
+     * lecture's s.intersect(ray, tMin, tMax) (README, "The code"). */
+    EXERCISE_STUB("02_sphere", "sphere.c", "nearest"); /* delete this line when done */
     (void)t0;
     (void)t1;
     (void)t_min;

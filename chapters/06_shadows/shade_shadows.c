@@ -17,7 +17,7 @@ color shade_shadows(const tracer *tr, const shading_point *sp, int depth, uint64
     if (shader->kind == SHADER_RGB_NORMALS || tr->desc->n_lights == 0)
         return shade_lambert(tr, sp, depth, rays); /* nothing to shadow */
     const scene_light *light = &tr->desc->lights[0];
-    if (!light_in_front(sp, light) || light_blocked(tr, sp, light->position, tracer_eps(tr), rays))
+    if (light_blocked(tr, sp, light->position, tracer_eps(tr), rays)) /* behind the surface, or a shadow */
         return color_make(0, 0, 0);
     return lambert(shader->diffuse_color, sp->hit.point, sp->n, light);
 }

@@ -12,7 +12,7 @@
  * Still the scene's first light only (chapter 07 loops over all of them).  A
  * shadow ray is cast only when it can change the answer: not for RGBNormals,
  * not without a light, not when the light is behind the surface (n . l <= 0,
- * where the Lambert term is 0 anyway).
+ * where the Lambert term is 0 anyway: light_blocked says so without a ray).
  */
 #ifndef CH06_SHADE_SHADOWS_H
 #define CH06_SHADE_SHADOWS_H

@@ -7,7 +7,8 @@
  *     if (shadRay not blocked) ... compute shading
  *
  * The shadow ray is a segment from the point to the light: a surface beyond
- * the light does not block it, nor does the surface the point is on.  It
+ * the light does not block it, nor does the surface the point is on, unless
+ * the light is behind that surface.  It
  * asks the tracer's closest-hit query (whatever it is: chapter 04's list,
  * chapter 11's grid) with the t range cut down to the segment.
  */
@@ -18,9 +19,11 @@
 
 #include "06_shadows/spawn.h"
 
-/* True when a surface of tr's scene lies on the segment from sp's surface to
- * light_pos, the segment built by spawn_ray_to with `policy`.  Casts one
- * shadow ray and counts it in rays[RAY_SHADOW]. */
+/* True when the light at light_pos cannot light sp's point: it is behind the
+ * surface (n . (light_pos - point) <= 0 for the shading normal n; no ray is
+ * cast), or a surface of tr's scene lies on the segment from sp's surface to
+ * light_pos, the segment built by spawn_ray_to with `policy` (one shadow ray,
+ * counted in rays[RAY_SHADOW]). */
 bool light_blocked(const tracer *tr, const shading_point *sp, vec3 light_pos, eps_policy policy, uint64_t *rays);
 
 #endif

@@ -31,12 +31,9 @@ typedef enum { PHONG_COURSE, PHONG_LECTURE } phong_form;
 /* The names of the forms, in enum order, NULL-terminated: the choices of --phong. */
 extern const char *const phong_form_names[];
 
-/* h = (v + l) / |v + l| for unit vectors v and l. */
-vec3 half_vector(vec3 v, vec3 l);
-
 /* The specular term of `light` at `point` with unit shading normal n and unit
  * vector v towards the viewer: k_s max(0, n . h)^p I / r^2, times max(0, n . l)
- * in the lecture's form. */
+ * in the lecture's form, with h = (v + l) / |v + l| and p >= 0 any real. */
 color blinn_phong_specular(color k_s, real p, vec3 point, vec3 n, vec3 v, const scene_light *light,
                            phong_form form);
 

@@ -4,7 +4,6 @@
 
 #include "05_lambert/lambert.h"
 #include "05_lambert/shade_lambert.h"
-#include "06_shadows/shade_shadows.h"
 #include "06_shadows/shadow.h"
 
 phong_form tracer_phong_form(const tracer *tr)
@@ -31,15 +30,12 @@ color shade_phong(const tracer *tr, const shading_point *sp, int depth, uint64_t
     const scene_shader *shader = hit_shader(tr->desc, &sp->hit);
     if (shader->kind == SHADER_RGB_NORMALS) /* a geometry check, not lit */
         return shade_lambert(tr, sp, depth, rays);
-    color result = tr->desc->ambient;
-    /* TODO lights: the lecture's loop over the lights:
-     *     for light in lights
-     *         if (shadow ray not blocked): result += shading contribution
-     * for each of the scene's lights (tr->desc->lights, tr->desc->n_lights):
-     * skip a light behind the surface without casting a shadow ray
-     * (light_in_front, chapter 06), ask light_blocked (chapter 06, with the
-     * policy tracer_eps(tr)), and add light_contribution to result. */
-    EXERCISE_STUB("07_blinn_phong", "shade_phong.c", "lights");
+    /* TODO lights: the radiance of the lecture's model at sp: the ambient light and every light of the
+     * scene that is not blocked, each adding its light_contribution (README, "Many lights and ambient light";
+     * which lights are blocked: chapter 06, with the tracer's policy). */
+    EXERCISE_STUB("07_blinn_phong", "shade_phong.c", "lights"); /* delete this line when done */
+    (void)rays;
+    color result = color_make(0, 0, 0);
     return result;
 }
 /* end snippet */

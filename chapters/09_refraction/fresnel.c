@@ -9,11 +9,9 @@ const char *const fresnel_mode_names[] = {"exact", "schlick", NULL};
 /* snippet: fresnel_exact */
 real fresnel_exact(real cos_i, real cos_t, real eta_i, real eta_t)
 {
-    /* TODO fresnel: Fresnel's equations for unpolarised light:
-     *     r_s = (eta_i cos_i - eta_t cos_t) / (eta_i cos_i + eta_t cos_t)
-     *     r_p = (eta_t cos_i - eta_i cos_t) / (eta_t cos_i + eta_i cos_t)
-     *     R = (r_s^2 + r_p^2) / 2 */
-    EXERCISE_STUB("09_refraction", "fresnel.c", "fresnel");
+    /* TODO fresnel: Fresnel's reflectance R of unpolarised light from the two cosines and indices
+     * (README, "How much is reflected: Fresnel"). */
+    EXERCISE_STUB("09_refraction", "fresnel.c", "fresnel"); /* delete this line when done */
     (void)cos_i;
     (void)cos_t;
     (void)eta_i;
@@ -25,12 +23,9 @@ real fresnel_exact(real cos_i, real cos_t, real eta_i, real eta_t)
 /* snippet: fresnel_schlick */
 real fresnel_schlick(real cos_i, real cos_t, real eta_i, real eta_t)
 {
-    /* TODO schlick: Schlick's approximation:
-     *     R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2
-     *     R = R_0 + (1 - R_0) (1 - cos)^5
-     *     with cos the cosine on the side of the smaller index: cos_i when
-     *     eta_i <= eta_t (into glass), cos_t otherwise (out of it). */
-    EXERCISE_STUB("09_refraction", "fresnel.c", "schlick");
+    /* TODO schlick: Schlick's approximation of R, with the cosine of the right side of the surface
+     * (README, "How much is reflected: Fresnel"). */
+    EXERCISE_STUB("09_refraction", "fresnel.c", "schlick"); /* delete this line when done */
     (void)cos_i;
     (void)cos_t;
     (void)eta_i;

@@ -5,12 +5,9 @@
 /* snippet: interpolate */
 vec3 interpolate_vec3(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma)
 {
-    /* TODO interpolate: the lecture's barycentric interpolation of an
-     *     attribute given at the three vertices:
-     *         A = (1 - beta - gamma) A_a + beta A_b + gamma A_c
-     *     alpha = 1 - beta - gamma is the weight of vertex a (chapter 03's
-     *     point a + beta (b - a) + gamma (c - a) is alpha a + beta b + gamma c). */
-    EXERCISE_STUB("10_interpolation", "interpolate.c", "interpolate");
+    /* TODO interpolate: the attribute at (beta, gamma) of a triangle whose vertices a, b, c carry
+     * A_a, A_b, A_c (README, "Values at vertices, read in between"). */
+    EXERCISE_STUB("10_interpolation", "interpolate.c", "interpolate"); /* delete this line when done */
     (void)A_b;
     (void)A_c;
     (void)beta;

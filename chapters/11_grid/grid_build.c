@@ -44,7 +44,7 @@ void grid_resolution(const double extent[3], long surfaces, double density, long
     /* TODO resolution: the cells along each axis from the density (README, "The grid's box and
      * resolution"): about density x surfaces cells in all, cubic cells over the box's spanned axes,
      * never more than max_cells; an axis of zero extent gets one cell. */
-    EXERCISE_STUB("11_grid", "grid_build.c", "resolution");
+    EXERCISE_STUB("11_grid", "grid_build.c", "resolution"); /* delete this line when done */
     (void)extent;
     (void)surfaces;
     (void)density;
@@ -70,7 +70,7 @@ void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int 
     /* TODO cell_range: the cells the box overlaps along each axis (README, "Listing the
      * surfaces"), boundaries counting for the cells on both sides, clamped to the grid with
      * clamp_index. */
-    EXERCISE_STUB("11_grid", "grid_build.c", "cell_range");
+    EXERCISE_STUB("11_grid", "grid_build.c", "cell_range"); /* delete this line when done */
     (void)g;
     (void)box_lo;
     (void)box_hi;

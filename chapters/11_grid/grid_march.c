@@ -65,7 +65,7 @@ static bool enter_box(const grid *g, ray r, const real inv_d[3], const real slac
     /* TODO enter: the ray against the grid's box, slab by slab (README, "Entering the grid"),
      * narrowing [*t0, *t1]; an axis whose inv_d is 0 never crosses a boundary: the ray is inside
      * that slab or misses the box. */
-    EXERCISE_STUB("11_grid", "grid_march.c", "enter");
+    EXERCISE_STUB("11_grid", "grid_march.c", "enter"); /* delete this line when done */
     (void)g;
     (void)r;
     (void)inv_d;
@@ -84,7 +84,7 @@ static bool dda_step(const grid *g, dda *m, int a, ray r, const real inv_d[3])
     /* TODO dda_step: one step of the 3D-DDA along axis a (README, "From cell to cell"): the
      * neighbour's index, whether it is still in the grid, and the t of its far boundary along a,
      * computed from the boundary itself with crossing(), not by adding a step to the old t. */
-    EXERCISE_STUB("11_grid", "grid_march.c", "dda_step");
+    EXERCISE_STUB("11_grid", "grid_march.c", "dda_step"); /* delete this line when done */
     (void)g;
     (void)m;
     (void)a;
@@ -142,7 +142,7 @@ static uint64_t march(const grid *g, search *s, ray r, real t_min, real t_max)
         int a = m.next[0] < m.next[1] ? (m.next[0] < m.next[2] ? 0 : 2) : (m.next[1] < m.next[2] ? 1 : 2);
         /* TODO stop: the stop rule (README, "When to stop"): end the march once the best hit
          * lies in this cell, allowing for the boundary's rounding slack; else step to the next cell. */
-        EXERCISE_STUB("11_grid", "grid_march.c", "stop");
+        EXERCISE_STUB("11_grid", "grid_march.c", "stop"); /* delete this line when done */
         (void)slack;
         break;
         if (!dda_step(g, &m, a, r, inv_d))

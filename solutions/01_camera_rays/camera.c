@@ -10,13 +10,8 @@ static vec3 unit(vec3 a) { return vec3_normalize(vec3_scale(a, 1 / vec3_max_abs(
 /* snippet: basis */
 void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
 {
-    /* EXERCISE basis: the camera's orthonormal basis (lecture, "Specifying views"; <camera> in docs/scenes.md):
-     *     w = -viewDir / |viewDir|
-     *     u = (viewDir x viewUp) / |viewDir x viewUp|
-     *     v = w x u
-     * Normalize with unit(), which also copes with very large or small vectors; take the cross
-     * product of unit(viewDir) and unit(viewUp), not of the raw vectors, whose products can
-     * overflow (or underflow to 0) before unit() sees them. */
+    /* EXERCISE basis: the orthonormal basis u (right), v (up), w (backwards) from viewDir and viewUp
+     * (README, "The basis", which also says which products can overflow and how unit() avoids it). */
     *w = vec3_neg(unit(view_dir));
     *u = unit(vec3_cross(unit(view_dir), unit(view_up)));
     *v = vec3_cross(*w, *u);
@@ -68,33 +63,24 @@ bool camera_from_scene(camera *cam, const scene *desc, char *err, size_t err_siz
 /* snippet: camera_ray */
 ray camera_ray(const camera *cam, real u, real v)
 {
-    /* Where (u, v) lies on the image rectangle, in the basis u, v, centred
-     * on the view direction: from -width/2 to width/2, -height/2 to height/2. */
-    real us = (u - (real)0.5) * cam->width;
+    /* EXERCISE rays: the eye ray through (u, v), for both kinds of camera: first the point of the image
+     * rectangle that (u, v) names, then the ray of the projection (README, "The rays"). */
+    real us = (u - (real)0.5) * cam->width; /* the point on the image rectangle, centred on the view direction */
     real vs = (v - (real)0.5) * cam->height;
     vec3 offset = vec3_add(vec3_scale(cam->u, us), vec3_scale(cam->v, vs));
     ray r;
-    if (cam->kind == CAMERA_PERSPECTIVE) {
-        /* EXERCISE perspective: perspective projection, "same origin, different directions":
-         *     p = e,   d = -d w + us u + vs v   (d: the projection distance; us u + vs v is `offset`)
-         * Do not normalize d: then t = 1 is the image plane. */
+    if (cam->kind == CAMERA_PERSPECTIVE) { /* same origin, different directions; t = 1 on the image plane */
         r.p = cam->e;
         r.d = vec3_add(vec3_scale(cam->w, -cam->d), offset);
-        /* STUB
-        (void)offset;
-        r.p = cam->e;
-        r.d = vec3_make(0, 0, 0);
-        END EXERCISE */
-    } else {
-        /* EXERCISE orthographic: parallel projection, "same direction, different origins":
-         *     p = e + us u + vs v,   d = -w */
+    } else { /* same direction, different origins */
         r.p = vec3_add(cam->e, offset);
         r.d = vec3_neg(cam->w);
-        /* STUB
-        r.p = cam->e;
-        r.d = vec3_make(0, 0, 0);
-        END EXERCISE */
     }
+    /* STUB
+    (void)u;
+    (void)v;
+    ray r = {cam->e, vec3_make(0, 0, 0)};
+    END EXERCISE */
     return r;
 }
 /* end snippet */

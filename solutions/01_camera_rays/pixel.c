@@ -4,11 +4,8 @@
 /* snippet: pixel_to_image */
 void pixel_to_image(int i, int j, int nx, int ny, real du, real dv, real *u, real *v)
 {
-    /* EXERCISE pixel: the pixel-to-image mapping (lecture, "Pixel-to-image mapping"):
-     *     u = (i + du) / n_x,   v = (j + dv) / n_y
-     * (du, dv) is the sample's place inside the pixel; one sample per pixel takes its centre,
-     * du = dv = 0.5, which is the lecture's u = (i + 0.5)/n_x, v = (j + 0.5)/n_y.
-     * i counts columns (along u, to the right), j rows (along v, upwards: j = 0 is the bottom row). */
+    /* EXERCISE pixel: the image position (u, v) in [0, 1]^2 of the sample at (du, dv) inside pixel (i, j)
+     * (README, "From pixels to the image rectangle"). */
     *u = ((real)i + du) / (real)nx;
     *v = ((real)j + dv) / (real)ny;
     /* STUB

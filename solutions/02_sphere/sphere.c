@@ -13,10 +13,8 @@
  * Returns false when the discriminant is negative (the ray misses). */
 static bool textbook_roots(const sphere *s, ray r, real *t0, real *t1)
 {
-    /* EXERCISE textbook: the lecture's quadratic formula (2), "Ray-sphere intersection: algebraic".
-     *     f = p - c,  A = d.d,  B = d.f,  C = f.f - R^2,  discriminant B^2 - A C
-     *     no root when the discriminant is negative (or NaN: test !(disc >= 0));
-     *     else t0 = (-B - sqrt(disc)) / A,  t1 = (-B + sqrt(disc)) / A */
+    /* EXERCISE textbook: both roots of the quadratic (1) by the lecture's formula (2), or false when it has
+     * no real root (README, "The equations"). */
     vec3 f = vec3_sub(r.p, s->center);
     real A = vec3_dot(r.d, r.d);
     real B = vec3_dot(r.d, f);
@@ -49,11 +47,8 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     vec3 f = vec3_sub(r.p, s->center);
     real A = vec3_dot(r.d, r.d);
     real B = vec3_dot(r.d, f);
-    /* EXERCISE robust_discriminant: the discriminant from the geometric form, "Ray-sphere intersection: geometric".
-     *     t_m = -B / A                the parameter of the point of the line closest to c      (3)
-     *     l = f + t_m d               the perpendicular from c to the line, |l| = l_m
-     *     disc = A (R^2 - l.l)        equal to B^2 - A C, without its cancellation             (4)
-     * Keep l as a vector: l.l is small when the ray passes near c, B^2 and A C are not. */
+    /* EXERCISE robust_discriminant: the discriminant of (1) by the geometric form (3)-(4) (README, "The
+     * equations" and "Why two formulas"). */
     vec3 l = vec3_add(f, vec3_scale(r.d, -B / A));
     real disc = A * (s->radius * s->radius - vec3_dot(l, l));
     /* STUB
@@ -63,18 +58,8 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     END EXERCISE */
     if (!(disc >= 0)) /* a miss, or NaN from d = 0 */
         return false;
-    /* EXERCISE robust_roots: the stable pair of roots (5)
-     *     q = -(B + sign(B) sqrt(disc))    B and sign(B) sqrt(disc) have the same sign: no cancellation
-     *     t0 = q / A,  t1 = C / q          (C = f.f - R^2; when q = 0 both roots are 0: t1 = t0)
-     *     |t1| at most sqrt(|C| / A)       (else t1 = that, with t1's sign)                      (6)
-     * (6): q^2 >= A |C| in exact arithmetic (q^2 >= B^2 >= A C, or q^2 >= disc >= -A C), so |C / q|
-     * is at most sqrt(|C| / A).  Rounding breaks that by a few ulps where it is nearly tight, and
-     * without limit where B, disc and C are all rounding noise (a ray along the tangent at a point
-     * of the sphere): C / q is then noise of any size, a hit far from the sphere.  Compare t1^2 A
-     * with |C| (no square root unless it is too large).
-     * sign(B) must be +1 or -1, also for B = 0 (a ray whose origin is the point of its line closest to c):
-     * a sign(0) = 0 makes q = 0 there, and C / q a division by zero.
-     * Which of t0, t1 is nearer depends on the sign of B; sphere_nearest_root() sorts them. */
+    /* EXERCISE robust_roots: the stable pair of roots (5) with the bound (6) on t1 (README, "The
+     * equations", "Stable roots"; the Exercises section warns about B = 0). */
     real C = vec3_dot(f, f) - s->radius * s->radius;
     real root = real_sqrt(disc);
     real q = -(B + (B < 0 ? -root : root));
@@ -124,10 +109,8 @@ bool sphere_roots(const sphere *s, ray r, sphere_formula formula, real *t0, real
 /* snippet: normal */
 vec3 sphere_normal(const sphere *s, vec3 x)
 {
-    /* EXERCISE normal: the outward unit normal at the hit point x:
-     *     n = (x - c) / |x - c|
-     * |x - c| is R up to rounding; dividing by the computed length makes n a unit vector all the same.
-     * x - c is never zero at a hit (it has length R), but guard it so that no NaN leaves this function. */
+    /* EXERCISE normal: the outward unit normal at the hit point x (README, "Exercises": why not divide
+     * by R), never NaN. */
     vec3 m = vec3_sub(x, s->center);
     real length = vec3_length(m);
     return length > 0 ? vec3_scale(m, 1 / length) : m;
@@ -142,12 +125,8 @@ vec3 sphere_normal(const sphere *s, vec3 x)
 /* snippet: nearest */
 bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
 {
-    /* EXERCISE nearest: the nearest root inside the open window (t_min, t_max), the lecture's
-     * s.intersect(ray, tMin, tMax):
-     *     near = min(t0, t1), far = max(t0, t1)        (the formulas do not sort them)
-     *     the near root when t_min < near < t_max, else the far root when t_min < far < t_max, else none.
-     * The window is open: a root equal to t_min or t_max is outside it.  So a ray that starts on the
-     * sphere (a root t = 0 with t_min = 0) does not hit it again where it starts. */
+    /* EXERCISE nearest: the nearest of the two roots inside the open window (t_min, t_max), the
+     * lecture's s.intersect(ray, tMin, tMax) (README, "The code"). */
     real near = real_fmin(t0, t1), far = real_fmax(t0, t1);
     if (near > t_min && near < t_max) {
         *t = near;

@@ -11,18 +11,9 @@
  * three linear equations in beta, gamma and t. */
 static inline bool cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
 {
-    /* EXERCISE cramer: solve the 3x3 system by Cramer's rule.  With A = [a - b   a - c   d]
-     * and det3(c0, c1, c2) the determinant of the matrix with those columns:
-     *     M     = det3(a - b, a - c, d)
-     *     beta  = det3(a - p, a - c, d) / M     (column 1 replaced by the right side a - p)
-     *     gamma = det3(a - b, a - p, d) / M     (column 2 replaced)
-     *     t     = det3(a - b, a - c, a - p) / M (column 3 replaced)
-     * M == 0 means no single solution (a ray parallel to the plane, or a degenerate
-     * triangle), and a non-finite M comes from infinite or NaN data: in both cases
-     * return false before dividing.  (A tiny M made of rounding noise is the given
-     * check's business, in triangle_intersect.)  Hit when t_min < t < t_max and the point
-     * is inside, edges included: beta >= 0, gamma >= 0, beta + gamma <= 1.
-     * Write the comparisons so that a NaN fails them: !(t > t_min && t < t_max). */
+    /* EXERCISE cramer: the hit of the ray with the triangle in the window (t_min, t_max), edges
+     * included, by Cramer's rule with det3 (README, "The intersection: three equations, three unknowns"
+     * and "Edges: closed"); false where the system has no single finite solution. */
     vec3 a_b = vec3_sub(tri->a, tri->b);
     vec3 a_c = vec3_sub(tri->a, tri->c);
     vec3 a_p = vec3_sub(tri->a, r.p);

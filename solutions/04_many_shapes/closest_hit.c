@@ -4,15 +4,8 @@
 /* snippet: surfaces_intersect */
 bool surfaces_intersect(const surface_list *list, ray r, real t_min, real t_max, hit_record *hit)
 {
-    /* EXERCISE closest: the lecture's "Intersection against many shapes":
-     *     tBest = tMax; firstSurface = null
-     *     for surface in surfaceList
-     *         hitSurface, t = surface.intersect(ray, tMin, tBest)
-     *         if hitSurface is not null: tBest = t; firstSurface = hitSurface
-     * Test surface k with surface_intersect(&list->items[k], list, r, t_min, t_best, &candidate):
-     * it only reports hits with t < t_best, so every hit it reports is closer
-     * than the best so far.  Copy such a candidate to *hit, set hit->surface = k,
-     * and return whether anything was hit. */
+    /* EXERCISE closest: the closest hit in (t_min, t_max) of all the list's surfaces, found by the
+     * lecture's loop with surface_intersect, its index in hit->surface (README, "The closest hit"). */
     bool found = false;
     real t_best = t_max;
     for (int k = 0; k < list->n; k++) {

@@ -3,37 +3,16 @@
 
 const char *const phong_form_names[] = {"course", "lecture", NULL};
 
-/* snippet: half_vector */
-vec3 half_vector(vec3 v, vec3 l)
-{
-    /* EXERCISE half: the lecture's half vector, the bisector of v and l:
-     *     h = (v + l) / |v + l|
-     * v and l are unit vectors, so v + l points half-way between them.  (When
-     * l = -v, the light straight behind the surface seen head-on, v + l is 0
-     * and h has no direction: that case never reaches here, since the light
-     * is then behind the surface.) */
-    return vec3_normalize(vec3_add(v, l));
-    /* STUB
-    (void)v;
-    return l;
-    END EXERCISE */
-}
-/* end snippet */
-
 /* snippet: blinn_phong_specular */
 color blinn_phong_specular(color k_s, real p, vec3 point, vec3 n, vec3 v, const scene_light *light,
                            phong_form form)
 {
-    /* EXERCISE specular: the specular term of one point light:
-     *     course:  k_s max(0, n . h)^p I / r^2
-     *     lecture: k_s max(0, n . h)^p max(0, n . l) I / r^2
-     * with r = |light.pos - point|, l = (light.pos - point) / r and
-     * h = half_vector(v, l).  real_pow(x, p) is x^p.  Channel by channel:
-     * color_mul(k_s, I). */
+    /* EXERCISE specular: the whole specular term of one point light, of either form, channel by channel
+     * (README, "Specular shading"); p may be any real number, not only an integer. */
     vec3 to_light = vec3_sub(light->position, point);
     real r2 = vec3_length_squared(to_light);           /* r^2 */
     vec3 l = vec3_scale(to_light, 1 / real_sqrt(r2));  /* unit, towards the light */
-    vec3 h = half_vector(v, l);
+    vec3 h = vec3_normalize(vec3_add(v, l));           /* the half vector, bisector of v and l */
     real highlight = real_pow(real_fmax(0, vec3_dot(n, h)), p); /* max(0, n . h)^p */
     if (form == PHONG_LECTURE)
         highlight *= real_fmax(0, vec3_dot(n, l)); /* the modified Blinn-Phong's cosine */

@@ -4,13 +4,9 @@
 /* snippet: refract */
 bool refract(vec3 d, vec3 n, real eta_i, real eta_t, vec3 *T, real *cos_t)
 {
-    /* EXERCISE refract: the lecture's transmitted ray T = C_t + S_t:
-     *     cos(theta_i) = -(d . n),  C_i = cos(theta_i) n,  S_i = d + C_i;
-     *     Snell's law scales the sine part: S_t = (eta_i / eta_t) S_i;
-     *     if |S_t|^2 > 1 there is no transmitted ray (total internal
-     *     reflection): return false;
-     *     otherwise cos(theta_t) = sqrt(1 - |S_t|^2), C_t = -cos(theta_t) n,
-     *     *T = C_t + S_t, *cos_t = cos(theta_t), and return true. */
+    /* EXERCISE refract: the transmitted direction of d through the surface from eta_i into eta_t, or
+     * false past the critical angle (README, "The transmitted direction" and "Total internal
+     * reflection"; refract.h says what *T and *cos_t hold). */
     real cos_i = -vec3_dot(d, n);
     vec3 C_i = vec3_scale(n, cos_i);           /* |C_i| = cos(theta_i), out of the surface */
     vec3 S_i = vec3_add(d, C_i);               /* |S_i| = sin(theta_i), along the surface */

@@ -4,11 +4,8 @@
 /* snippet: interpolate */
 vec3 interpolate_vec3(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma)
 {
-    /* EXERCISE interpolate: the lecture's barycentric interpolation of an
-     *     attribute given at the three vertices:
-     *         A = (1 - beta - gamma) A_a + beta A_b + gamma A_c
-     *     alpha = 1 - beta - gamma is the weight of vertex a (chapter 03's
-     *     point a + beta (b - a) + gamma (c - a) is alpha a + beta b + gamma c). */
+    /* EXERCISE interpolate: the attribute at (beta, gamma) of a triangle whose vertices a, b, c carry
+     * A_a, A_b, A_c (README, "Values at vertices, read in between"). */
     real alpha = 1 - beta - gamma;
     return vec3_add(vec3_add(vec3_scale(A_a, alpha), vec3_scale(A_b, beta)), vec3_scale(A_c, gamma));
     /* STUB

@@ -8,10 +8,8 @@ const char *const texture_filter_names[] = {"nearest", "bilinear", NULL};
 /* snippet: texel_index */
 int texel_index(texture_kind kind, long long i, int n)
 {
-    /* EXERCISE wrap: the index of the texel that i reads, n >= 1 texels:
-     *     RepeatTexture: i mod n, in [0, n) also for negative i
-     *         (C's % keeps the sign of i: -1 % 4 is -1, which must become 3);
-     *     ClampTexture: i clamped to [0, n - 1]. */
+    /* EXERCISE wrap: the index of the texel that index i reads in a row (or column) of n >= 1
+     * texels, for either kind of texture, for any i (README, "Texture space"). */
     if (kind == TEXTURE_REPEAT) {
         long long m = i % n;
         return (int)(m < 0 ? m + n : m);
@@ -47,14 +45,8 @@ color texture_nearest(const scene_texture *tex, mesh_uv uv)
     const texture_image *img = &tex->image;
     real x = texel_coordinate(uv.u, img->width);      /* u W */
     real y = texel_coordinate(1 - uv.v, img->height); /* (1 - v) H: v up, rows down */
-    /* EXERCISE nearest: the texel nearest to (x, y), as the course's solution
-     *     finds it: add 1/2 and drop the fraction (a conversion to an integer,
-     *     which rounds towards zero: (long long)(x + 0.5)); wrap the column and
-     *     the row by texel_index (the texture's kind tex->kind; the image's
-     *     width and height); and read the texel: texture_image_texel(img,
-     *     column, row).  (For x < -1/2 dropping the fraction rounds up, not
-     *     down: texel 0 is read from x = -3/2 to 1/2, a whole texel more
-     *     than the others.  The course's images show it, so it stays.) */
+    /* EXERCISE nearest: the colour of the texel nearest to (x, y), found as the course's solution
+     * finds it, wrapped by the texture's kind (README, "Nearest and bilinear"). */
     int column = texel_index(tex->kind, (long long)(x + (real)0.5), img->width);
     int row = texel_index(tex->kind, (long long)(y + (real)0.5), img->height);
     return texture_image_texel(img, column, row);
@@ -72,13 +64,8 @@ color texture_bilinear(const scene_texture *tex, mesh_uv uv)
     const texture_image *img = &tex->image;
     real x = texel_coordinate(uv.u, img->width);
     real y = texel_coordinate(1 - uv.v, img->height);
-    /* EXERCISE bilinear: the four texels whose centres surround (x, y):
-     *     columns x0 = floor(x) and x0 + 1, rows y0 = floor(y) and y0 + 1,
-     *     each wrapped by texel_index; with the fractions s = x - x0 and
-     *     t = y - y0, blend along x, then along y:
-     *         top    = (1 - s) T(x0, y0)     + s T(x0 + 1, y0)
-     *         bottom = (1 - s) T(x0, y0 + 1) + s T(x0 + 1, y0 + 1)
-     *         result = (1 - t) top + t bottom */
+    /* EXERCISE bilinear: the colour blended from the four texels whose centres surround (x, y),
+     * each wrapped by the texture's kind (README, "Nearest and bilinear"). */
     real fx = real_floor(x), fy = real_floor(y);
     real s = x - fx, t = y - fy;
     int x0 = texel_index(tex->kind, (long long)fx, img->width);
