@@ -87,7 +87,10 @@ ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS) $(if $(wildcard fuz
 # it (counts, tables, sweeps, heat maps, the fast grid).  A lab is its own
 # program, BUILD/NN_name/lab, from lab/main.c, the lab's other files and the
 # stages of chapters 1..N; its suite tests/lab_NN_name.c links the same.  The
-# lesson never reads the lab: no stage file or renderer includes lab/.
+# lesson never reads the lab: no stage file or renderer includes lab/.  The
+# chapter's graded suite links the lab's files too (not its main.c), so that a
+# test may measure the student's code with the lab's harness (chapter 06's
+# acne and leaks).
 LAB_CHAPTERS := $(foreach c,$(CHAPTERS),$(if $(wildcard chapters/$c/lab/main.c),$c))
 lab_objs = $(call objs,$(sort $(filter-out %/main.c,$(wildcard chapters/$1/lab/*.c))))
 LAB_TESTS := $(foreach c,$(LAB_CHAPTERS),$(if $(wildcard tests/lab_$c.c),lab_$c))
@@ -129,7 +132,7 @@ $(OUT)/$1.png: $(BUILD)/$1/render
 	@mkdir -p $(OUT)
 	$(BUILD)/$1/render -o $$@
 
-$(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
+$(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call stages_upto,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
 	$$(call link,$$^) -lcmocka -o $$@
 
@@ -252,7 +255,7 @@ REFERENCE_WORDS := $(if $(HANDOUT),the compiled reference libraries reference/do
 grade_links = $1: links $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addprefix chapters/$1/,$(EXERCISES_$1)),no exercise files),the reference)$(if $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))), and the reference of $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))) from $(REFERENCE_WORDS))
 
 define grade_rules
-$(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call grade_stages,$1) $(call objs,$(COMMON_SRC))
+$(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call grade_stages,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
 	$$(call link,$$^) -lcmocka -o $$@
 endef

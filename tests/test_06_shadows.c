@@ -4,7 +4,7 @@
 #include <stdlib.h>
 
 #include "05_lambert/lambert.h"
-#include "06_shadows/acne.h"
+#include "06_shadows/lab/acne.h"
 #include "06_shadows/shade_shadows.h"
 #include "06_shadows/shadow.h"
 #include "06_shadows/spawn.h"

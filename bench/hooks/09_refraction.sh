@@ -1,20 +1,20 @@
 #!/bin/sh
-# The precision limits of chapter 09 (render --limits): total internal
+# The precision limits of chapter 09 (its lab, lab --limits): total internal
 # reflection decided on the wrong side of the critical angle, R + T = 1, and
 # the refracted direction through a sphere's centre and a slab at every scale,
 # in double and in float.
 build=$1
 fbuild=$2
 tmp=${TMPDIR:-/tmp}/bench-09-limits.$$
-"$build/09_refraction/render" --limits >"$tmp.d" || exit 1
-"$fbuild/09_refraction/render" --limits >"$tmp.f" || exit 1
+"$build/09_refraction/lab" --limits >"$tmp.d" || exit 1
+"$fbuild/09_refraction/lab" --limits >"$tmp.f" || exit 1
 worst() { # FILE KIND COLUMN: the largest value of COLUMN on the lines of KIND
     awk -v k="$2" -v c="$3" '$1 == k { x = $c + 0; if (n == 0 || x > w) { w = x; s = $c }; n++ } END { print (n ? s : "-") }' "$1"
 }
 upto() { awk '$1 == "eta_equal" && $3 + 0 <= 89.9 { x = $4 + 0; if (n == 0 || x > w) { w = x; s = $4 }; n++ } END { print (n ? s : "-") }' "$1"; }
 nonfinite() { awk '$1 == "eta_equal" && ($4 ~ /inf|nan/) { print $3; f = 1; exit } END { if (!f) print "none" }' "$1"; }
 lost() { awk -v k="$2" '$1 == k { n += $NF } END { print n + 0 }' "$1"; }
-echo "Where the precision gives out in refraction (\`render --limits\`, chapter 09's README): the largest"
+echo "Where the precision gives out in refraction (\`build/09_refraction/lab --limits\`, chapter 09's lab): the largest"
 echo "distance from the critical angle at which total internal reflection was decided wrongly (0: never), the"
 echo "worst |R + T - 1|, the worst refracted-direction error (radians) through a sphere's centre at scales"
 echo "10^-4 to 10^8 and through a slab up to 89.9 degrees, and the rays lost there:"

@@ -7,16 +7,11 @@
  *
  * Knobs: --sphere (chapter 02), --triangle (chapter 03), --shadow-eps
  * (chapter 06, for mirror rays too), --phong (chapter 07), --depth,
- * --min-weight.
- * `render --self-hit-table` renders nothing: it prints the self-hit
- * measurement of a convex mirror (self_hit.h) for every policy and scale.
+ * --min-weight.  The chapter's lab (lab/README.md) measures how often a
+ * convex mirror sees itself under each policy.
  */
-#include <stdio.h>
-#include <string.h>
-
 #include "05_lambert/shading_stage.h"
 #include "08_mirrors/mirror_scene.h"
-#include "08_mirrors/self_hit.h"
 #include "08_mirrors/shade_glazed.h"
 
 static path_knobs settings = PATH_KNOBS_DEFAULT;
@@ -31,29 +26,11 @@ static const knob knobs[] = {
      "no ray whose path weight (product of k_m along it) is below this (0: off)"},
 };
 
-/* "build policy scale band_start rays hits" a line. */
-static int self_hit_table(void)
-{
-    printf("# build policy scale theta_i_from rays hits (a convex mirror seeing itself, self_hit.h)\n");
-    for (int p = 0; eps_policy_names[p]; p++)
-        for (int k = 0; k < SELF_HIT_SCALES; k++) {
-            self_hit_result result;
-            self_hit_measure(self_hit_scales[k], (eps_policy)p, 20000, &result);
-            for (int b = 0; b < SELF_HIT_BANDS; b++)
-                printf("%s %s %g %g %ld %ld\n", REAL_NAME, eps_policy_names[p], (double)self_hit_scales[k],
-                       self_hit_band_start[b], result.rays[b], result.hits[b]);
-        }
-    return 0;
-}
-
 int main(int argc, char **argv)
 {
-    if (argc == 2 && strcmp(argv[1], "--self-hit-table") == 0)
-        return self_hit_table();
     const shading_stage stage = {
         .name = "08_mirrors",
-        .summary = "08_mirrors: Blinn-Phong shading plus k_m times the radiance traced along the mirror direction\n"
-                   "(render --self-hit-table prints how often a convex mirror sees itself, by policy, instead)",
+        .summary = "08_mirrors: Blinn-Phong shading plus k_m times the radiance traced along the mirror direction",
         .knobs = knobs,
         .n_knobs = sizeof knobs / sizeof knobs[0],
         .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |

@@ -6,18 +6,11 @@
  *
  * Knobs: --sphere (chapter 02), --triangle (chapter 03), --shadow-eps
  * (chapter 06, for every secondary ray), --phong (chapter 07), --depth,
- * --min-weight (chapter 08), --fresnel=exact|schlick.
- * `render --fresnel-table` renders nothing: it prints R against the angle
- * (fresnel.h) for eta = 1.5, both ways, for the plot of the README;
- * `render --limits` prints where the build's precision gives out
- * (glass_limits.h).
+ * --min-weight (chapter 08), --fresnel=exact|schlick.  The chapter's lab
+ * (lab/README.md) prints R against the angle and where the precision gives
+ * out.
  */
-#include <stdio.h>
-#include <string.h>
-
 #include "05_lambert/shading_stage.h"
-#include "09_refraction/fresnel_table.h"
-#include "09_refraction/glass_limits.h"
 #include "09_refraction/glass_scene.h"
 #include "09_refraction/shade_glass.h"
 
@@ -37,17 +30,9 @@ static const knob knobs[] = {
 
 int main(int argc, char **argv)
 {
-    if (argc == 2 && strcmp(argv[1], "--fresnel-table") == 0)
-        return fresnel_table(stdout, (real)1.5, 90 * 8);
-    if (argc == 2 && strcmp(argv[1], "--limits") == 0) {
-        glass_limits(stdout);
-        return 0;
-    }
     const shading_stage stage = {
         .name = "09_refraction",
-        .summary = "09_refraction: glass (Snell's law, total internal reflection, Fresnel) over chapter 08's mirrors\n"
-                   "(render --fresnel-table prints R against the angle for eta 1.5 instead,\n"
-                   "render --limits where the build's precision gives out)",
+        .summary = "09_refraction: glass (Snell's law, total internal reflection, Fresnel) over chapter 08's mirrors",
         .knobs = knobs,
         .n_knobs = sizeof knobs / sizeof knobs[0],
         .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |

@@ -1,4 +1,4 @@
-/* self_hit.h - chapter 08: does a convex mirror see itself?  Measured.
+/* self_hit.h - chapter 08's lab: does a convex mirror see itself?  Measured.
  *
  * A mirror sphere of radius s centred at s (3.7, 2.9, -4.3), for scales s
  * from 1e-4 to 1e8, hit by parallel eye rays that start 3 s away, at chosen

@@ -1,5 +1,5 @@
-/* self_hit.c - chapter 08: does a convex mirror see itself?  Measured. */
-#include "08_mirrors/self_hit.h"
+/* self_hit.c - chapter 08's lab: does a convex mirror see itself?  Measured. */
+#include "08_mirrors/lab/self_hit.h"
 
 #include <math.h>
 

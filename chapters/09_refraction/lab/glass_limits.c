@@ -1,5 +1,5 @@
-/* glass_limits.c - chapter 09: where the build's precision gives out. */
-#include "09_refraction/glass_limits.h"
+/* glass_limits.c - chapter 09's lab: where the build's precision gives out. */
+#include "09_refraction/lab/glass_limits.h"
 
 #include <math.h>
 

@@ -1,4 +1,4 @@
-/* cracks.h - chapter 03: counting the rays that slip between triangles.
+/* cracks.h - chapter 03's lab: counting the rays that slip between triangles.
  *
  * A ray that starts inside a closed mesh must hit it.  The hardest rays are
  * those aimed exactly at an edge or a vertex, where two or more triangles
@@ -26,7 +26,7 @@ bool hits_any(const triangle *tris, int n, ray r, triangle_test test);
  * units, of an edge.  Then the nearest point of the edge, in the sense of
  * keeping the ratio of the other two barycentric coordinates, is
  * edge_point(*e0, *e1, *s); near two edges it is their common vertex
- * (*e0 = *e1, *s = 0).  The renderer's --show=cracks aims rays exactly there. */
+ * (*e0 = *e1, *s = 0).  The lab's --show=cracks aims rays exactly there. */
 bool near_edge(const triangle *tri, real beta, real gamma, real width, vec3 *e0, vec3 *e1, real *s);
 
 /* Origin k of the crack measurement in the icosahedron (centre, radius):

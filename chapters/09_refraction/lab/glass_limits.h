@@ -1,4 +1,4 @@
-/* glass_limits.h - chapter 09: where the build's precision gives out.
+/* glass_limits.h - chapter 09's lab: where the build's precision gives out.
  *
  * The chapter's checks, pushed to grazing angles and to scales far from the
  * unit sphere at the origin, each computed as the renderer computes it
@@ -13,7 +13,7 @@
  *     that came, and the distance of the leaving ray from the centre, over s;
  *   - a slab of thickness s with parallel faces: the angle between the ray
  *     that leaves and the one that came, at angles up to 89.9 degrees.
- * `render --limits` prints them for the build it was compiled in.
+ * `lab --limits` prints them for the build it was compiled in.
  */
 #ifndef CH09_GLASS_LIMITS_H
 #define CH09_GLASS_LIMITS_H

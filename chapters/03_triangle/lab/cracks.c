@@ -1,5 +1,5 @@
-/* cracks.c - chapter 03: rays aimed at the edges and vertices of a closed mesh. */
-#include "03_triangle/cracks.h"
+/* cracks.c - chapter 03's lab: rays aimed at the edges and vertices of a closed mesh. */
+#include "03_triangle/lab/cracks.h"
 
 #include <stdint.h>
 

@@ -1,5 +1,5 @@
-/* fresnel_table.c - chapter 09: R against the angle, for the plot. */
-#include "09_refraction/fresnel_table.h"
+/* fresnel_table.c - chapter 09's lab: R against the angle, for the plot. */
+#include "09_refraction/lab/fresnel_table.h"
 
 #include <math.h>
 

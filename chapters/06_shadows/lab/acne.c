@@ -1,5 +1,5 @@
-/* acne.c - chapter 06: shadow acne and light leaks, measured. */
-#include "06_shadows/acne.h"
+/* acne.c - chapter 06's lab: shadow acne and light leaks, measured. */
+#include "06_shadows/lab/acne.h"
 
 #include "06_shadows/shade_shadows.h"
 #include "06_shadows/shadow.h"

@@ -1,10 +1,10 @@
-/* degenerate_count.h - chapter 03: measuring false hits on degenerate
+/* degenerate_count.h - chapter 03's lab: measuring false hits on degenerate
  * triangles and in-plane rays, and lost hits on proper triangles.
  *
  * The data are random (a fixed seed: the same on every run), rotated,
  * scaled from 1e-3 to 1e3 and, for half of the cases, translated up to 1e4
  * times the triangle's size from the origin, so that no arithmetic is exact.
- * render --degenerate=N prints the counts (chapter 03's README has them).
+ * lab --degenerate=N prints the counts (lab/README.md has them).
  */
 #ifndef CH03_DEGENERATE_COUNT_H
 #define CH03_DEGENERATE_COUNT_H

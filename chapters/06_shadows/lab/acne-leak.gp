@@ -1,10 +1,10 @@
-# acne-leak.gp - the acne and leak table of chapter 06 as a plot.
+# acne-leak.gp - the acne and leak table of chapter 06's lab as a plot.
 # Run by `make figures` as: gnuplot -e "output='FILE.png'; build='BUILD'" acne-leak.gp
-# Its data: `render --acne-table` of the double and the float build of chapter 06,
+# Its data: `lab --acne-table` of the double and the float build of chapter 06,
 # lines "build policy shape scale acne% leak%".
 set terminal pngcairo size 1100,800 font "sans,10"
 set output output
-data = sprintf("< %s/06_shadows/render --acne-table; %s-float/06_shadows/render --acne-table", build, build)
+data = sprintf("< %s/06_shadows/lab --acne-table; %s-float/06_shadows/lab --acne-table", build, build)
 
 # one row per (policy, build): none, fixed, bound from the top, double above float
 row(p, b) = (p eq "none" ? 2 : p eq "fixed" ? 1 : 0) * 2 + (b eq "double" ? 1 : 0)

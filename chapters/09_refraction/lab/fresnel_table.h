@@ -1,4 +1,4 @@
-/* fresnel_table.h - chapter 09: R against the angle, for the plot.
+/* fresnel_table.h - chapter 09's lab: R against the angle, for the plot.
  *
  * For angles of incidence from 0 to 90 degrees, the reflectance of a surface
  * between air and glass of index eta, into the glass and out of it, by

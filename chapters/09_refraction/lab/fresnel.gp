@@ -1,10 +1,10 @@
 # fresnel.gp - chapter 09's Fresnel plot: R against the angle of incidence, into and out of glass.
 # Run by `make figures` as: gnuplot -e "output='FILE.png'; build='BUILD'" fresnel.gp
-# Its data: `render --fresnel-table` of the double build of chapter 09 (fresnel_table.h), columns
+# Its data: `lab --fresnel-table` of the double build of chapter 09's lab (fresnel_table.h), columns
 # angle in_exact in_schlick out_exact out_schlick out_schlick_cos_i.
 set terminal pngcairo size 1100,500 font "sans,10"
 set output output
-data = sprintf("< %s/09_refraction/render --fresnel-table", build)
+data = sprintf("< %s/09_refraction/lab --fresnel-table", build)
 theta_c = asin(1 / 1.5) * 180 / pi
 set grid lc rgb "#dddddd"
 set ylabel "reflectance R (fraction of the power reflected)"

@@ -1,4 +1,4 @@
-/* acne.h - chapter 06: shadow acne and light leaks, measured.
+/* acne.h - chapter 06's lab: shadow acne and light leaks, measured.
  *
  * Two scenes for each of two shapes, at any scale s and far from the origin
  * (centred at s (3.7, 2.9, -4.3)):

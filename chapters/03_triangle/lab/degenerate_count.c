@@ -1,5 +1,5 @@
-/* degenerate_count.c - chapter 03: false and lost hits, with rounded data. */
-#include "03_triangle/degenerate_count.h"
+/* degenerate_count.c - chapter 03's lab: false and lost hits, with rounded data. */
+#include "03_triangle/lab/degenerate_count.h"
 
 #include <stdint.h>
 
