@@ -22,7 +22,7 @@
 #include "suite.h"
 
 #include "03_triangle/degenerate.h"
-#include "03_triangle/icosahedron.h"
+#include "03_triangle/scenes/icosahedron.h"
 #include "03_triangle/triangle.h"
 
 #define TOL (32 * REAL_EPSILON)

@@ -5,7 +5,7 @@
 
 #include "05_lambert/lambert.h"
 #include "05_lambert/shade_lambert.h"
-#include "05_lambert/shading_scene.h"
+#include "05_lambert/scenes/shading_scene.h"
 #include "05_lambert/shading_stage.h"
 #include "05_lambert/tracer.h"
 #include "scene_build.h"

@@ -4,7 +4,7 @@
 #include <stdlib.h>
 
 #include "08_mirrors/mirror.h"
-#include "08_mirrors/mirror_scene.h"
+#include "08_mirrors/scenes/mirror_scene.h"
 #include "08_mirrors/path.h"
 #include "08_mirrors/shade_glazed.h"
 #include "probe_shader.h"

@@ -4,9 +4,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "08_mirrors/mirror_scene.h"
+#include "08_mirrors/scenes/mirror_scene.h"
 #include "09_refraction/fresnel.h"
-#include "09_refraction/glass_scene.h"
+#include "09_refraction/scenes/glass_scene.h"
 #include "09_refraction/refract.h"
 #include "09_refraction/shade_glass.h"
 #include "probe_shader.h"

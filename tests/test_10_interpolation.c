@@ -6,11 +6,11 @@
 
 #include "05_lambert/shading_stage.h"
 #include "08_mirrors/mirror.h"
-#include "10_interpolation/interp_scene.h"
+#include "10_interpolation/scenes/interp_scene.h"
 #include "10_interpolation/interp_stage.h"
 #include "10_interpolation/interpolate.h"
 #include "10_interpolation/shading_normal.h"
-#include "10_interpolation/sphere_mesh.h"
+#include "10_interpolation/scenes/sphere_mesh.h"
 #include "10_interpolation/sphere_uv.h"
 #include "10_interpolation/texture.h"
 #include "scene_build.h"

@@ -22,7 +22,7 @@
 #include "05_lambert/shading_stage.h"
 #include "07_blinn_phong/shade_phong.h"
 #include "10_interpolation/interp_stage.h"
-#include "10_interpolation/sphere_mesh.h"
+#include "10_interpolation/scenes/sphere_mesh.h"
 #include "11_grid/grid_stage.h"
 #include "image_compare.h"
 #include "suite.h"

@@ -10,7 +10,7 @@
 
 #include <stb_image_write.h>
 
-#include "10_interpolation/sphere_mesh.h"
+#include "10_interpolation/scenes/sphere_mesh.h"
 
 int main(int argc, char **argv)
 {

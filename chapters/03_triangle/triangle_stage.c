@@ -4,7 +4,7 @@
 #include <stdlib.h>
 
 #include "01_camera_rays/pixel.h"
-#include "03_triangle/icosahedron.h"
+#include "03_triangle/scenes/icosahedron.h"
 #include "scene_build.h"
 
 static const char *const triangle_choices[] = {"cramer", "watertight", NULL};

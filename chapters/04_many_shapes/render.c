@@ -15,7 +15,7 @@
 #include "01_camera_rays/pixel.h"
 #include "04_many_shapes/flat_shading.h"
 #include "04_many_shapes/shape_knobs.h"
-#include "04_many_shapes/shapes_scene.h"
+#include "04_many_shapes/scenes/shapes_scene.h"
 #include "04_many_shapes/shapes_stage.h"
 #include "renderer.h"
 

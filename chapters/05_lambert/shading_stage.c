@@ -7,7 +7,7 @@
 #include "01_camera_rays/pixel.h"
 #include "04_many_shapes/scene_surfaces.h"
 #include "04_many_shapes/shape_knobs.h"
-#include "05_lambert/shading_scene.h"
+#include "05_lambert/scenes/shading_scene.h"
 #include "renderer.h"
 
 int hit_query_linear(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)

@@ -11,7 +11,7 @@
  * convex mirror sees itself under each policy.
  */
 #include "05_lambert/shading_stage.h"
-#include "08_mirrors/mirror_scene.h"
+#include "08_mirrors/scenes/mirror_scene.h"
 #include "08_mirrors/shade_glazed.h"
 
 static path_knobs settings = PATH_KNOBS_DEFAULT;

@@ -11,7 +11,7 @@
  * out.
  */
 #include "05_lambert/shading_stage.h"
-#include "09_refraction/glass_scene.h"
+#include "09_refraction/scenes/glass_scene.h"
 #include "09_refraction/shade_glass.h"
 
 static glass_knobs settings = GLASS_KNOBS_DEFAULT;

@@ -1,7 +1,7 @@
 /* interp_stage.c - chapter 10: the stage, as the renderer describes it. */
 #include "10_interpolation/interp_stage.h"
 
-#include "10_interpolation/interp_scene.h"
+#include "10_interpolation/scenes/interp_scene.h"
 
 interp_knobs interp_settings = INTERP_KNOBS_DEFAULT;
 

@@ -6,7 +6,7 @@
 
 #include "04_many_shapes/closest_hit.h"
 #include "10_interpolation/interp_stage.h"
-#include "11_grid/grid_scene.h"
+#include "11_grid/scenes/grid_scene.h"
 
 grid_knobs grid_settings = {.density = (real)GRID_DEFAULT_DENSITY, .max_cells = (int)GRID_DEFAULT_MAX_CELLS};
 

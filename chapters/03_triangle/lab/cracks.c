@@ -3,7 +3,7 @@
 
 #include <stdint.h>
 
-#include "03_triangle/icosahedron.h"
+#include "03_triangle/scenes/icosahedron.h"
 
 vec3 edge_point(vec3 e0, vec3 e1, real s) { return vec3_add(e0, vec3_scale(vec3_sub(e1, e0), s)); }
 

@@ -1,7 +1,7 @@
 /* mirror_scene.c - chapter 08: the built-in scene of the mirror stage. */
-#include "08_mirrors/mirror_scene.h"
+#include "08_mirrors/scenes/mirror_scene.h"
 
-#include "05_lambert/shading_scene.h"
+#include "05_lambert/scenes/shading_scene.h"
 
 /* snippet: mirror_scene */
 int mirror_scene(scene *desc)

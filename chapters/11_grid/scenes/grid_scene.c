@@ -1,5 +1,5 @@
 /* grid_scene.c - chapter 11: the built-in scene, what grids are for and where they break. */
-#include "11_grid/grid_scene.h"
+#include "11_grid/scenes/grid_scene.h"
 
 #include <math.h>
 

@@ -1,5 +1,5 @@
 /* icosahedron.c - chapter 03: the regular icosahedron. */
-#include "03_triangle/icosahedron.h"
+#include "03_triangle/scenes/icosahedron.h"
 
 const int icosahedron_faces[ICOSAHEDRON_FACES][3] = {
     {0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11}, /* around vertex 0 */

@@ -1,5 +1,5 @@
 /* shapes_scene.c - chapter 04: the built-in scene, overlapping shapes in flat colours. */
-#include "04_many_shapes/shapes_scene.h"
+#include "04_many_shapes/scenes/shapes_scene.h"
 
 #include "scene_build.h"
 

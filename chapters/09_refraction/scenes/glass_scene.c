@@ -1,5 +1,5 @@
 /* glass_scene.c - chapter 09: the built-in scene of the refraction stage. */
-#include "09_refraction/glass_scene.h"
+#include "09_refraction/scenes/glass_scene.h"
 
 #include "scene_build.h"
 

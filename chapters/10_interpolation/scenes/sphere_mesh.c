@@ -1,5 +1,5 @@
 /* sphere_mesh.c - chapter 10: a coarse sphere as a mesh, and a texture made in code. */
-#include "10_interpolation/sphere_mesh.h"
+#include "10_interpolation/scenes/sphere_mesh.h"
 
 #include <math.h>
 #include <stdlib.h>

@@ -1,7 +1,7 @@
 /* shading_scene.c - chapter 05: the built-in scene of the shading chapters. */
-#include "05_lambert/shading_scene.h"
+#include "05_lambert/scenes/shading_scene.h"
 
-#include "04_many_shapes/shapes_scene.h"
+#include "04_many_shapes/scenes/shapes_scene.h"
 #include "scene_build.h"
 
 static int add_shader(scene *desc, shader_kind kind, color diffuse, color specular, real exponent)

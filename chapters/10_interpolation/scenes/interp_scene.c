@@ -1,9 +1,9 @@
 /* interp_scene.c - chapter 10: the built-in scene of the interpolation stage. */
-#include "10_interpolation/interp_scene.h"
+#include "10_interpolation/scenes/interp_scene.h"
 
 #include <stdlib.h>
 
-#include "10_interpolation/sphere_mesh.h"
+#include "10_interpolation/scenes/sphere_mesh.h"
 #include "scene_build.h"
 
 /* The floor: the square |x|, |z| <= half at height y, two triangles facing
