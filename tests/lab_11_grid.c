@@ -27,7 +27,7 @@ static const fast_grid_options knob_sets[] = {
 static shading_stage fast_stage(void)
 {
     shading_stage stage = grid_stage();
-    stage.build_query = lab_faces;
+    stage.build_query = lab_query_build;
     fast_settings = (fast_knobs){.accel = LAB_ACCEL_FAST};
     return stage;
 }

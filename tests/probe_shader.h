@@ -34,7 +34,7 @@ static inline bool probe_took(const tracer *tr, const shading_point *sp, int dep
     if (probe.n < MAX_PROBES) {
         probe.r[probe.n] = sp->r;
         probe.depth[probe.n] = depth;
-        probe.weight[probe.n] = path_weight(tr, depth);
+        probe.weight[probe.n] = tr->weight;
     }
     probe.n++;
     return true;

@@ -158,16 +158,16 @@ static void test_mirror_ray_reaches_probe(void **state)
                 probe.n == 0 ? "no mirror ray, or not along reflect(sp->r.d, sp->n), or not traced"
                              : "the mirror ray was traced more than once");
     check_count(1, probe.depth[0], input, "depth of the ray that reached the probe",
-                "trace(&next.tr, ray, 0, REAL_INFINITY, depth + 1, rays): one level deeper");
+                "trace(&next, ray, 0, REAL_INFINITY, depth + 1, rays): one level deeper");
     assert_int_equal(0, rays[RAY_SHADOW]); /* no lights */
     /* from the mirror's point (60 from the origin: the offset is tiny), along r */
     assert_vec3_close(far_point, probe.r[0].p, 1e4 * REAL_EPSILON * 60);
     assert_close(0, vec3_length(vec3_cross(vec3_normalize(probe.r[0].d), vec3_normalize(r))), TOL(8));
     assert_true(vec3_dot(probe.r[0].d, r) > 0);
-    const suspect_vec3 sw[] = {{{1, 1, 1}, "the path's weight was not carried: trace with next.tr, not tr"}};
+    const suspect_vec3 sw[] = {{{1, 1, 1}, "the path's weight was not carried: trace with next, not tr"}};
     assert_vec3_why(vec3_make(0.8, 0.5, 0.25), vec3_make(probe.weight[0].r, probe.weight[0].g, probe.weight[0].b),
                     TOL(1), describe("%s: the weight of the probe's ray", input),
-                    "trace with next.tr, the tracer path_next filled in: it carries the path's weight", sw, 1);
+                    "trace with next, the tracer path_next filled in: it carries the path's weight", sw, 1);
     const suspect sl[] = {{0.2, "L_m not multiplied by k_m: the glazed term is k_m L_m"},
                           {0.8 * 0.8 * 0.2, "k_m applied twice"}};
     assert_close_why(0.8 * 0.2, L.r, TOL(1), describe("%s: the radiance the eye sees, red", input),
@@ -306,7 +306,7 @@ static void test_facing_mirrors_depth_and_weight(void **state)
     uint64_t rays[RAY_KINDS] = {0};
     color L = trace_one(&desc, &knobs, eye, rays);
     check_count(3, (long long)rays[RAY_REFLECTED], "two facing mirrors (k_m = 0.5), --min-weight 0.1",
-                "reflected rays", "ask path_next(tr, depth, k_m, &next) and trace with next.tr: it stops a path "
+                "reflected rays", "ask path_next(tr, depth, k_m, &next) and trace with next: it stops a path "
                                   "whose weight falls below min_weight");
     assert_close(0.1 * 1.875, L.r, TOL(1));
     scene_free(&desc);

@@ -5,6 +5,15 @@
 
 #include "04_many_shapes/box.h"
 
+/* Appends triangle `face` of scene surface k (a Box's or a Mesh's); -1 when out of memory. */
+static int add_face(surface_list *list, triangle tri, int shader, int k, int face)
+{
+    int i = surface_list_add_triangle(list, tri, shader, k);
+    if (i >= 0)
+        list->items[i].face = face;
+    return i;
+}
+
 /* Appends the surfaces that scene surface k becomes; -1 when out of memory. */
 static int add_scene_surface(surface_list *list, const scene *desc, int k)
 {
@@ -18,7 +27,7 @@ static int add_scene_surface(surface_list *list, const scene *desc, int k)
         triangle faces[BOX_TRIANGLES];
         box_triangles(s->min_pt, s->max_pt, faces);
         for (int f = 0; f < BOX_TRIANGLES; f++)
-            if (surface_list_add_triangle(list, faces[f], s->shader, k) < 0)
+            if (add_face(list, faces[f], s->shader, k, f) < 0)
                 return -1;
         return 0;
     }
@@ -27,7 +36,7 @@ static int add_scene_surface(surface_list *list, const scene *desc, int k)
         for (int f = 0; f < m->n_faces; f++) {
             const int *v = m->faces[f].v;
             triangle tri = {m->positions[v[0]], m->positions[v[1]], m->positions[v[2]]};
-            if (surface_list_add_triangle(list, tri, s->shader, k) < 0)
+            if (add_face(list, tri, s->shader, k, f) < 0)
                 return -1;
         }
         return 0;

@@ -58,6 +58,7 @@ bool surface_intersect(const surface *s, const surface_list *list, ray r, real t
         .normal = n,
         .surface = -1, /* the list's loop fills it in */
         .source = s->source,
+        .face = s->face,
         .shader = s->shader,
         .beta = beta,
         .gamma = gamma,

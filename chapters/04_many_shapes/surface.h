@@ -29,6 +29,7 @@ typedef struct {
     };
     int shader; /* index into scene.shaders; -1: none (white) */
     int source; /* index into scene.surfaces: the Sphere, Box, Mesh or Triangle it came from */
+    int face;   /* which piece of that source: a Mesh's face, a Box's triangle (0 .. 11); 0 otherwise */
 } surface;
 
 typedef struct {
@@ -47,6 +48,7 @@ typedef struct {
                        * a sphere's points outwards, a triangle's is normalize((b - a) x (c - a)) */
     int surface;      /* index into the surface_list */
     int source;       /* index into scene.surfaces */
+    int face;         /* which piece of the source: a Mesh's face, a Box's triangle; 0 otherwise */
     int shader;       /* index into scene.shaders; -1: none */
     real beta, gamma; /* a triangle's barycentric coordinates of point; 0 for a sphere */
 } hit_record;

@@ -9,7 +9,7 @@ color shade_lambert(const tracer *tr, const shading_point *sp, int depth, uint64
 {
     (void)depth; /* no ray leaves the surface here: nothing to count */
     (void)rays;
-    const scene_shader *shader = hit_shader(tr->desc, &sp->hit);
+    const scene_shader *shader = sp->shader;
     if (shader->kind == SHADER_RGB_NORMALS) /* a geometry check, not lit: chapter 04's colour */
         return flat_color(tr->desc, &sp->hit);
     if (tr->desc->n_lights == 0)

@@ -51,6 +51,7 @@ shading_view *shading_prepare(const shading_stage *stage, const scene *desc, sph
         .desc = desc,
         .shade = stage->shade,
         .knobs = stage->shade_knobs,
+        .weight = {1, 1, 1}, /* eye rays */
     };
     return view;
 }

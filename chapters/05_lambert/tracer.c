@@ -37,7 +37,7 @@ color trace(const tracer *tr, ray r, real t_min, real t_max, int depth, uint64_t
     hit_record hit;
     if (!tr->closest_hit(tr->accel, r, t_min, t_max, &hit))
         return tr->desc->back_color;
-    shading_point sp = {.r = r, .hit = hit};
+    shading_point sp = {.r = r, .hit = hit, .shader = hit_shader(tr->desc, &hit)};
     sp.v = vec3_neg(vec3_normalize(r.d));           /* v = -normalize(ray.direction) */
     sp.n = normal_towards_viewer(hit.normal, r.d); /* the normal, turned to face v */
     return tr->shade(tr, &sp, depth, rays);

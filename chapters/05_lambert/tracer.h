@@ -54,6 +54,8 @@ typedef struct {
     vec3 n;         /* the SHADING normal: unit, turned towards the viewer (n . v >= 0);
                      * the geometric one here, an interpolated one from chapter 10 on */
     vec3 v;         /* unit vector from the point towards the viewer: -normalize(d) */
+    const scene_shader *shader; /* the point's shader, looked up once by trace() (hit_shader);
+                                 * chapter 10 hands on a copy whose k_d is the texture's */
 } shading_point;
 /* end snippet */
 
@@ -73,6 +75,8 @@ struct tracer {
     shade_fn shade;             /* the stage's shading */
     const void *knobs;          /* the stage's knobs; each stage's knob struct begins with
                                  * the one of the stage it builds on (NULL for chapter 05) */
+    color weight;               /* the weight of the path its rays continue: the product of the
+                                 * coefficients along it (chapter 08); 1 for eye rays */
 };
 /* end snippet */
 

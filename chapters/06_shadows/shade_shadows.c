@@ -13,7 +13,7 @@ bool light_in_front(const shading_point *sp, const scene_light *light)
 /* snippet: shade_shadows */
 color shade_shadows(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
-    const scene_shader *shader = hit_shader(tr->desc, &sp->hit);
+    const scene_shader *shader = sp->shader;
     if (shader->kind == SHADER_RGB_NORMALS || tr->desc->n_lights == 0)
         return shade_lambert(tr, sp, depth, rays); /* nothing to shadow */
     const scene_light *light = &tr->desc->lights[0];

@@ -7,22 +7,18 @@ const path_knobs *tracer_path_knobs(const tracer *tr)
     return tr->knobs ? (const path_knobs *)tr->knobs : &defaults;
 }
 
-color path_weight(const tracer *tr, int depth)
-{
-    return depth == 0 ? color_make(1, 1, 1) : ((const path_tracer *)tr)->weight;
-}
-
 /* snippet: path_next */
-bool path_next(const tracer *tr, int depth, color k, path_tracer *next)
+bool path_next(const tracer *tr, int depth, color k, tracer *next)
 {
     const path_knobs *knobs = tracer_path_knobs(tr);
     if (depth >= knobs->depth || depth >= PATH_MAX_DEPTH) /* the depth is exhausted: the ray brings black */
         return false;
-    color w = color_mul(path_weight(tr, depth), k); /* the weight of the new ray's path */
+    color w = color_mul(tr->weight, k); /* the weight of the new ray's path */
     real largest = real_fmax(w.r, real_fmax(w.g, w.b));
     if (!(largest > 0) || largest < knobs->min_weight) /* nothing, or too little, to carry */
         return false;
-    *next = (path_tracer){.tr = *tr, .weight = w};
+    *next = *tr;
+    next->weight = w;
     return true;
 }
 /* end snippet */

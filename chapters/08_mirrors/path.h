@@ -16,11 +16,9 @@
  * A coefficient of zero never casts a ray, whatever the knobs (docs/design.md:
  * "no mirror rays where the mirror coefficient is zero").
  *
- * The weight travels with the tracer.  trace() hands the shade function the
- * tracer it was given, unchanged; so a ray that path_next lets through is
- * traced with a path_tracer, a copy of the tracer that also carries the
- * path's weight, and a shade function called at depth d >= 1 holds one.  An
- * eye ray (depth 0) is traced with the renderer's own tracer, weight 1.
+ * The weight travels with the tracer (tracer.weight): an eye ray's tracer
+ * carries 1, and path_next hands a deeper ray a copy of the tracer that
+ * carries the weight of its path.
  */
 #ifndef CH08_PATH_H
 #define CH08_PATH_H
@@ -52,22 +50,10 @@ typedef struct {
  * the defaults when tr->knobs is NULL. */
 const path_knobs *tracer_path_knobs(const tracer *tr);
 
-/* snippet: path_tracer */
-/* A tracer on a path: what every ray beyond the eye ray is traced with. */
-typedef struct {
-    tracer tr;    /* first member: &next.tr is a tracer for trace() */
-    color weight; /* the product of the coefficients along the path */
-} path_tracer;
-/* end snippet */
-
-/* The weight of the path that reached a shade function called with tr at
- * `depth`: 1 for an eye ray, the path_tracer's weight beyond. */
-color path_weight(const tracer *tr, int depth);
-
 /* Whether a ray leaving a point reached at `depth` with coefficient k (k_m, R
  * or T) is cast: not when depth is already the deepest, not when the path's
  * weight times k is zero or below --min-weight in every channel.  When it is,
  * *next is the tracer to trace it with, at depth + 1. */
-bool path_next(const tracer *tr, int depth, color k, path_tracer *next);
+bool path_next(const tracer *tr, int depth, color k, tracer *next);
 
 #endif

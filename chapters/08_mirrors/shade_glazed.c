@@ -7,7 +7,7 @@
 color shade_glazed(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
     color L = shade_phong(tr, sp, depth, rays); /* L_a + L_r: chapter 07 */
-    const scene_shader *shader = hit_shader(tr->desc, &sp->hit);
+    const scene_shader *shader = sp->shader;
     color k_m = shader->mirror_coefficient;
     if (shader->kind == SHADER_RGB_NORMALS || (k_m.r == 0 && k_m.g == 0 && k_m.b == 0))
         return L; /* no mirror: no mirror ray */

@@ -30,18 +30,18 @@ glass_event glass_at(const shading_point *sp, real eta, fresnel_mode mode)
 
 color transmitted_radiance(const tracer *tr, const shading_point *sp, vec3 T, color k, int depth, uint64_t *rays)
 {
-    path_tracer next;
+    tracer next;
     if (!path_next(tr, depth, k, &next))
         return color_make(0, 0, 0);
     ray through = spawn_ray(sp, T, tracer_eps(tr)); /* starts on the far side of the surface */
     ++rays[RAY_REFRACTED];
-    return trace(&next.tr, through, 0, REAL_INFINITY, depth + 1, rays);
+    return trace(&next, through, 0, REAL_INFINITY, depth + 1, rays);
 }
 
 /* snippet: shade_glass */
 color shade_glass(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
-    const scene_shader *shader = hit_shader(tr->desc, &sp->hit);
+    const scene_shader *shader = sp->shader;
     if (shader->kind != SHADER_GLASS)
         return shade_glazed(tr, sp, depth, rays); /* chapter 08 */
     glass_event e = glass_at(sp, shader->refractive_index, tracer_fresnel(tr));

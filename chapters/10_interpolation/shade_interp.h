@@ -49,13 +49,16 @@ typedef struct {
     mesh_uv uv;
 } interp_point;
 
-/* The interpolated attributes of the point tr's closest-hit query found:
- * tr->accel is a face_query (face_query.h). */
+/* The mesh face a hit lies on (chapter 04 records it in hit.face): the mesh
+ * in *m and the face, or NULL when the hit is not on a Mesh surface. */
+const mesh_face *face_of_hit(const scene *desc, const hit_record *hit, const mesh **m);
+
+/* The interpolated attributes of the point sp. */
 interp_point interp_at(const tracer *tr, const shading_point *sp);
 
 /* A shade_fn: the shading of chapter 09 with the interpolated normal and the
  * textured diffuse colour.  tr->knobs is an interp_knobs (NULL: the
- * defaults); tr->accel is a face_query. */
+ * defaults). */
 color shade_interp(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays);
 
 #endif

@@ -29,8 +29,8 @@ static void grid_release(void *owned)
     free(owned);
 }
 
-/* The grid over `list`, or the list itself under --accel=list. */
-static int grid_query(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
+/* snippet: grid_query */
+int grid_query(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
 {
     if (grid_settings.accel == GRID_ACCEL_LIST)
         return hit_query_linear(list, desc, q, err, err_size);
@@ -46,17 +46,11 @@ static int grid_query(const surface_list *list, const scene *desc, hit_query *q,
     return 0;
 }
 
-/* snippet: grid_faces */
-int grid_faces(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
-{
-    return face_query_build(list, desc, grid_query, q, err, err_size);
-}
-
 shading_stage grid_stage(void)
 {
     /* chapter 10's knobs, then the grid's */
     static knob rows[MAX_STAGE_KNOBS];
-    shading_stage stage = interp_stage(grid_faces); /* chapter 10's stage, the grid as its query */
+    shading_stage stage = interp_stage(grid_query); /* chapter 10's stage, the grid as its query */
     int n = 0;
     for (int k = 0; k < stage.n_knobs; k++)
         rows[n++] = stage.knobs[k];

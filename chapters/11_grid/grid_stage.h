@@ -28,11 +28,11 @@ extern grid_knobs grid_settings;
 enum { GRID_KNOBS = 2 };
 extern const knob grid_knob_rows[GRID_KNOBS];
 
-/* A build_query_fn: chapter 10's face_query around the grid of `list`
- * (grid_settings), or around the linear scan under --accel=list. */
-int grid_faces(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
+/* A build_query_fn: the grid of `list` (grid_settings), or chapter 04's
+ * linear scan under --accel=list.  Returns 0, or -1 with "path: problem". */
+int grid_query(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
 
-/* Chapter 11's stage: chapter 10's over grid_faces, with this chapter's
+/* Chapter 11's stage: chapter 10's over grid_query, with this chapter's
  * name, knobs and built-in scene. */
 shading_stage grid_stage(void);
 

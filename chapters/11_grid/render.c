@@ -10,7 +10,7 @@
 int main(int argc, char **argv)
 {
     /* snippet: stage */
-    const shading_stage stage = grid_stage(); /* interp_stage(grid_faces): chapter 10's stage over the grid */
+    const shading_stage stage = grid_stage(); /* interp_stage(grid_query): chapter 10's stage over the grid */
     /* end snippet */
     return shading_main(&stage, argc, argv);
 }

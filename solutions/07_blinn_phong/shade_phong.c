@@ -26,7 +26,7 @@ color light_contribution(const tracer *tr, const shading_point *sp, const scene_
 /* snippet: shade_phong */
 color shade_phong(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
-    const scene_shader *shader = hit_shader(tr->desc, &sp->hit);
+    const scene_shader *shader = sp->shader;
     if (shader->kind == SHADER_RGB_NORMALS) /* a geometry check, not lit */
         return shade_lambert(tr, sp, depth, rays);
     /* EXERCISE lights: the radiance of the lecture's model at sp: the ambient light and every light of the

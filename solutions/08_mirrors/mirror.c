@@ -24,12 +24,12 @@ color mirror_radiance(const tracer *tr, const shading_point *sp, color k_m, int 
      * ray with its weight k_m, if the path goes on at all, leaving the surface as every secondary ray
      * does, counted, and traced one level deeper (README, "Calling trace again" and "Where the mirror
      * ray starts"). */
-    path_tracer next;
+    tracer next;
     if (!path_next(tr, depth, k_m, &next))
         return color_make(0, 0, 0);
     ray mirror = spawn_ray(sp, reflect(sp->r.d, sp->n), tracer_eps(tr));
     ++rays[RAY_REFLECTED];
-    return trace(&next.tr, mirror, 0, REAL_INFINITY, depth + 1, rays);
+    return trace(&next, mirror, 0, REAL_INFINITY, depth + 1, rays);
     /* STUB
     (void)tr;
     (void)sp;

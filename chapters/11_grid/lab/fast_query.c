@@ -6,7 +6,6 @@
 #include <time.h>
 
 #include "04_many_shapes/closest_hit.h"
-#include "10_interpolation/face_query.h"
 
 fast_knobs fast_settings;
 _Thread_local query_tally query_tally_here;
@@ -50,7 +49,7 @@ static void lab_release(void *owned)
     free(lq);
 }
 
-static int lab_query_build(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
+int lab_query_build(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
 {
     lab_query *lq = calloc(1, sizeof *lq);
     if (!lq) {
@@ -81,9 +80,4 @@ static int lab_query_build(const surface_list *list, const scene *desc, hit_quer
     }
     *q = (hit_query){.closest_hit = lab_closest_hit, .accel = lq, .owned = lq, .release = lab_release};
     return 0;
-}
-
-int lab_faces(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
-{
-    return face_query_build(list, desc, lab_query_build, q, err, err_size);
 }

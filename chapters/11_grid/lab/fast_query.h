@@ -1,8 +1,7 @@
 /* fast_query.h - chapter 11's lab: the fast grid as the stage's closest-hit query, counted.
  *
  * The lab's renderer runs chapter 11's stage with --accel=list|grid|fast:
- * the linear scan, the lesson's grid or the fast grid, each wrapped in
- * chapter 10's face_query.  Every query adds what it did to the calling
+ * the linear scan, the lesson's grid or the fast grid.  Every query adds what it did to the calling
  * thread's tally, which the renderer reads per sample (heat maps) and sums
  * (the report).
  */
@@ -41,7 +40,7 @@ typedef struct {
     double build_seconds;
 } lab_query;
 
-/* A build_query_fn: chapter 10's face_query around a lab_query. */
-int lab_faces(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
+/* A build_query_fn: a lab_query of fast_settings.accel over `list`. */
+int lab_query_build(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
 
 #endif

@@ -15,7 +15,6 @@
 
 #include "01_camera_rays/pixel.h"
 #include "04_many_shapes/shape_knobs.h"
-#include "10_interpolation/face_query.h"
 #include "11_grid/lab/fast_query.h"
 #include "11_grid/lab/heat.h"
 #include "renderer.h"
@@ -116,8 +115,7 @@ static void report(const void *prepared, render_stats stats, FILE *out)
         add_tally(&sum, &pv->slots[t].tally);
     double queries = sum.queries ? (double)sum.queries : 1;
     const surface_list *list = &pv->view->list;
-    const face_query *fq = pv->view->query.accel; /* chapter 10's face_query around the lab's */
-    const lab_query *lq = fq->inner.accel;
+    const lab_query *lq = pv->view->query.accel;
     if (lq->accel == LAB_ACCEL_LIST) {
         fprintf(out, "11_grid: linear scan over %d surfaces: %d intersection tests per ray; traced in %.3f s\n",
                 list->n, list->n, stats.seconds);
@@ -141,7 +139,7 @@ static void report(const void *prepared, render_stats stats, FILE *out)
 int main(int argc, char **argv)
 {
     the_stage = grid_stage();
-    the_stage.build_query = lab_faces;
+    the_stage.build_query = lab_query_build;
     knob knobs[MAX_KNOBS];
     int n_knobs = 0;
     for (int k = 0; k < SHAPE_KNOBS; k++) /* --sphere and --triangle first */
