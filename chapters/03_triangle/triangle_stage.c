@@ -7,10 +7,14 @@
 #include "03_triangle/scenes/icosahedron.h"
 #include "scene_build.h"
 
-static const char *const triangle_choices[] = {"cramer", "watertight", NULL};
-static int test = TRIANGLE_CRAMER; /* triangle_choices is in the order of the enum */
+static const char *const triangle_choices[] = {"cramer", "watertight", NULL}; /* in the order of the enum */
+static int test = TRIANGLE_CRAMER;
 
-const knob triangle_stage_knob = {"triangle", KNOB_CHOICE, &test, triangle_choices, "the ray-triangle test"};
+knob triangle_knob(int *choice)
+{
+    return (knob){"triangle", KNOB_CHOICE, choice, triangle_choices, "ray-triangle test (chapter 03)"};
+}
+
 
 /* The closest hit among all triangles: every hit found becomes the far end
  * of the window for the rest, so at the end the nearest one is left.  (The
@@ -120,10 +124,12 @@ void *triangle_stage_prepare(const scene *desc, char *err, size_t err_size)
 
 renderer triangle_stage_renderer(void)
 {
+    static knob row;
+    row = triangle_knob(&test);
     return (renderer){
         .name = "03_triangle",
         .summary = "03_triangle: triangles coloured by their barycentric coordinates",
-        .knobs = &triangle_stage_knob,
+        .knobs = &row,
         .n_knobs = 1,
         .modelled = FEATURE_TRIANGLES,
         .default_width = 512,

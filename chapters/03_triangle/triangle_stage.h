@@ -22,8 +22,9 @@ typedef struct {
     triangle_test test; /* what --triangle chose */
 } triangle_stage;
 
-/* --triangle=cramer|watertight, Cramer's rule by default. */
-extern const knob triangle_stage_knob;
+/* The row of --triangle=cramer|watertight aimed at *choice (a triangle_test),
+ * for this renderer and every later one. */
+knob triangle_knob(int *choice);
 
 /* The closest hit among all triangles with test t: the index of its
  * triangle, or -1 for none. */

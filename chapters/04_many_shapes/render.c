@@ -29,10 +29,12 @@ static color sample(const void *prepared, real u, real v, uint64_t *rays)
 
 int main(int argc, char **argv)
 {
+    knob rows[SHAPE_KNOBS];
+    shape_knob_rows(rows);
     const renderer r = {
         .name = "04_many_shapes",
         .summary = "04_many_shapes: every surface of the scene, the closest hit, one flat colour per surface",
-        .knobs = shape_knobs,
+        .knobs = rows,
         .n_knobs = SHAPE_KNOBS,
         .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |
                     FEATURE_RGB_NORMALS,

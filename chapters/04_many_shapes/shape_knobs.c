@@ -4,14 +4,14 @@
 static const char *const sphere_choices[] = {"robust", "textbook", NULL};
 static const sphere_formula sphere_formulas[] = {SPHERE_ROBUST, SPHERE_TEXTBOOK};
 static int sphere_choice = 0;
-static const char *const triangle_choices[] = {"cramer", "watertight", NULL};
 static const triangle_test triangle_tests[] = {TRIANGLE_CRAMER, TRIANGLE_WATERTIGHT};
-static int triangle_choice = TRIANGLE_TEST_DEFAULT; /* triangle_choices is in the order of the enum */
+static int triangle_choice = TRIANGLE_TEST_DEFAULT; /* chapter 03's choices are in the order of the enum */
 
-const knob shape_knobs[SHAPE_KNOBS] = {
-    {"sphere", KNOB_CHOICE, &sphere_choice, sphere_choices, "ray-sphere formula (chapter 02)"},
-    {"triangle", KNOB_CHOICE, &triangle_choice, triangle_choices, "ray-triangle test (chapter 03)"},
-};
+void shape_knob_rows(knob rows[SHAPE_KNOBS])
+{
+    rows[0] = (knob){"sphere", KNOB_CHOICE, &sphere_choice, sphere_choices, "ray-sphere formula (chapter 02)"};
+    rows[1] = triangle_knob(&triangle_choice);
+}
 
 sphere_formula chosen_sphere_formula(void) { return sphere_formulas[sphere_choice]; }
 

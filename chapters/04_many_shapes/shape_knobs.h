@@ -4,17 +4,19 @@
  * the surface list, and takes the same two knobs for them:
  *   --sphere=robust|textbook     chapter 02's formula (robust by default);
  *   --triangle=cramer|watertight chapter 03's test (TRIANGLE_TEST_DEFAULT).
- * A renderer lists shape_knobs among its knobs and, once they are parsed,
+ * A renderer lists shape_knob_rows among its knobs and, once they are parsed,
  * builds its surface list with the chosen formula and test.
  */
 #ifndef CH04_SHAPE_KNOBS_H
 #define CH04_SHAPE_KNOBS_H
 
+#include "03_triangle/triangle_stage.h"
 #include "04_many_shapes/surface.h"
 #include "options.h"
 
+/* The rows of --sphere and --triangle into rows[0 .. SHAPE_KNOBS - 1]. */
 enum { SHAPE_KNOBS = 2 };
-extern const knob shape_knobs[SHAPE_KNOBS];
+void shape_knob_rows(knob rows[SHAPE_KNOBS]);
 
 /* What --sphere and --triangle chose. */
 sphere_formula chosen_sphere_formula(void);

@@ -85,8 +85,7 @@ int shading_main(const shading_stage *stage, int argc, char **argv)
         fprintf(stderr, "%s: too many knobs (%d > %d)\n", stage->name, stage->n_knobs, MAX_STAGE_KNOBS);
         return 2;
     }
-    for (int k = 0; k < SHAPE_KNOBS; k++) /* --sphere and --triangle first */
-        knobs[k] = shape_knobs[k];
+    shape_knob_rows(knobs); /* --sphere and --triangle first */
     for (int k = 0; k < stage->n_knobs; k++)
         knobs[SHAPE_KNOBS + k] = stage->knobs[k];
     current = stage;

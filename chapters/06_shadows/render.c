@@ -12,18 +12,14 @@
 
 static spawn_knobs settings = SPAWN_KNOBS_DEFAULT;
 
-static const knob knobs[] = {
-    {"shadow-eps", KNOB_CHOICE, &settings.eps, eps_policy_names,
-     "where secondary rays start: none (the blunder), fixed 1e-3, bound (error bound)"},
-};
-
 int main(int argc, char **argv)
 {
+    knob rows[MAX_STAGE_KNOBS];
     const shading_stage stage = {
         .name = "06_shadows",
         .summary = "06_shadows: Lambertian shading and shadow rays towards the first light",
-        .knobs = knobs,
-        .n_knobs = sizeof knobs / sizeof knobs[0],
+        .knobs = rows,
+        .n_knobs = spawn_knob_rows(&settings, rows),
         .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |
                     FEATURE_RGB_NORMALS | FEATURE_LIGHTS | FEATURE_SHADOWS,
         .shade = shade_shadows,

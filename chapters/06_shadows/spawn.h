@@ -25,6 +25,7 @@
 #define CH06_SPAWN_H
 
 #include "05_lambert/tracer.h"
+#include "options.h"
 
 typedef enum { EPS_NONE, EPS_FIXED, EPS_BOUND } eps_policy;
 
@@ -47,6 +48,10 @@ typedef struct {
 
 /* The defaults, an initializer: the error bound. */
 #define SPAWN_KNOBS_DEFAULT {.eps = EPS_BOUND}
+
+/* The option rows of chapter 06's knobs, aimed at *k, into rows[]; returns
+ * how many (every later stage lists them through its own rows function). */
+int spawn_knob_rows(spawn_knobs *k, knob *rows);
 
 /* The policy of a tracer whose knobs begin with spawn_knobs (chapters 06-11);
  * the default when tr->knobs is NULL. */

@@ -13,20 +13,14 @@
 
 static phong_knobs settings = PHONG_KNOBS_DEFAULT;
 
-static const knob knobs[] = {
-    {"shadow-eps", KNOB_CHOICE, &settings.spawn.eps, eps_policy_names,
-     "where secondary rays start: none (the blunder), fixed 1e-3, bound (error bound)"},
-    {"phong", KNOB_CHOICE, &settings.form, phong_form_names,
-     "specular term: course k_s (n.h)^p I/r^2, lecture also times max(0, n.l)"},
-};
-
 int main(int argc, char **argv)
 {
+    knob rows[MAX_STAGE_KNOBS];
     const shading_stage stage = {
         .name = "07_blinn_phong",
         .summary = "07_blinn_phong: Blinn-Phong shading, ambient light and every light of the scene, with shadows",
-        .knobs = knobs,
-        .n_knobs = sizeof knobs / sizeof knobs[0],
+        .knobs = rows,
+        .n_knobs = phong_knob_rows(&settings, rows),
         .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |
                     FEATURE_RGB_NORMALS | FEATURE_LIGHTS | FEATURE_SHADOWS | FEATURE_MANY_LIGHTS |
                     FEATURE_PHONG | FEATURE_AMBIENT,

@@ -31,6 +31,9 @@ typedef struct {
 /* The defaults, an initializer: chapter 06's, and the course's form. */
 #define PHONG_KNOBS_DEFAULT {.spawn = SPAWN_KNOBS_DEFAULT, .form = PHONG_COURSE}
 
+/* The option rows of chapters 06-07's knobs, aimed at *k; returns how many. */
+int phong_knob_rows(phong_knobs *k, knob *rows);
+
 /* The form of a tracer whose knobs begin with phong_knobs (chapters 07-11);
  * the course's when tr->knobs is NULL. */
 phong_form tracer_phong_form(const tracer *tr);

@@ -46,6 +46,9 @@ typedef struct {
 /* --depth beyond this counts as this: the recursion must not exhaust the stack. */
 #define PATH_MAX_DEPTH 256
 
+/* The option rows of chapters 06-08's knobs, aimed at *k; returns how many. */
+int path_knob_rows(path_knobs *k, knob *rows);
+
 /* The knobs of a tracer whose knobs begin with path_knobs (chapters 08-11);
  * the defaults when tr->knobs is NULL. */
 const path_knobs *tracer_path_knobs(const tracer *tr);

@@ -16,25 +16,14 @@
 
 static glass_knobs settings = GLASS_KNOBS_DEFAULT;
 
-static const knob knobs[] = {
-    {"shadow-eps", KNOB_CHOICE, &settings.path.phong.spawn.eps, eps_policy_names,
-     "where secondary rays start: none (the blunder), fixed 1e-3, bound (error bound)"},
-    {"phong", KNOB_CHOICE, &settings.path.phong.form, phong_form_names,
-     "specular term: course k_s (n.h)^p I/r^2, lecture also times max(0, n.l)"},
-    {"depth", KNOB_INT, &settings.path.depth, NULL, "deepest bounce traced (0: eye rays only; at most 256)"},
-    {"min-weight", KNOB_REAL, &settings.path.min_weight, NULL,
-     "no ray whose path weight (product of k_m, R, 1 - R along it) is below this (0: off)"},
-    {"fresnel", KNOB_CHOICE, &settings.fresnel, fresnel_mode_names,
-     "glass reflectance: exact (Fresnel's equations) or schlick (Schlick's approximation)"},
-};
-
 int main(int argc, char **argv)
 {
+    knob rows[MAX_STAGE_KNOBS];
     const shading_stage stage = {
         .name = "09_refraction",
         .summary = "09_refraction: glass (Snell's law, total internal reflection, Fresnel) over chapter 08's mirrors",
-        .knobs = knobs,
-        .n_knobs = sizeof knobs / sizeof knobs[0],
+        .knobs = rows,
+        .n_knobs = glass_knob_rows(&settings, rows),
         .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |
                     FEATURE_RGB_NORMALS | FEATURE_LIGHTS | FEATURE_SHADOWS | FEATURE_MANY_LIGHTS |
                     FEATURE_PHONG | FEATURE_AMBIENT | FEATURE_MIRRORS | FEATURE_GLASS,

@@ -6,6 +6,14 @@
 #include "08_mirrors/shade_glazed.h"
 #include "09_refraction/refract.h"
 
+int glass_knob_rows(glass_knobs *k, knob *rows)
+{
+    int n = path_knob_rows(&k->path, rows); /* chapters 06-08's first */
+    rows[n++] = (knob){"fresnel", KNOB_CHOICE, &k->fresnel, fresnel_mode_names,
+                       "glass reflectance: exact (Fresnel's equations) or schlick (Schlick's approximation)"};
+    return n;
+}
+
 fresnel_mode tracer_fresnel(const tracer *tr)
 {
     static const glass_knobs defaults = GLASS_KNOBS_DEFAULT;

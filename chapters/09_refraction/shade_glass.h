@@ -45,6 +45,9 @@ typedef struct {
 /* The defaults, an initializer: chapter 08's, and Fresnel's exact equations. */
 #define GLASS_KNOBS_DEFAULT {.path = PATH_KNOBS_DEFAULT, .fresnel = FRESNEL_EXACT}
 
+/* The option rows of chapters 06-09's knobs, aimed at *k; returns how many. */
+int glass_knob_rows(glass_knobs *k, knob *rows);
+
 /* The Fresnel mode of a tracer whose knobs begin with glass_knobs (chapters
  * 09-11); exact when tr->knobs is NULL. */
 fresnel_mode tracer_fresnel(const tracer *tr);

@@ -82,16 +82,16 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
 
 int main(int argc, char **argv)
 {
+    /* The lesson's renderer, with the lab's knobs, scenes and pictures. */
+    renderer r = triangle_stage_renderer();
     const knob knobs[] = {
-        triangle_stage_knob,
+        r.knobs[0], /* the lesson's --triangle */
         {"show", KNOB_CHOICE, &show, show_choices, "what to colour each pixel by"},
         {"cracks", KNOB_INT, &cracks_steps, NULL,
          "first count the rays at an icosahedron's edges, in steps of 1/V, that slip through (0: off)"},
         {"degenerate", KNOB_INT, &degenerate_cases, NULL,
          "first count false hits at V degenerate triangles and V in-plane rays, and lost hits (0: off)"},
     };
-    /* The lesson's renderer, with the lab's knobs, scenes and pictures. */
-    renderer r = triangle_stage_renderer();
     r.name = LAB_NAME;
     r.summary = LAB_NAME ": the rays that slip between triangles (and, on request, the counts of\n"
                          "cracks and of false hits at degenerate triangles)";

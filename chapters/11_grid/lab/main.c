@@ -141,9 +141,8 @@ int main(int argc, char **argv)
     the_stage = grid_stage();
     the_stage.build_query = lab_query_build;
     knob knobs[MAX_KNOBS];
-    int n_knobs = 0;
-    for (int k = 0; k < SHAPE_KNOBS; k++) /* --sphere and --triangle first */
-        knobs[n_knobs++] = shape_knobs[k];
+    shape_knob_rows(knobs); /* --sphere and --triangle first */
+    int n_knobs = SHAPE_KNOBS;
     for (int k = 0; k < the_stage.n_knobs; k++) /* the lesson's, but its --accel: the lab's has three choices */
         if (strcmp(the_stage.knobs[k].name, "accel") != 0)
             knobs[n_knobs++] = the_stage.knobs[k];
