@@ -31,7 +31,8 @@ ifeq ($(filter $(REAL),double float),)
 $(error REAL must be double or float, not '$(REAL)')
 endif
 
-compiler := $(if $(findstring clang,$(CC)),-clang)
+# clang builds into build-clang/, another gcc than the default (CC=gcc-11) into build-gcc-11/.
+compiler := $(if $(findstring clang,$(CC)),-clang,$(if $(filter-out cc gcc,$(notdir $(CC))),-$(notdir $(CC))))
 variant := $(compiler)$(if $(filter float,$(REAL)),-float)$(if $(filter 1,$(SANITIZE)),-asan)$(if $(filter 1,$(STUDENT)),-student)$(if $(filter 1,$(STUDENT)),$(if $(strip $(REFERENCE)),-ref$(subst $(eval) ,,$(strip $(REFERENCE)))))
 BUILD ?= build$(variant)
 
@@ -336,6 +337,7 @@ globe-texture: $(BUILD)/tools/globe-png
 	$(BUILD)/tools/globe-png chapters/10_interpolation/scenes/globe.png
 
 figure-renderers:
+	@tools/deps.sh "$(CC)" figures
 	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_BUILD)/tools/panels
 	@$(if $(FIG_DOUBLE),$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_DOUBLE))
 	@$(if $(FIG_FLOAT),$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=float BUILD=$(FIG_BUILD)-float $(FIG_FLOAT))
