@@ -27,6 +27,15 @@ REFERENCE ?=
 SANITIZE ?= 0
 OPT ?= -O2 -g
 
+# V=1 shows every command and each suite's whole output.  By default a
+# compile shows only its warnings and errors, each program built one line
+# ("  LINK    path"), and each test suite one line (its output goes to a log
+# that is named when it fails: tools/run-tests.sh).
+V ?= 0
+Q := $(if $(filter 1,$(V)),,@)
+# (make -s prints nothing at all.)
+QLINK = $(if $(Q),@$(if $(findstring s,$(firstword -$(MAKEFLAGS))),,echo "  LINK    $@";))
+
 ifeq ($(filter $(REAL),double float),)
 $(error REAL must be double or float, not '$(REAL)')
 endif
@@ -86,8 +95,9 @@ ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS) $(if $(wildcard fuz
 
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
-# The built-in scenes' images: out/, or out-student/ for the student build.
-OUT := out$(if $(filter 1,$(STUDENT)),-student$(if $(strip $(REFERENCE)),-ref$(subst $(eval) ,,$(strip $(REFERENCE)))))
+# The built-in scenes' images: one folder per build variant, as build/ is:
+# out/, out-float/, out-clang/, out-student/, out-student-ref01/, ...
+OUT := out$(variant)
 IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
@@ -108,46 +118,46 @@ deps:
 COMPILE_AS ?=
 $(BUILD)/obj/%.o: %.c | deps
 	@mkdir -p $(@D)
-	$(if $(and $(COMPILE_AS),$(filter chapters/%,$<)),tools/compile-as.sh $(COMPILE_AS) $@ $<) $(CC) $(CPPFLAGS) $(CFLAGS) \
+	$(Q)$(if $(and $(COMPILE_AS),$(filter chapters/%,$<)),tools/compile-as.sh $(COMPILE_AS) $@ $<) $(CC) $(CPPFLAGS) $(CFLAGS) \
 	    $(if $(and $(COMPILE_AS),$(filter chapters/%,$<)),,-c $< -o $@)
 
 define chapter_rules
 $(BUILD)/$1/render: $(call objs,chapters/$1/render.c) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(call link,$$^) -o $$@
+	$$(QLINK)$$(call link,$$^) -o $$@
 
 $(OUT)/$1.png: $(BUILD)/$1/render
 	@mkdir -p $(OUT)
-	$(BUILD)/$1/render -o $$@
+	$(Q)$(BUILD)/$1/render -o $$@
 
 $(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(call link,$$^) -lcmocka -o $$@
+	$$(QLINK)$$(call link,$$^) -lcmocka -o $$@
 
 # The library of chapter $1's reference objects, for a student's copy.
 $(BUILD)/reference/lib$1.a: $(call objs,$(addprefix solutions/$1/,$(EXERCISES_$1)))
 	@mkdir -p $$(@D)
-	rm -f $$@ && ar rcs $$@ $$^
+	$(Q)rm -f $$@ && ar rcs $$@ $$^
 endef
 $(foreach c,$(CHAPTERS),$(eval $(call chapter_rules,$c)))
 
 $(BUILD)/tests/test_scenes: $(call objs,tests/test_scenes.c $(TEST_SUPPORT) $(call stages_upto,$(lastword $(CHAPTERS))) $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 
 $(BUILD)/tests/test_common_%: $(call objs,tests/test_common_%.c $(TEST_SUPPORT) $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 
 $(BUILD)/tests/test_fuzz_corpus: $(call objs,tests/test_fuzz_corpus.c $(TEST_SUPPORT) fuzz/support.c \
                                   $(FUZZ_TARGETS:%=fuzz/%.c) $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 
 # Any build's replay driver: `$(BUILD)/fuzz/replay scene FILE...` (docs/fuzzing.md).
 $(BUILD)/fuzz/replay: $(call objs,fuzz/replay.c fuzz/support.c $(FUZZ_TARGETS:%=fuzz/%.c) $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
 # ---- fuzzing: libFuzzer targets of the readers (docs/fuzzing.md) ------------------
 #
@@ -174,7 +184,7 @@ deps-fuzz:
 define fuzz_rules
 $(FUZZ_BUILD)/fuzz_$1: fuzz/$1.c fuzz/support.c $(FUZZ_SRC_$1) $(wildcard fuzz/*.h common/*.h) | deps-fuzz
 	@mkdir -p $$(@D)
-	$$(FUZZ_CC) $$(CPPFLAGS) $$(FUZZ_CFLAGS) $$(filter %.c,$$^) -lexpat -lm -o $$@
+	$$(QLINK)$$(FUZZ_CC) $$(CPPFLAGS) $$(FUZZ_CFLAGS) $$(filter %.c,$$^) -lexpat -lm -o $$@
 endef
 $(foreach t,$(FUZZ_TARGETS),$(eval $(call fuzz_rules,$t)))
 
@@ -237,13 +247,13 @@ grade_links = $1: links $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$
 define grade_rules
 $(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call grade_stages,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(call link,$$^) -lcmocka -o $$@
+	$$(QLINK)$$(call link,$$^) -lcmocka -o $$@
 endef
 $(foreach c,$(CHAPTER_TESTS:test_%=%),$(eval $(call grade_rules,$c)))
 
 $(BUILD)/tools/%: $(BUILD)/obj/tools/%.o
 	@mkdir -p $(@D)
-	$(CC) $^ -o $@
+	$(QLINK)$(CC) $^ -o $@
 
 grade:
 	@$(if $(GRADE_CHAPTERS),,echo "make grade: $(if $(CHAPTER),no chapter '$(CHAPTER)' has a test suite,no chapter has a test suite) (chapters with one: $(or $(CHAPTER_TESTS:test_%=%),none))" >&2; exit 2)
@@ -326,12 +336,12 @@ FIG_FLOAT := $(patsubst float/%,$(FIG_BUILD)-float/%/render,$(filter float/%,$(F
 # Puts labelled panels side by side (the `panels` lines of figures.txt).
 $(BUILD)/tools/panels: $(BUILD)/obj/tools/panels.o
 	@mkdir -p $(@D)
-	$(CC) $^ -lstb -lm -o $@
+	$(QLINK)$(CC) $^ -lstb -lm -o $@
 
 # chapters/10_interpolation/scenes/globe.png is globe_texture's map (sphere_mesh.h) as a file.
 $(BUILD)/tools/globe-png: $(call objs,tools/globe-png.c chapters/10_interpolation/sphere_mesh.c $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(call link,$^) -lstb -o $@
+	$(QLINK)$(call link,$^) -lstb -o $@
 
 globe-texture: $(BUILD)/tools/globe-png
 	$(BUILD)/tools/globe-png chapters/10_interpolation/scenes/globe.png
@@ -376,7 +386,7 @@ check: $(if $(HANDOUT),,check-skeletons check-snippets check-figures check-links
 
 # One build's suites: build them all, run them all, and count.
 test-suites: $(TEST_BINS)
-	@tools/run-tests.sh $(BUILD)/test-results.txt $(TEST_BINS)
+	@V=$(V) tools/run-tests.sh $(BUILD)/test-results.txt $(TEST_BINS)
 
 # Every renderer of this build over the scenes at the extremes, the chapters'
 # own and the Cornell corpus's: no NaN or infinite sample, no crash, and (in
@@ -384,17 +394,24 @@ test-suites: $(TEST_BINS)
 test-extremes: renderers
 	@tools/extremes.sh $(BUILD)
 
+# The build's own behaviour: what make prints, where the images go, which
+# packages it needs, what a student's copy says of itself (tests/make.sh).
+.PHONY: test-make
+test-make:
+	@CC="$(CC)" tests/make.sh
+
 # The double build, the float build and the sanitizer build (with the
-# renders at the extremes and the fuzz corpus replay), then the checks
-# that text, skeletons and figures match their sources.
+# renders at the extremes and the fuzz corpus replay), then the build's own
+# checks and the checks that text, skeletons and figures match their sources.
 test:
 	@rm -f build*/test-results.txt
-	$(MAKE) --no-print-directory test-suites
-	$(MAKE) --no-print-directory REAL=float BUILD=$(BUILD)-float test-suites
-	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-suites
-	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-extremes
+	$(Q)$(MAKE) --no-print-directory test-suites
+	$(Q)$(MAKE) --no-print-directory REAL=float BUILD=$(BUILD)-float test-suites
+	$(Q)$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-suites
+	$(Q)$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-extremes
 	@tools/sum-results.sh $(BUILD) $(BUILD)-float $(BUILD)-asan
-	$(MAKE) --no-print-directory check
+	$(Q)$(MAKE) --no-print-directory test-make
+	$(Q)$(MAKE) --no-print-directory check
 
 # ---- bench: the speed/accuracy measurements of docs/measurements.md ----------------
 #
@@ -407,11 +424,11 @@ BENCH_TOOLS := $(addprefix $(BUILD)/bench-tools/,imgcmp tessellate checker scene
 
 $(BUILD)/bench-tools/scene2pov: $(call objs,bench/scene2pov.c $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
 $(BUILD)/bench-tools/%: $(BUILD)/obj/bench/%.o
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
 .PHONY: bench bench-tools
 bench-tools: $(BENCH_TOOLS)
@@ -427,9 +444,10 @@ bench:
 # ---- help -----------------------------------------------------------------------
 
 help:
-	@echo "make                 build every chapter and render its built-in scene into out/"
+	@echo "make                 build every chapter and render its built-in scene into $(OUT)/ (out-float/ for REAL=float, ...)"
 	@echo "make STUDENT=1       the same from the student's files in chapters/ (into build-student/)"
 	@echo "make test            all suites: double, float (REAL=float) and sanitizer builds, then make check"
+	@echo "make test-make       the build's own behaviour: output, image folders, packages, the student's copy"
 	@echo "make test-extremes   every renderer over tests/extremes/ and the other scenes, failing on NaN"
 	@echo "make renderers       build every chapter's renderer into $(BUILD)/NN_name/render"
 	@echo "make tests           build the test suites of this build"
@@ -456,11 +474,12 @@ help:
 	@echo "                     findings go to $(FUZZ_BUILD)/ (docs/fuzzing.md)"
 	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
+	@echo "           V=1 (every command and each suite's whole output; by default one line each, logs in BUILD/logs/)"
 	@echo "           REFERENCE=\"01 02\" (with STUDENT=1: these chapters from the reference)"
 	@echo "chapters: $(CHAPTERS)"
 
 clean:
-	rm -rf build build-* out out-student*
+	rm -rf build build-* out out-*
 
 # The grid's benchmark against Embree (make bench-grid); a student's copy has no bench/.
 ifeq ($(HANDOUT),)

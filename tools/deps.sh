@@ -11,7 +11,8 @@
 #
 # Each need is probed by compiling a one-line program with CC.  What is
 # missing is installed with apt-get (as root) or sudo apt-get (when sudo works
-# without a password); otherwise one line names the packages and the build stops.
+# without a password); otherwise (or with DEPS_NO_INSTALL=1, as tests/make.sh
+# runs it) one line names the packages and the build stops.
 cc=${1:-cc}
 [ $# -gt 0 ] && shift
 missing=""
@@ -77,11 +78,16 @@ fi
 
 [ -z "$missing" ] && exit 0
 
-if [ "$(id -u)" = 0 ]; then
+if [ -n "${DEPS_NO_INSTALL:-}" ]; then
+    apt=
+elif [ "$(id -u)" = 0 ]; then
     apt=apt-get
 elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
     apt="sudo apt-get"
 else
+    apt=
+fi
+if [ -z "$apt" ]; then
     echo "missing Debian packages:$missing (install them with: sudo apt-get install$missing)" >&2
     exit 1
 fi

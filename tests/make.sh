@@ -1,0 +1,124 @@
+#!/bin/bash
+# make.sh - checks of the build's own behaviour (make test-make, part of make test):
+# what `make` prints, where it puts images, which packages it needs, and what
+# a student's copy says about itself.  Each check prints one line; the script
+# fails when any check fails.  CC is the compiler of the calling build.
+set -u
+cd "$(dirname "$0")/.." || exit 1
+cc=${CC:-cc}
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+failed=0
+count=0
+
+# check NAME COMMAND...: runs the command, which prints why it fails.
+check() {
+    local name=$1
+    shift
+    count=$((count + 1))
+    if "$@" >"$tmp/why" 2>&1; then
+        echo "  ok      $name"
+    else
+        echo "  FAIL    $name:"
+        sed 's/^/          /' "$tmp/why"
+        failed=$((failed + 1))
+    fi
+}
+
+# Each build variant renders the built-in scenes into its own folder.
+image_folders() {
+    local args want got
+    while IFS='|' read -r args want; do
+        # shellcheck disable=SC2086
+        got=$(make -n -B --no-print-directory CC="$cc" $args all 2>&1 | grep -o ' -o [^ ]*/01_camera_rays\.png' | sort -u)
+        if [ "$got" != " -o $want/01_camera_rays.png" ]; then
+            echo "make $args renders chapter 01 with '${got# -o }', not into $want/"
+            return 1
+        fi
+    done <<'LIST'
+REAL=double|out
+REAL=float|out-float
+REAL=double STUDENT=1|out-student
+REAL=float STUDENT=1 REFERENCE=01|out-float-student-ref01
+LIST
+}
+
+# Building needs no gnuplot; the plotted figures do.  A PATH of the commands
+# tools/deps.sh uses, without gnuplot.
+no_gnuplot_for_building() {
+    mkdir -p "$tmp/bin"
+    local c
+    for c in sh "$cc" timeout id mktemp rm dpkg cat; do
+        ln -sf "$(command -v "$c")" "$tmp/bin/$c" || return 1
+    done
+    if ! PATH=$tmp/bin DEPS_NO_INSTALL=1 tools/deps.sh "$cc"; then
+        echo "tools/deps.sh $cc asks for more than the build needs (gnuplot is not on its PATH)"
+        return 1
+    fi
+    if PATH=$tmp/bin DEPS_NO_INSTALL=1 tools/deps.sh "$cc" figures 2>"$tmp/deps"; then
+        echo "tools/deps.sh $cc figures does not ask for gnuplot-nox when gnuplot is missing"
+        return 1
+    fi
+    grep -q 'gnuplot-nox' "$tmp/deps" || { echo "not named: $(cat "$tmp/deps")"; return 1; }
+}
+
+# A program built prints one line by default, its commands with V=1.
+quiet_build() {
+    local b=$tmp/build-quiet out
+    out=$(make --no-print-directory CC="$cc" BUILD="$b" "$b/tests/test_common_vec" 2>&1)
+    if [ "$out" != "  LINK    $b/tests/test_common_vec" ]; then
+        echo "make printed $(printf '%s\n' "$out" | wc -l) lines, not one LINK line:"
+        printf '%s\n' "$out" | head -5
+        return 1
+    fi
+    rm -f "$b/tests/test_common_vec" "$b/obj/tests/test_common_vec.o"
+    out=$(make --no-print-directory CC="$cc" BUILD="$b" V=1 "$b/tests/test_common_vec" 2>&1)
+    if ! printf '%s\n' "$out" | grep -q -- "-c tests/test_common_vec.c -o $b/obj/tests/test_common_vec.o"; then
+        echo "make V=1 does not show the compile command:"
+        printf '%s\n' "$out" | head -5
+        return 1
+    fi
+}
+
+# A suite gets one line; a failed one names its failed tests and its log,
+# which holds the whole output.  A stand-in suite that prints as cmocka does.
+quiet_suites() {
+    local suite=$tmp/suites/test_stand_in out
+    mkdir -p "$tmp/suites"
+    cat >"$suite" <<'SUITE'
+#!/bin/sh
+if [ "${1:-}" = --list ]; then printf 'test_good\ntest_bad\n'; exit 0; fi
+echo "[==========] Running 2 test(s)."
+echo "[ RUN      ] test_good"
+echo "[       OK ] test_good"
+echo "[ RUN      ] test_bad"
+echo "expected 1.5, got 2.5: the stand-in's message"
+echo "[  FAILED  ] test_bad"
+echo "[==========] 2 test(s) run."
+echo "[  PASSED  ] 1 test(s)."
+echo "[  FAILED  ] 1 test(s), listed below:"
+echo "[  FAILED  ] test_bad"
+exit 1
+SUITE
+    chmod +x "$suite"
+    out=$(tools/run-tests.sh "$tmp/suites/results.txt" "$suite" 2>&1)
+    local want="  FAIL    $suite: 1 of 2 failed: test_bad (output: $tmp/suites/logs/test_stand_in.log)
+$tmp/suites: 1 passed, 1 failed, 0 skipped"
+    if [ "$out" != "$want" ]; then
+        printf 'run-tests.sh printed:\n%s\nnot:\n%s\n' "$out" "$want"
+        return 1
+    fi
+    grep -q "the stand-in's message" "$tmp/suites/logs/test_stand_in.log" ||
+        { echo "the log lacks the suite's output"; return 1; }
+    out=$(V=1 tools/run-tests.sh "$tmp/suites/results.txt" "$suite" 2>&1)
+    printf '%s\n' "$out" | grep -q "the stand-in's message" || { echo "V=1 does not show the output"; return 1; }
+    printf '%s\n' "$out" | grep -qx "==== $suite" || { echo "V=1 does not name the suite"; return 1; }
+}
+
+check "each build variant has its own image folder" image_folders
+check "building needs no gnuplot, the figures do" no_gnuplot_for_building
+check "make prints one line per program, V=1 every command" quiet_build
+check "a suite prints one line, its output goes to a log" quiet_suites
+
+echo "tests/make.sh: $((count - failed)) of $count checks passed"
+[ "$failed" -eq 0 ]
