@@ -1,11 +1,13 @@
 #!/bin/bash
 # make.sh - checks of the build's own behaviour (make test-make, part of make test):
 # what `make` prints, where it puts images, which packages it needs, and what
-# a student's copy says about itself.  Each check prints one line; the script
-# fails when any check fails.  CC is the compiler of the calling build.
+# a student's copy says about itself, what its renderers say.  Each check
+# prints one line; the script fails when any check fails.  CC is the compiler
+# of the calling build, BUILD its folder (the renderers of chapters 04, 07 and 11).
 set -u
 cd "$(dirname "$0")/.." || exit 1
 cc=${CC:-cc}
+build=${BUILD:-build} # whose renderers are run
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 failed=0
@@ -115,10 +117,50 @@ $tmp/suites: 1 passed, 1 failed, 0 skipped"
     printf '%s\n' "$out" | grep -qx "==== $suite" || { echo "V=1 does not name the suite"; return 1; }
 }
 
+# A renderer before chapter 11 warns of a mesh of more than 4096 triangles
+# (common/scene_cost.h); chapter 11's, with its grid, does not.
+big_mesh_warning() {
+    local k out
+    for ((k = 0; k < 4200; k++)); do
+        echo "v $k 0 0"
+        echo "v $k 1 0"
+        echo "v $k 0 1"
+        echo "f $((3 * k + 1)) $((3 * k + 2)) $((3 * k + 3))"
+    done >"$tmp/big.obj"
+    printf '%s\n' '<scene>' '  <surface type="Mesh"><data>big.obj</data></surface>' '</scene>' >"$tmp/big.xml"
+    out=$("$build/04_many_shapes/render" -s 2x2 -o "$tmp/big.png" "$tmp/big.xml" 2>&1) || { echo "$out"; return 1; }
+    if ! printf '%s\n' "$out" | grep -q "4200 triangles.*chapter 11"; then
+        printf 'chapter 04 does not warn of 4200 triangles:\n%s\n' "$out"
+        return 1
+    fi
+    out=$("$build/11_grid/render" -s 2x2 -o "$tmp/big.png" "$tmp/big.xml" 2>&1) || { echo "$out"; return 1; }
+    if printf '%s\n' "$out" | grep -q "triangles"; then
+        printf 'chapter 11 warns:\n%s\n' "$out"
+        return 1
+    fi
+}
+
+# A bad knob value: one line naming the program and --help, exit status 2,
+# no image; --help says where the image goes without -o.
+knob_message() {
+    local out status
+    out=$("$build/07_blinn_phong/render" --phong=x -o "$tmp/knob.png" 2>&1)
+    status=$?
+    local want="$build/07_blinn_phong/render: --phong: 'x' is not one of: course lecture (see --help)"
+    if [ "$status" != 2 ] || [ "$out" != "$want" ] || [ -e "$tmp/knob.png" ]; then
+        printf 'exit status %s and:\n%s\nnot 2 and:\n%s\n' "$status" "$out" "$want"
+        return 1
+    fi
+    "$build/07_blinn_phong/render" --help | grep -q -- "--output FILE .*(default: 07_blinn_phong.png in the current folder)" ||
+        { echo "--help does not say where the image goes without -o"; return 1; }
+}
+
 check "each build variant has its own image folder" image_folders
 check "building needs no gnuplot, the figures do" no_gnuplot_for_building
 check "make prints one line per program, V=1 every command" quiet_build
 check "a suite prints one line, its output goes to a log" quiet_suites
+check "a renderer before chapter 11 warns of a big mesh" big_mesh_warning
+check "a bad knob names the program and --help" knob_message
 
 echo "tests/make.sh: $((count - failed)) of $count checks passed"
 [ "$failed" -eq 0 ]
