@@ -161,6 +161,9 @@ check "make prints one line per program, V=1 every command" quiet_build
 check "a suite prints one line, its output goes to a log" quiet_suites
 check "a renderer before chapter 11 warns of a big mesh" big_mesh_warning
 check "a bad knob names the program and --help" knob_message
+# The suites' hints for planted mistakes (tests/hints.sh; needs solutions/,
+# which a student's copy has not).
+[ -d solutions ] && check "the suites' hints name planted mistakes" env CC="$cc" tests/hints.sh "$tmp/hints"
 
 echo "tests/make.sh: $((count - failed)) of $count checks passed"
 [ "$failed" -eq 0 ]
