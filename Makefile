@@ -188,20 +188,30 @@ $(FUZZ_BUILD)/fuzz_$1: fuzz/$1.c fuzz/support.c $(FUZZ_SRC_$1) $(wildcard fuzz/*
 endef
 $(foreach t,$(FUZZ_TARGETS),$(eval $(call fuzz_rules,$t)))
 
+ifeq ($(HANDOUT),)
 fuzz-build: $(FUZZ_TARGETS:%=$(FUZZ_BUILD)/fuzz_%)
 
 fuzz: fuzz-build
 	@tools/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+else
+fuzz fuzz-build:
+	@echo "make $@: the fuzz targets (fuzz/) are not in a student's copy" >&2; exit 2
+endif
 
 # ---- skeletons: the students' files, generated from the solutions ---------------
 
 SOLUTION_FILES := $(sort $(wildcard solutions/[0-9][0-9]_*/*.c))
 
 # Writes chapters/NN_name/FILE.c from solutions/NN_name/FILE.c by tools/skeleton.awk.
+# A student's copy has no solutions/ to write them from: its skeletons are the exercises.
+NO_SOLUTIONS = @$(if $(HANDOUT),echo "make $@: this student's copy has no solutions/; its chapters/ hold the exercises" >&2; exit 2)
+
 skeletons:
+	$(NO_SOLUTIONS)
 	@tools/skeletons.sh write $(SOLUTION_FILES)
 
 check-skeletons:
+	$(NO_SOLUTIONS)
 	@tools/skeletons.sh check $(SOLUTION_FILES)
 
 # ---- grading --------------------------------------------------------------------
@@ -242,7 +252,9 @@ GRADE_DIR = $(BUILD)/grade-$(SOURCE)
 grade_stages = $(foreach c,$(call upto,$1),$(call stage_objs,$c,$(if $(and $(filter $c,$1),$(filter chapters,$(SOURCE))),1,0)))
 # What chapter $1's graded suite links, in words.
 REFERENCE_WORDS := $(if $(HANDOUT),the compiled reference libraries reference/double/,solutions/)
-grade_links = $1: links $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addprefix chapters/$1/,$(EXERCISES_$1)),no exercise files),the reference)$(if $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))), and the reference of $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))) from $(REFERENCE_WORDS))
+# "04_many_shapes: chapters/04_many_shapes/closest_hit.c, with chapters 01 02 03 from the reference (...)"
+grade_from_reference = $(strip $(foreach c,$(if $(filter chapters,$(SOURCE)),$(filter-out $1,$(call upto,$1)),$(call upto,$1)),$(if $(EXERCISES_$c),$(call num,$c))))
+grade_links = $1: $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addprefix chapters/$1/,$(EXERCISES_$1)),no exercise files of its own)$(if $(call grade_from_reference,$1),$(comma) with ))$(if $(call grade_from_reference,$1),chapter$(if $(word 2,$(call grade_from_reference,$1)),s) $(call grade_from_reference,$1) from the reference ($(REFERENCE_WORDS)))
 
 define grade_rules
 $(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call grade_stages,$1) $(call objs,$(COMMON_SRC))
@@ -363,6 +375,7 @@ check-figures: figure-renderers
 SNIPPET_TEXTS := $(sort $(wildcard chapters/[0-9][0-9]_*/README.md docs/*.md))
 
 snippets:
+	$(NO_SOLUTIONS)
 	@tools/snippets.sh fill $(SNIPPET_TEXTS)
 
 # Every relative link of the texts resolves; nothing names a file beside the repository.
@@ -443,35 +456,44 @@ bench:
 
 # ---- help -----------------------------------------------------------------------
 
+# help: a student's copy lists only what it has (no solutions/, bench/, fuzz/).
+REPO_ONLY = $(if $(HANDOUT),@: ,@)
+COPY_ONLY = $(if $(HANDOUT),@,@: )
 help:
-	@echo "make                 build every chapter and render its built-in scene into $(OUT)/ (out-float/ for REAL=float, ...)"
-	@echo "make STUDENT=1       the same from the student's files in chapters/ (into build-student/)"
-	@echo "make test            all suites: double, float (REAL=float) and sanitizer builds, then make check"
+	@echo "make                 build every chapter and render its built-in scene into $(OUT)/ (each build variant"
+	@echo "                     has its own image folder, as it has its own build folder: REAL=float, out-float/)"
+	$(REPO_ONLY)echo "make STUDENT=1       the same from the student's files in chapters/ (into build-student/)"
+	$(COPY_ONLY)echo "                     (here from your files in chapters/, into build-student/ and out-student/)"
+	$(COPY_ONLY)echo "make STUDENT=0       the reference renderers (from reference/) into build/, their images into out/"
+	$(REPO_ONLY)echo "make test            all suites: double, float (REAL=float) and sanitizer builds, then make check"
+	$(COPY_ONLY)echo "make test            all suites on all your files: double, float (REAL=float) and sanitizer builds"
 	@echo "make test-make       the build's own behaviour: output, image folders, packages, the student's copy"
 	@echo "make test-extremes   every renderer over tests/extremes/ and the other scenes, failing on NaN"
 	@echo "make renderers       build every chapter's renderer into $(BUILD)/NN_name/render"
 	@echo "make tests           build the test suites of this build"
 	@echo "make test-suites     run the suites of this build only"
-	@echo "make grade           grade the student's files: chapter N with the solutions of the others,"
+	$(REPO_ONLY)echo "make grade           grade the student's files: chapter N with the solutions of the others,"
+	$(COPY_ONLY)echo "make grade           grade your files: chapter N with the reference of the others,"
 	@echo "                     each test alone with a time limit; a score table, $(GRADE_JSON)"
 	@echo "                     (Gradescope) and $(GRADE_JUNIT) (JUnit)"
-	@echo "  CHAPTER=01         grade one chapter;  SOURCE=solutions  grade the solutions (must be full marks)"
+	$(REPO_ONLY)echo "  CHAPTER=01         grade one chapter;  SOURCE=solutions  grade the solutions (must be full marks)"
+	$(COPY_ONLY)echo "  CHAPTER=01         grade one chapter;  SOURCE=reference  grade the reference (full marks)"
 	@echo "  TIMEOUT=10         seconds per test"
 	@echo "  GRADE_FLOAT=0      without the float build (reported, not scored)"
-	@echo "make handout DEST=d  the student's copy: no solutions/, compiled reference libraries in reference/"
-	@echo "make autograder      a Gradescope autograder zip (CHAPTER=01: one chapter) into $(GRADE_BUILD)/,"
-	@echo "                     a student's copy plus setup.sh and run_autograder (docs/instructor-guide.md)"
-	@echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
+	$(REPO_ONLY)echo "make handout DEST=d  the student's copy: no solutions/, compiled reference libraries in reference/"
+	$(REPO_ONLY)echo "make autograder      a Gradescope autograder zip (CHAPTER=01: one chapter) into $(GRADE_BUILD)/,"
+	$(REPO_ONLY)echo "                     a student's copy plus setup.sh and run_autograder (docs/instructor-guide.md)"
+	$(REPO_ONLY)echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
-	@echo "make globe-texture   write chapter 10's scenes/globe.png from globe_texture (sphere_mesh.c)"
-	@echo "make snippets        fill the code blocks of the READMEs from the source"
-	@echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-grid-images"
-	@echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"
-	@echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
-	@echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"
-	@echo "make bench-grid      chapter 11's grid against the linear scan and Embree 3 (installs libembree-dev, glmark2-data)"
-	@echo "make fuzz            build the libFuzzer targets (clang) and fuzz each for FUZZ_SECONDS (60) seconds;"
-	@echo "                     findings go to $(FUZZ_BUILD)/ (docs/fuzzing.md)"
+	$(REPO_ONLY)echo "make globe-texture   write chapter 10's scenes/globe.png from globe_texture (sphere_mesh.c)"
+	$(REPO_ONLY)echo "make snippets        fill the code blocks of the READMEs from the source"
+	$(REPO_ONLY)echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-grid-images"
+	$(REPO_ONLY)echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"
+	$(REPO_ONLY)echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
+	$(REPO_ONLY)echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"
+	$(REPO_ONLY)echo "make bench-grid      chapter 11's grid against the linear scan and Embree 3 (installs libembree-dev, glmark2-data)"
+	$(REPO_ONLY)echo "make fuzz            build the libFuzzer targets (clang) and fuzz each for FUZZ_SECONDS (60) seconds;"
+	$(REPO_ONLY)echo "                     findings go to $(FUZZ_BUILD)/ (docs/fuzzing.md)"
 	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
 	@echo "           V=1 (every command and each suite's whole output; by default one line each, logs in BUILD/logs/)"

@@ -38,8 +38,8 @@ image_folders() {
             return 1
         fi
     done <<'LIST'
-REAL=double|out
-REAL=float|out-float
+REAL=double STUDENT=0|out
+REAL=float STUDENT=0|out-float
 REAL=double STUDENT=1|out-student
 REAL=float STUDENT=1 REFERENCE=01|out-float-student-ref01
 LIST
@@ -161,6 +161,53 @@ check "make prints one line per program, V=1 every command" quiet_build
 check "a suite prints one line, its output goes to a log" quiet_suites
 check "a renderer before chapter 11 warns of a big mesh" big_mesh_warning
 check "a bad knob names the program and --help" knob_message
+# A student's copy (make handout) describes only what it has, refuses the
+# targets it cannot run with one line, and leaves out the instructor's texts.
+student_copy() {
+    local copy=$tmp/copy words='solutions/|bench/|fuzz/|make (skeletons|handout|autograder|snippets)' out status
+    make -s --no-print-directory handout DEST="$copy" >/dev/null || return 1
+    if grep -nE "$words" "$copy/README.md"; then
+        echo "the copy's README.md names what the copy has not (above)"
+        return 1
+    fi
+    if make -s --no-print-directory -C "$copy" help | grep -E "$words"; then
+        echo "the copy's make help names what the copy has not (above)"
+        return 1
+    fi
+    local target
+    for target in fuzz skeletons snippets; do
+        out=$(make -s --no-print-directory -C "$copy" "$target" 2>&1 >/dev/null | grep -v '^make: \*\*\*')
+        status=$?
+        if ! printf '%s
+' "$out" | grep -q "^make $target: .* student's copy"; then
+            echo "make $target in the copy says: '$out'"
+            return 1
+        fi
+    done
+    local f
+    for f in docs/instructor-guide.md docs/CONTRIBUTING.md; do
+        [ -e "$copy/$f" ] && { echo "the copy has $f"; return 1; }
+    done
+    (cd "$copy" && tools/check-links.sh) || { echo "the copy has links that lead nowhere"; return 1; }
+}
+
+# What a graded chapter links, in words (make grade prints it).
+grade_words() {
+    local got
+    got=$(make -s --no-print-directory -f Makefile -f - show <<<'show: ; @echo "$(call grade_links,04_many_shapes)"')
+    local want="04_many_shapes: chapters/04_many_shapes/closest_hit.c, with chapters 01 02 03 from the reference (solutions/)"
+    [ "$got" = "$want" ] || { printf 'got:  %s
+want: %s
+' "$got" "$want"; return 1; }
+    got=$(make -s --no-print-directory SOURCE=reference -f Makefile -f - show <<<'show: ; @echo "$(call grade_links,04_many_shapes)"')
+    want="04_many_shapes: chapters 01 02 03 04 from the reference (solutions/)"
+    [ "$got" = "$want" ] || { printf 'got:  %s
+want: %s
+' "$got" "$want"; return 1; }
+}
+
+[ -d solutions ] && check "a student's copy describes only what it has" student_copy
+[ -d solutions ] && check "make grade says plainly what it links" grade_words
 # The suites' hints for planted mistakes (tests/hints.sh; needs solutions/,
 # which a student's copy has not).
 [ -d solutions ] && check "the suites' hints name planted mistakes" env CC="$cc" tests/hints.sh "$tmp/hints"
