@@ -6,6 +6,8 @@
 # of the calling build, BUILD its folder (the renderers of chapters 04, 07 and 11).
 set -u
 cd "$(dirname "$0")/.." || exit 1
+# The makes run here are of their own, not jobs of a calling make's -j.
+unset MAKEFLAGS MFLAGS MAKELEVEL
 cc=${CC:-cc}
 build=${BUILD:-build} # whose renderers are run
 tmp=$(mktemp -d) || exit 1
