@@ -27,11 +27,21 @@ REFERENCE ?=
 SANITIZE ?= 0
 OPT ?= -O2 -g
 
+# V=1 shows every command and each suite's whole output.  By default a
+# compile shows only its warnings and errors, each program built one line
+# ("  LINK    path"), and each test suite one line (its output goes to a log
+# that is named when it fails: tools/run-tests.sh).
+V ?= 0
+Q := $(if $(filter 1,$(V)),,@)
+# (make -s prints nothing at all.)
+QLINK = $(if $(Q),@$(if $(findstring s,$(firstword -$(MAKEFLAGS))),,echo "  LINK    $@";))
+
 ifeq ($(filter $(REAL),double float),)
 $(error REAL must be double or float, not '$(REAL)')
 endif
 
-compiler := $(if $(findstring clang,$(CC)),-clang)
+# clang builds into build-clang/, another gcc than the default (CC=gcc-11) into build-gcc-11/.
+compiler := $(if $(findstring clang,$(CC)),-clang,$(if $(filter-out cc gcc,$(notdir $(CC))),-$(notdir $(CC))))
 variant := $(compiler)$(if $(filter float,$(REAL)),-float)$(if $(filter 1,$(SANITIZE)),-asan)$(if $(filter 1,$(STUDENT)),-student)$(if $(filter 1,$(STUDENT)),$(if $(strip $(REFERENCE)),-ref$(subst $(eval) ,,$(strip $(REFERENCE)))))
 BUILD ?= build$(variant)
 
@@ -98,8 +108,9 @@ ALL_TESTS += $(LAB_TESTS)
 
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render) $(foreach c,$(LAB_CHAPTERS),$(BUILD)/$c/lab)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
-# The built-in scenes' images: out/, or out-student/ for the student build.
-OUT := out$(if $(filter 1,$(STUDENT)),-student$(if $(strip $(REFERENCE)),-ref$(subst $(eval) ,,$(strip $(REFERENCE)))))
+# The built-in scenes' images: one folder per build variant, as build/ is:
+# out/, out-float/, out-clang/, out-student/, out-student-ref01/, ...
+OUT := out$(variant)
 IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
@@ -120,17 +131,17 @@ deps:
 COMPILE_AS ?=
 $(BUILD)/obj/%.o: %.c | deps
 	@mkdir -p $(@D)
-	$(if $(and $(COMPILE_AS),$(filter chapters/%,$<)),tools/compile-as.sh $(COMPILE_AS) $@ $<) $(CC) $(CPPFLAGS) $(CFLAGS) \
+	$(Q)$(if $(and $(COMPILE_AS),$(filter chapters/%,$<)),tools/compile-as.sh $(COMPILE_AS) $@ $<) $(CC) $(CPPFLAGS) $(CFLAGS) \
 	    $(if $(and $(COMPILE_AS),$(filter chapters/%,$<)),,-c $< -o $@)
 
 define chapter_rules
 $(BUILD)/$1/render: $(call objs,chapters/$1/render.c) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(call link,$$^) -o $$@
+	$$(QLINK)$$(call link,$$^) -o $$@
 
 $(OUT)/$1.png: $(BUILD)/$1/render
 	@mkdir -p $(OUT)
-	$(BUILD)/$1/render -o $$@
+	$(Q)$(BUILD)/$1/render -o $$@
 
 $(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call stages_upto,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
@@ -142,32 +153,32 @@ $(BUILD)/$1/lab: $(call objs,chapters/$1/lab/main.c) $(call lab_objs,$1) $(call 
 
 $(BUILD)/tests/lab_$1: $(call objs,tests/lab_$1.c $(TEST_SUPPORT)) $(call lab_objs,$1) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(call link,$$^) -lcmocka -o $$@
+	$$(QLINK)$$(call link,$$^) -lcmocka -o $$@
 
 # The library of chapter $1's reference objects, for a student's copy.
 $(BUILD)/reference/lib$1.a: $(call objs,$(addprefix solutions/$1/,$(EXERCISES_$1)))
 	@mkdir -p $$(@D)
-	rm -f $$@ && ar rcs $$@ $$^
+	$(Q)rm -f $$@ && ar rcs $$@ $$^
 endef
 $(foreach c,$(CHAPTERS),$(eval $(call chapter_rules,$c)))
 
 $(BUILD)/tests/test_scenes: $(call objs,tests/test_scenes.c $(TEST_SUPPORT) $(call stages_upto,$(lastword $(CHAPTERS))) $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 
 $(BUILD)/tests/test_common_%: $(call objs,tests/test_common_%.c $(TEST_SUPPORT) $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 
 $(BUILD)/tests/test_fuzz_corpus: $(call objs,tests/test_fuzz_corpus.c $(TEST_SUPPORT) fuzz/support.c \
                                   $(FUZZ_TARGETS:%=fuzz/%.c) $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 
 # Any build's replay driver: `$(BUILD)/fuzz/replay scene FILE...` (docs/fuzzing.md).
 $(BUILD)/fuzz/replay: $(call objs,fuzz/replay.c fuzz/support.c $(FUZZ_TARGETS:%=fuzz/%.c) $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
 # ---- fuzzing: libFuzzer targets of the readers (docs/fuzzing.md) ------------------
 #
@@ -194,24 +205,34 @@ deps-fuzz:
 define fuzz_rules
 $(FUZZ_BUILD)/fuzz_$1: fuzz/$1.c fuzz/support.c $(FUZZ_SRC_$1) $(wildcard fuzz/*.h common/*.h) | deps-fuzz
 	@mkdir -p $$(@D)
-	$$(FUZZ_CC) $$(CPPFLAGS) $$(FUZZ_CFLAGS) $$(filter %.c,$$^) -lexpat -lm -o $$@
+	$$(QLINK)$$(FUZZ_CC) $$(CPPFLAGS) $$(FUZZ_CFLAGS) $$(filter %.c,$$^) -lexpat -lm -o $$@
 endef
 $(foreach t,$(FUZZ_TARGETS),$(eval $(call fuzz_rules,$t)))
 
+ifeq ($(HANDOUT),)
 fuzz-build: $(FUZZ_TARGETS:%=$(FUZZ_BUILD)/fuzz_%)
 
 fuzz: fuzz-build
 	@tools/fuzz.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
+else
+fuzz fuzz-build:
+	@echo "make $@: the fuzz targets (fuzz/) are not in a student's copy" >&2; exit 2
+endif
 
 # ---- skeletons: the students' files, generated from the solutions ---------------
 
 SOLUTION_FILES := $(sort $(wildcard solutions/[0-9][0-9]_*/*.c))
 
 # Writes chapters/NN_name/FILE.c from solutions/NN_name/FILE.c by tools/skeleton.awk.
+# A student's copy has no solutions/ to write them from: its skeletons are the exercises.
+NO_SOLUTIONS = @$(if $(HANDOUT),echo "make $@: this student's copy has no solutions/; its chapters/ hold the exercises" >&2; exit 2)
+
 skeletons:
+	$(NO_SOLUTIONS)
 	@tools/skeletons.sh write $(SOLUTION_FILES)
 
 check-skeletons:
+	$(NO_SOLUTIONS)
 	@tools/skeletons.sh check $(SOLUTION_FILES)
 
 # ---- grading --------------------------------------------------------------------
@@ -252,18 +273,20 @@ GRADE_DIR = $(BUILD)/grade-$(SOURCE)
 grade_stages = $(foreach c,$(call upto,$1),$(call stage_objs,$c,$(if $(and $(filter $c,$1),$(filter chapters,$(SOURCE))),1,0)))
 # What chapter $1's graded suite links, in words.
 REFERENCE_WORDS := $(if $(HANDOUT),the compiled reference libraries reference/double/,solutions/)
-grade_links = $1: links $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addprefix chapters/$1/,$(EXERCISES_$1)),no exercise files),the reference)$(if $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))), and the reference of $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))) from $(REFERENCE_WORDS))
+# "04_many_shapes: chapters/04_many_shapes/closest_hit.c, with chapters 01 02 03 from the reference (...)"
+grade_from_reference = $(strip $(foreach c,$(if $(filter chapters,$(SOURCE)),$(filter-out $1,$(call upto,$1)),$(call upto,$1)),$(if $(EXERCISES_$c),$(call num,$c))))
+grade_links = $1: $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addprefix chapters/$1/,$(EXERCISES_$1)),no exercise files of its own)$(if $(call grade_from_reference,$1),$(comma) with ))$(if $(call grade_from_reference,$1),chapter$(if $(word 2,$(call grade_from_reference,$1)),s) $(call grade_from_reference,$1) from the reference ($(REFERENCE_WORDS)))
 
 define grade_rules
 $(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call grade_stages,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(call link,$$^) -lcmocka -o $$@
+	$$(QLINK)$$(call link,$$^) -lcmocka -o $$@
 endef
 $(foreach c,$(CHAPTER_TESTS:test_%=%),$(eval $(call grade_rules,$c)))
 
 $(BUILD)/tools/%: $(BUILD)/obj/tools/%.o
 	@mkdir -p $(@D)
-	$(CC) $^ -o $@
+	$(QLINK)$(CC) $^ -o $@
 
 grade:
 	@$(if $(GRADE_CHAPTERS),,echo "make grade: $(if $(CHAPTER),no chapter '$(CHAPTER)' has a test suite,no chapter has a test suite) (chapters with one: $(or $(CHAPTER_TESTS:test_%=%),none))" >&2; exit 2)
@@ -350,17 +373,18 @@ FIG_FLOAT += $(patsubst float-lab/%,$(FIG_BUILD)-float/%/lab,$(filter $(LAB_CHAP
 # Puts labelled panels side by side (the `panels` lines of figures.txt).
 $(BUILD)/tools/panels: $(BUILD)/obj/tools/panels.o
 	@mkdir -p $(@D)
-	$(CC) $^ -lstb -lm -o $@
+	$(QLINK)$(CC) $^ -lstb -lm -o $@
 
 # chapters/10_interpolation/scenes/globe.png is globe_texture's map (sphere_mesh.h) as a file.
 $(BUILD)/tools/globe-png: $(call objs,tools/globe-png.c chapters/10_interpolation/scenes/sphere_mesh.c $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(call link,$^) -lstb -o $@
+	$(QLINK)$(call link,$^) -lstb -o $@
 
 globe-texture: $(BUILD)/tools/globe-png
 	$(BUILD)/tools/globe-png chapters/10_interpolation/scenes/globe.png
 
 figure-renderers:
+	@tools/deps.sh "$(CC)" figures
 	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_BUILD)/tools/panels
 	@$(if $(FIG_DOUBLE),$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_DOUBLE))
 	@$(if $(FIG_FLOAT),$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=float BUILD=$(FIG_BUILD)-float $(FIG_FLOAT))
@@ -376,6 +400,7 @@ check-figures: figure-renderers
 SNIPPET_TEXTS := $(sort $(wildcard chapters/[0-9][0-9]_*/README.md chapters/[0-9][0-9]_*/lab/README.md docs/*.md))
 
 snippets:
+	$(NO_SOLUTIONS)
 	@tools/snippets.sh fill $(SNIPPET_TEXTS)
 
 # Every relative link of the texts resolves; nothing names a file beside the repository.
@@ -410,7 +435,7 @@ check: $(if $(HANDOUT),,check-skeletons check-snippets check-outputs check-figur
 
 # One build's suites: build them all, run them all, and count.
 test-suites: $(TEST_BINS)
-	@tools/run-tests.sh $(BUILD)/test-results.txt $(TEST_BINS)
+	@V=$(V) tools/run-tests.sh $(BUILD)/test-results.txt $(TEST_BINS)
 
 # Every renderer of this build over the scenes at the extremes, the chapters'
 # own and the Cornell corpus's: no NaN or infinite sample, no crash, and (in
@@ -418,17 +443,24 @@ test-suites: $(TEST_BINS)
 test-extremes: renderers
 	@tools/extremes.sh $(BUILD)
 
+# The build's own behaviour: what make prints, where the images go, which
+# packages it needs, what a student's copy says of itself (tests/make.sh).
+.PHONY: test-make
+test-make: $(foreach c,$(filter 04_% 07_% 11_%,$(CHAPTERS)),$(BUILD)/$c/render)
+	@CC="$(CC)" BUILD="$(BUILD)" tests/make.sh
+
 # The double build, the float build and the sanitizer build (with the
-# renders at the extremes and the fuzz corpus replay), then the checks
-# that text, skeletons and figures match their sources.
+# renders at the extremes and the fuzz corpus replay), then the build's own
+# checks and the checks that text, skeletons and figures match their sources.
 test:
 	@rm -f build*/test-results.txt
-	$(MAKE) --no-print-directory test-suites
-	$(MAKE) --no-print-directory REAL=float BUILD=$(BUILD)-float test-suites
-	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-suites
-	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-extremes
+	$(Q)$(MAKE) --no-print-directory test-suites
+	$(Q)$(MAKE) --no-print-directory REAL=float BUILD=$(BUILD)-float test-suites
+	$(Q)$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-suites
+	$(Q)$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-extremes
 	@tools/sum-results.sh $(BUILD) $(BUILD)-float $(BUILD)-asan
-	$(MAKE) --no-print-directory check
+	$(Q)$(MAKE) --no-print-directory test-make
+	$(Q)$(MAKE) --no-print-directory check
 
 # ---- bench: the speed/accuracy measurements of docs/measurements.md ----------------
 #
@@ -441,11 +473,11 @@ BENCH_TOOLS := $(addprefix $(BUILD)/bench-tools/,imgcmp tessellate checker scene
 
 $(BUILD)/bench-tools/scene2pov: $(call objs,bench/scene2pov.c $(COMMON_SRC))
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
 $(BUILD)/bench-tools/%: $(BUILD)/obj/bench/%.o
 	@mkdir -p $(@D)
-	$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -o $@
 
 .PHONY: bench bench-tools
 bench-tools: $(BENCH_TOOLS)
@@ -460,41 +492,52 @@ bench:
 
 # ---- help -----------------------------------------------------------------------
 
+# help: a student's copy lists only what it has (no solutions/, bench/, fuzz/).
+REPO_ONLY = $(if $(HANDOUT),@: ,@)
+COPY_ONLY = $(if $(HANDOUT),@,@: )
 help:
-	@echo "make                 build every chapter and render its built-in scene into out/"
-	@echo "make STUDENT=1       the same from the student's files in chapters/ (into build-student/)"
-	@echo "make test            all suites: double, float (REAL=float) and sanitizer builds, then make check"
+	@echo "make                 build every chapter and render its built-in scene into $(OUT)/ (each build variant"
+	@echo "                     has its own image folder, as it has its own build folder: REAL=float, out-float/)"
+	$(REPO_ONLY)echo "make STUDENT=1       the same from the student's files in chapters/ (into build-student/)"
+	$(COPY_ONLY)echo "                     (here from your files in chapters/, into build-student/ and out-student/)"
+	$(COPY_ONLY)echo "make STUDENT=0       the reference renderers (from reference/) into build/, their images into out/"
+	$(REPO_ONLY)echo "make test            all suites: double, float (REAL=float) and sanitizer builds, then make check"
+	$(COPY_ONLY)echo "make test            all suites on all your files: double, float (REAL=float) and sanitizer builds"
+	@echo "make test-make       the build's own behaviour: output, image folders, packages, the student's copy"
 	@echo "make test-extremes   every renderer over tests/extremes/ and the other scenes, failing on NaN"
 	@echo "make renderers       build every chapter's renderer into $(BUILD)/NN_name/render"
 	@echo "make tests           build the test suites of this build"
 	@echo "make test-suites     run the suites of this build only"
-	@echo "make grade           grade the student's files: chapter N with the solutions of the others,"
+	$(REPO_ONLY)echo "make grade           grade the student's files: chapter N with the solutions of the others,"
+	$(COPY_ONLY)echo "make grade           grade your files: chapter N with the reference of the others,"
 	@echo "                     each test alone with a time limit; a score table, $(GRADE_JSON)"
 	@echo "                     (Gradescope) and $(GRADE_JUNIT) (JUnit)"
-	@echo "  CHAPTER=01         grade one chapter;  SOURCE=solutions  grade the solutions (must be full marks)"
+	$(REPO_ONLY)echo "  CHAPTER=01         grade one chapter;  SOURCE=solutions  grade the solutions (must be full marks)"
+	$(COPY_ONLY)echo "  CHAPTER=01         grade one chapter;  SOURCE=reference  grade the reference (full marks)"
 	@echo "  TIMEOUT=10         seconds per test"
 	@echo "  GRADE_FLOAT=0      without the float build (reported, not scored)"
-	@echo "make handout DEST=d  the student's copy: no solutions/, compiled reference libraries in reference/"
-	@echo "make autograder      a Gradescope autograder zip (CHAPTER=01: one chapter) into $(GRADE_BUILD)/,"
-	@echo "                     a student's copy plus setup.sh and run_autograder (docs/instructor-guide.md)"
-	@echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
+	$(REPO_ONLY)echo "make handout DEST=d  the student's copy: no solutions/, compiled reference libraries in reference/"
+	$(REPO_ONLY)echo "make autograder      a Gradescope autograder zip (CHAPTER=01: one chapter) into $(GRADE_BUILD)/,"
+	$(REPO_ONLY)echo "                     a student's copy plus setup.sh and run_autograder (docs/instructor-guide.md)"
+	$(REPO_ONLY)echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
-	@echo "make globe-texture   write chapter 10's scenes/globe.png from globe_texture (sphere_mesh.c)"
-	@echo "make snippets        fill the code blocks of the READMEs from the source"
-	@echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-grid-images"
-	@echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"
-	@echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
-	@echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"
-	@echo "make bench-grid      chapter 11's grid against the linear scan and Embree 3 (installs libembree-dev, glmark2-data)"
-	@echo "make fuzz            build the libFuzzer targets (clang) and fuzz each for FUZZ_SECONDS (60) seconds;"
-	@echo "                     findings go to $(FUZZ_BUILD)/ (docs/fuzzing.md)"
+	$(REPO_ONLY)echo "make globe-texture   write chapter 10's scenes/globe.png from globe_texture (sphere_mesh.c)"
+	$(REPO_ONLY)echo "make snippets        fill the code blocks of the READMEs from the source"
+	$(REPO_ONLY)echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-grid-images"
+	$(REPO_ONLY)echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"
+	$(REPO_ONLY)echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
+	$(REPO_ONLY)echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"
+	$(REPO_ONLY)echo "make bench-grid      chapter 11's grid against the linear scan and Embree 3 (installs libembree-dev, glmark2-data)"
+	$(REPO_ONLY)echo "make fuzz            build the libFuzzer targets (clang) and fuzz each for FUZZ_SECONDS (60) seconds;"
+	$(REPO_ONLY)echo "                     findings go to $(FUZZ_BUILD)/ (docs/fuzzing.md)"
 	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
+	@echo "           V=1 (every command and each suite's whole output; by default one line each, logs in BUILD/logs/)"
 	@echo "           REFERENCE=\"01 02\" (with STUDENT=1: these chapters from the reference)"
 	@echo "chapters: $(CHAPTERS)"
 
 clean:
-	rm -rf build build-* out out-student*
+	rm -rf build build-* out out-*
 
 # The grid's benchmark against Embree (make bench-grid); a student's copy has no bench/.
 ifeq ($(HANDOUT),)

@@ -15,6 +15,7 @@ typedef struct {
 static noted_stub noted[MAX_NOTED];
 static atomic_int n_noted;
 static atomic_bool deferred;
+atomic_bool exercise_stub_ran;
 
 void exercise_defer(void) { atomic_store(&deferred, true); }
 

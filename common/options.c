@@ -3,6 +3,7 @@
 #include <errno.h>
 #include <getopt.h>
 #include <limits.h>
+#include <stdarg.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -13,6 +14,17 @@ enum { OPT_SEED = 256, OPT_NONFINITE, OPT_KNOB = 512 };
 
 static const char *const nonfinite_modes[] = {[NONFINITE_DROP] = "drop", [NONFINITE_SHOW] = "show",
                                               [NONFINITE_FAIL] = "fail", NULL};
+
+/* "PROGRAM: problem (see --help)": every option error names the program and the help. */
+static void option_error(FILE *err, const char *program, const char *format, ...)
+{
+    va_list args;
+    va_start(args, format);
+    fprintf(err, "%s: ", program);
+    vfprintf(err, format, args);
+    fprintf(err, " (see --help)\n");
+    va_end(args);
+}
 
 static bool parse_long(const char *s, long min, long max, long *out)
 {
@@ -48,7 +60,7 @@ static bool is_square(long n)
     return root * root == n;
 }
 
-static bool set_knob(const knob *k, const char *value, FILE *err)
+static bool set_knob(const knob *k, const char *value, const char *program, FILE *err)
 {
     switch (k->kind) {
     case KNOB_CHOICE:
@@ -58,15 +70,16 @@ static bool set_knob(const knob *k, const char *value, FILE *err)
                 return true;
             }
         }
-        fprintf(err, "--%s: '%s' is not one of:", k->name, value);
-        for (int c = 0; k->choices[c]; c++)
-            fprintf(err, " %s", k->choices[c]);
-        fputc('\n', err);
+        char words[256] = "";
+        size_t len = 0;
+        for (int c = 0; k->choices[c] && len < sizeof words; c++)
+            len += (size_t)snprintf(words + len, sizeof words - len, " %s", k->choices[c]);
+        option_error(err, program, "--%s: '%s' is not one of:%s", k->name, value, words);
         return false;
     case KNOB_INT: {
         long v;
         if (!parse_long(value, INT_MIN, INT_MAX, &v)) {
-            fprintf(err, "--%s: '%s' is not an integer\n", k->name, value);
+            option_error(err, program, "--%s: '%s' is not an integer", k->name, value);
             return false;
         }
         *(int *)k->target = (int)v;
@@ -77,7 +90,7 @@ static bool set_knob(const knob *k, const char *value, FILE *err)
         errno = 0;
         double v = strtod(value, &end);
         if (errno || end == value || *end != '\0' || !isfinite(v)) {
-            fprintf(err, "--%s: '%s' is not a finite number\n", k->name, value);
+            option_error(err, program, "--%s: '%s' is not a finite number", k->name, value);
             return false;
         }
         *(real *)k->target = (real)v;
@@ -105,13 +118,14 @@ static void print_knob_default(const knob *k, FILE *out)
     }
 }
 
-static void print_help(const char *program, const char *summary, const knob *knobs, int n_knobs, FILE *out)
+static void print_help(const char *program, const char *summary, const char *default_output, const knob *knobs,
+                       int n_knobs, FILE *out)
 {
     fprintf(out,
             "%s\n"
             "usage: %s [options] [scene.xml]\n"
             "  scene.xml           a scene file (see docs/scenes.md); without one, the built-in scene\n"
-            "  -o, --output FILE   the PNG to write\n"
+            "  -o, --output FILE   the PNG to write (default: %s in the current folder)\n"
             "  -s, --size WxH      image size in pixels (default: the scene's)\n"
             "  -n, --samples N     samples per pixel, a square number (default: the scene's, else 1)\n"
             "  -j, --threads N     threads to render with (default: all cores)\n"
@@ -121,7 +135,7 @@ static void print_help(const char *program, const char *summary, const knob *kno
             "                      of its pixel; the default), show (its pixel painted magenta), or fail\n"
             "                      (no image written, exit status 3)\n"
             "  -h, --help          this text\n",
-            summary, program);
+            summary, program, default_output);
     for (int k = 0; k < n_knobs; k++) {
         int pad = 14 - (int)strlen(knobs[k].name);
         fprintf(out, "      --%s=V%*s%s", knobs[k].name, pad > 1 ? pad : 1, "", knobs[k].help);
@@ -131,8 +145,8 @@ static void print_help(const char *program, const char *summary, const knob *kno
     fprintf(out, "real is %s in this build.\n", REAL_NAME);
 }
 
-options_result options_parse(int argc, char **argv, const char *summary, const knob *knobs, int n_knobs,
-                             render_options *opt, FILE *out, FILE *err)
+options_result options_parse(int argc, char **argv, const char *summary, const char *default_output,
+                             const knob *knobs, int n_knobs, render_options *opt, FILE *out, FILE *err)
 {
     *opt = (render_options){0};
     if (n_knobs > MAX_KNOBS) {
@@ -165,21 +179,21 @@ options_result options_parse(int argc, char **argv, const char *summary, const k
             break;
         case 's':
             if (!parse_size(optarg, &opt->width, &opt->height)) {
-                fprintf(err, "%s: --size: '%s' is not WxH with sides from 1 to %d\n", argv[0], optarg, MAX_IMAGE_SIDE);
+                option_error(err, argv[0], "--size: '%s' is not WxH with sides from 1 to %d", optarg, MAX_IMAGE_SIDE);
                 return OPTIONS_ERROR;
             }
             break;
         case 'n':
             if (!parse_long(optarg, 1, 1L << 16, &value) || !is_square(value)) {
-                fprintf(err, "%s: --samples: '%s' is not a square number from 1 to 65536 (1, 4, 9, 16, ...)\n",
-                        argv[0], optarg);
+                option_error(err, argv[0], "--samples: '%s' is not a square number from 1 to 65536 (1, 4, 9, 16, ...)",
+                             optarg);
                 return OPTIONS_ERROR;
             }
             opt->samples = (int)value;
             break;
         case 'j':
             if (!parse_long(optarg, 1, 1024, &value)) {
-                fprintf(err, "%s: --threads: '%s' is not a number from 1 to 1024\n", argv[0], optarg);
+                option_error(err, argv[0], "--threads: '%s' is not a number from 1 to 1024", optarg);
                 return OPTIONS_ERROR;
             }
             opt->threads = (int)value;
@@ -189,7 +203,7 @@ options_result options_parse(int argc, char **argv, const char *summary, const k
             errno = 0;
             unsigned long long seed = strtoull(optarg, &end, 10);
             if (errno || end == optarg || *end || optarg[0] == '-') {
-                fprintf(err, "%s: --seed: '%s' is not a non-negative integer\n", argv[0], optarg);
+                option_error(err, argv[0], "--seed: '%s' is not a non-negative integer", optarg);
                 return OPTIONS_ERROR;
             }
             opt->seed = (unsigned long)seed;
@@ -201,23 +215,23 @@ options_result options_parse(int argc, char **argv, const char *summary, const k
         case OPT_NONFINITE: {
             int chosen;
             const knob mode = {"nonfinite", KNOB_CHOICE, &chosen, nonfinite_modes, NULL};
-            if (!set_knob(&mode, optarg, err))
+            if (!set_knob(&mode, optarg, argv[0], err))
                 return OPTIONS_ERROR;
             opt->nonfinite = (nonfinite_mode)chosen;
             break;
         }
         case 'h':
-            print_help(argv[0], summary, knobs, n_knobs, out);
+            print_help(argv[0], summary, default_output, knobs, n_knobs, out);
             return OPTIONS_EXIT;
         case ':':
-            fprintf(err, "%s: %s needs a value (see --help)\n", argv[0], argv[optind - 1]);
+            option_error(err, argv[0], "%s needs a value", argv[optind - 1]);
             return OPTIONS_ERROR;
         case '?':
-            fprintf(err, "%s: unknown option '%s' (see --help)\n", argv[0], argv[optind - 1]);
+            option_error(err, argv[0], "unknown option '%s'", argv[optind - 1]);
             return OPTIONS_ERROR;
         default:
             if (c >= OPT_KNOB && c < OPT_KNOB + n_knobs) {
-                if (!set_knob(&knobs[c - OPT_KNOB], optarg, err))
+                if (!set_knob(&knobs[c - OPT_KNOB], optarg, argv[0], err))
                     return OPTIONS_ERROR;
             }
             break;
@@ -226,7 +240,7 @@ options_result options_parse(int argc, char **argv, const char *summary, const k
     if (optind < argc)
         opt->scene_path = argv[optind++];
     if (optind < argc) {
-        fprintf(err, "%s: one scene file at most, but '%s' follows '%s'\n", argv[0], argv[optind], opt->scene_path);
+        option_error(err, argv[0], "one scene file at most, but '%s' follows '%s'", argv[optind], opt->scene_path);
         return OPTIONS_ERROR;
     }
     return OPTIONS_OK;

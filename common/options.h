@@ -53,10 +53,12 @@ typedef enum {
     OPTIONS_ERROR, /* a message was printed: exit 2 */
 } options_result;
 
-/* Parses argv.  `summary` is the first line of --help.  Messages go to `out`
- * (help) and `err` (errors); an error names the option and the problem. */
-options_result options_parse(int argc, char **argv, const char *summary, const knob *knobs, int n_knobs,
-                             render_options *opt, FILE *out, FILE *err);
+/* Parses argv.  `summary` is the first line of --help, which says that the
+ * image goes to `default_output` without -o.  Messages go to `out` (help)
+ * and `err` (errors); an error names the program, the option and the
+ * problem, and points to --help. */
+options_result options_parse(int argc, char **argv, const char *summary, const char *default_output,
+                             const knob *knobs, int n_knobs, render_options *opt, FILE *out, FILE *err);
 
 /* The output path: -o when given, otherwise `fallback`. */
 const char *options_output(const render_options *opt, const char *fallback);

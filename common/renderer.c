@@ -5,14 +5,17 @@
 
 #include "exercise.h"
 #include "png_write.h"
+#include "scene_cost.h"
 
 int renderer_main(const renderer *r, int argc, char **argv)
 {
     /* An unfinished exercise's stub (a student's build) is named once, in
      * one line after the image, however many run. */
     exercise_defer();
+    char fallback[256];
+    snprintf(fallback, sizeof fallback, "%s.png", r->name);
     render_options opt;
-    switch (options_parse(argc, argv, r->summary, r->knobs, r->n_knobs, &opt, stdout, stderr)) {
+    switch (options_parse(argc, argv, r->summary, fallback, r->knobs, r->n_knobs, &opt, stdout, stderr)) {
     case OPTIONS_EXIT: return 0;
     case OPTIONS_ERROR: return 2;
     case OPTIONS_OK: break;
@@ -52,9 +55,13 @@ int renderer_main(const renderer *r, int argc, char **argv)
         if (ignored[0])
             fprintf(stderr, "%s: %s: %s\n", r->name, opt.scene_path, ignored);
     }
+    if (!r->accelerated && !opt.quiet) {
+        char note[256];
+        scene_cost_note(&desc, r->modelled, note, sizeof note);
+        if (note[0])
+            fprintf(stderr, "%s: %s: %s\n", r->name, scene_name(&desc), note);
+    }
 
-    char fallback[256];
-    snprintf(fallback, sizeof fallback, "%s.png", r->name);
     const char *output = options_output(&opt, fallback);
     int status = 1;
     image img = {0};

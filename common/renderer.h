@@ -12,6 +12,8 @@
 #ifndef RT_RENDERER_H
 #define RT_RENDERER_H
 
+#include <stdbool.h>
+
 #include "options.h"
 #include "render_loop.h"
 #include "scene.h"
@@ -22,6 +24,7 @@ typedef struct {
     const knob *knobs;
     int n_knobs;
     unsigned modelled; /* the scene_features this stage models; the rest are named as ignored */
+    bool accelerated;  /* traces through an acceleration structure (chapter 11): no warning for big meshes */
     int default_width, default_height;
 
     /* Fills `desc` (already scene_init'ed) with the built-in scene. */

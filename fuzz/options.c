@@ -35,7 +35,7 @@ static options_result parse(int argc, char **argv, render_options *opt, char *me
     memset(messages, 0, messages_size);
     FILE *out = fmemopen(messages, messages_size - 1, "w");
     fuzz_check(out != NULL, "fmemopen");
-    options_result result = options_parse(argc, argv, "fuzz", knobs, 3, opt, out, out);
+    options_result result = options_parse(argc, argv, "fuzz", "fuzz.png", knobs, 3, opt, out, out);
     fclose(out);
     return result;
 }

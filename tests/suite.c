@@ -1,6 +1,9 @@
 #include "suite.h"
 
+#include "exercise.h"
+
 #include <math.h>
+#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -50,20 +53,59 @@ static int near(double a, double b, double tolerance)
     return fabs(a - b) <= slack || (a != a && b != b);
 }
 
+/* What a failed check says instead of a guess when the placeholder of an
+ * unfinished exercise ran in the test. */
+static const char placeholder_ran[] = "    likely mistake: none yet: the placeholder of an unfinished exercise ran in "
+                                      "this test (the line 'is still an exercise' names it); finish it first\n";
+
+/* The "likely mistake" lines of a failed check: when a placeholder ran in
+ * this test (an untouched exercise), that, and no guess; else every suspect
+ * that matched (mistakes that give the same numbers are all named), or the
+ * hint when none did. */
+static void print_why(const char *hint, const char *const *matched, size_t n_matched)
+{
+    if (atomic_load(&exercise_stub_ran)) {
+        print_error("%s", placeholder_ran);
+        return;
+    }
+    if (n_matched == 0) {
+        print_error("    likely mistake: %s\n", hint);
+        return;
+    }
+    for (size_t k = 0; k < n_matched; k++)
+        print_error("    %s %s\n", k == 0 ? "likely mistake:" : "or, the same numbers:", matched[k]);
+}
+
+void suite_fail_msg(const char *file, int line, const char *format, ...)
+{
+    char message[4096];
+    va_list args;
+    va_start(args, format);
+    vsnprintf(message, sizeof message, format, args);
+    va_end(args);
+    char *guess = strstr(message, "\n    likely mistake: ");
+    if (guess && atomic_load(&exercise_stub_ran)) {
+        *guess = '\0';
+        print_error("ERROR: %s\n%s", message, placeholder_ran);
+    } else {
+        print_error("ERROR: %s\n", message);
+    }
+    _fail(file, line);
+}
+
 void check_close_why(double expected, double actual, double tolerance, const char *input, const char *hint,
                      const suspect *suspects, size_t n, const char *file, int line)
 {
     double error = actual - expected;
     if (error <= tolerance && -error <= tolerance)
         return;
-    const char *why = hint;
-    for (size_t k = 0; k < n; k++)
-        if (near(suspects[k].value, actual, tolerance)) {
-            why = suspects[k].mistake;
-            break;
-        }
-    print_error("%s\n    expected %.17g (within %.3g)\n    got      %.17g\n    likely mistake: %s\n", input, expected,
-                tolerance, actual, why);
+    const char *matched[SUITE_MAX_SUSPECTS];
+    size_t n_matched = 0;
+    for (size_t k = 0; k < n && n_matched < SUITE_MAX_SUSPECTS; k++)
+        if (near(suspects[k].value, actual, tolerance))
+            matched[n_matched++] = suspects[k].mistake;
+    print_error("%s\n    expected %.17g (within %.3g)\n    got      %.17g\n", input, expected, tolerance, actual);
+    print_why(hint, matched, n_matched);
     _fail(file, line);
 }
 
@@ -76,17 +118,17 @@ void check_vec3_why(vec3 expected, vec3 actual, double tolerance, const char *in
         ok &= a[k] - e[k] <= tolerance && e[k] - a[k] <= tolerance;
     if (ok)
         return;
-    const char *why = hint;
-    for (size_t k = 0; k < n; k++) {
+    const char *matched[SUITE_MAX_SUSPECTS];
+    size_t n_matched = 0;
+    for (size_t k = 0; k < n && n_matched < SUITE_MAX_SUSPECTS; k++) {
         const vec3 s = suspects[k].value;
-        if (near(s.x, actual.x, tolerance) && near(s.y, actual.y, tolerance) && near(s.z, actual.z, tolerance)) {
-            why = suspects[k].mistake;
-            break;
-        }
+        if (near(s.x, actual.x, tolerance) && near(s.y, actual.y, tolerance) && near(s.z, actual.z, tolerance))
+            matched[n_matched++] = suspects[k].mistake;
     }
     print_error("%s\n    expected (%.17g, %.17g, %.17g) (within %.3g per component)\n"
-                "    got      (%.17g, %.17g, %.17g)\n    likely mistake: %s\n",
-                input, e[0], e[1], e[2], tolerance, a[0], a[1], a[2], why);
+                "    got      (%.17g, %.17g, %.17g)\n",
+                input, e[0], e[1], e[2], tolerance, a[0], a[1], a[2]);
+    print_why(hint, matched, n_matched);
     _fail(file, line);
 }
 
@@ -127,6 +169,13 @@ const char *cornell_data(void)
     return NULL;
 }
 
+static int forget_stubs(void **state)
+{
+    (void)state;
+    atomic_store(&exercise_stub_ran, false);
+    return 0;
+}
+
 int suite_main(const char *name, const graded_test *tests, size_t n, int argc, char **argv)
 {
     struct CMUnitTest *plain = calloc(n ? n : 1, sizeof *plain);
@@ -161,8 +210,12 @@ int suite_main(const char *name, const graded_test *tests, size_t n, int argc, c
         return 2;
     }
     for (size_t k = 0; k < n; k++)
-        if (!only || strcmp(tests[k].test.name, only) == 0)
-            plain[count++] = tests[k].test;
+        if (!only || strcmp(tests[k].test.name, only) == 0) {
+            plain[count] = tests[k].test;
+            if (!plain[count].setup_func) /* each test starts with no placeholder run */
+                plain[count].setup_func = forget_stubs;
+            count++;
+        }
     if (only && count == 0) {
         fprintf(stderr, "%s: no test named '%s' (see --list)\n", argv[0], only);
         free(plain);

@@ -64,8 +64,19 @@ typedef struct {
 
 /* Like assert_close and assert_vec3_close, for a student's function: on
  * failure the message names the input (a string), the expected value, the
- * value got, and the likely mistake: the first suspect whose value the got
- * value matches, else `hint`.  n suspects (0 and NULL for none). */
+ * value got, and the likely mistake: every suspect whose value the got value
+ * matches (two mistakes that give the same numbers are both named, up to
+ * SUITE_MAX_SUSPECTS), else `hint`.  n suspects (0 and NULL for none).  When
+ * the placeholder of an unfinished exercise ran in the test (EXERCISE_STUB,
+ * exercise.h), it says that instead of guessing at a mistake. */
+#define SUITE_MAX_SUSPECTS 8
+
+/* cmocka's fail_msg, with the same rule for a message's "likely mistake:"
+ * line: when a placeholder ran in the test, the rest of the message from
+ * that line on is replaced by what assert_close_why says then. */
+#undef fail_msg
+#define fail_msg(...) suite_fail_msg(__FILE__, __LINE__, __VA_ARGS__)
+void suite_fail_msg(const char *file, int line, const char *format, ...) CMOCKA_PRINTF_ATTRIBUTE(3, 4);
 #define assert_close_why(expected, actual, tolerance, input, hint, suspects, n)                                     \
     check_close_why((double)(expected), (double)(actual), (double)(tolerance), input, hint, suspects, n, __FILE__, \
                     __LINE__)

@@ -326,8 +326,13 @@ static void test_no_acne_no_leak(void **state)
             /* every point of the square, and most of the sphere's (those that face the light) */
             assert_true(bound.points >= (shape == ACNE_SQUARE ? 32 * 32 : 32 * 32 / 2));
             if (bound.acne != 0 || bound.leak != 0)
-                fail_msg("%s at scale %g: %.2f %% acne, %.2f %% leak with the default policy",
-                         acne_shape_names[shape], (double)acne_scales[k], bound.acne, bound.leak);
+                fail_msg("%s at scale %g: %.2f %% acne, %.2f %% leak with the default policy\n    likely mistake: %s",
+                         acne_shape_names[shape], (double)acne_scales[k], bound.acne, bound.leak,
+                         bound.acne != 0 ? "the shadow ray leaves from the hit point itself and meets its own "
+                                           "surface: build it with spawn_ray_to(sp, light_pos, policy, &t_max), "
+                                           "which moves its start off the surface as the policy says"
+                                         : "the window must be (0, t_max) with the t_max spawn_ray_to gives: a "
+                                           "blocker just short of the light counts");
             assert_int_equal(0, acne_measure((acne_shape)shape, acne_scales[k], EPS_NONE, 32, &none));
             if (shape == ACNE_SPHERE && none.acne < 10)
                 fail_msg("sphere at scale %g: the blunder gives only %.2f %% acne", (double)acne_scales[k], none.acne);

@@ -93,12 +93,14 @@ static void test_exponent_behaviour(void **state)
     color k_s = {0.9, 0.7, 0.3};
     scene_light light = {.position = vec3_add(point, vec3_scale(at_angle(n, side, 40 * pi / 180), 2.5)),
                          .intensity = {10, 10, 10}};
-    const double exponents[] = {1, 10, 100, 1000};
+    /* A scene file may give any exponent: fractional ones catch x^p by an integer loop. */
+    const double exponents[] = {1, 2.5, 10, 37.5, 100, 1000};
+    const int n_exponents = sizeof exponents / sizeof exponents[0];
     const double alphas[] = {0, 2, 5, 10};
     for (int a = 0; a < 4; a++) {
         vec3 v = at_angle(n, side, -(40 + 2 * alphas[a]) * pi / 180);
         double previous = INFINITY;
-        for (int k = 0; k < 4; k++) {
+        for (int k = 0; k < n_exponents; k++) {
             color L = blinn_phong_specular(k_s, (real)exponents[k], point, n, v, &light, PHONG_COURSE);
             double cos_alpha = cos(alphas[a] * pi / 180), cos_l = cos(40 * pi / 180);
             double expected = 0.9 * 10 / 6.25 * pow(cos_alpha, exponents[k]);
@@ -108,6 +110,12 @@ static void test_exponent_behaviour(void **state)
                 {0.9 * 10 * pow(cos_alpha, exponents[k]), "no falloff: divide by r^2"},
                 {0.9 * 10 / 2.5 * pow(cos_alpha, exponents[k]), "divided by r, not r^2"},
                 {10 / 6.25 * pow(cos_alpha, exponents[k]), "k_s missing"},
+                {0.9 * 10 / 6.25 * pow(cos_alpha, ceil(exponents[k])),
+                 "the power of a fractional p taken as an integer (a loop of products): p may be any real, "
+                 "x^p is real_pow(x, p)"},
+                {0.9 * 10 / 6.25 * pow(cos_alpha, floor(exponents[k])),
+                 "the power of a fractional p taken as an integer (a loop of products, or p cast to int): p "
+                 "may be any real, x^p is real_pow(x, p)"},
             };
             /* cos^p has the relative error of cos times p */
             assert_close_why(expected, L.r, FAR_TOL(1.44, 2.5) * (1 + exponents[k] * alphas[a] / 10),

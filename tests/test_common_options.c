@@ -36,7 +36,7 @@ static parsed parse(const char *first, ...)
     memset(&p, 0, sizeof p);
     FILE *out = fmemopen(p.out, sizeof p.out - 1, "w");
     FILE *err = fmemopen(p.err, sizeof p.err - 1, "w");
-    p.result = options_parse(argc, argv, "test renderer", knobs, 3, &p.opt, out, err);
+    p.result = options_parse(argc, argv, "test renderer", "test.png", knobs, 3, &p.opt, out, err);
     fclose(out);
     fclose(err);
     return p;
@@ -83,6 +83,17 @@ static void test_all_shared_options(void **state)
     assert_int_equal(5, p.opt.height);
 }
 
+/* An option's error is one line: the program, the problem, and where to look. */
+static void assert_one_line_naming_program_and_help(const char *option, const char *err)
+{
+    const char *program = "build/07_blinn_phong/render: ";
+    const char *help = " (see --help)\n";
+    size_t n = strlen(err);
+    if (strncmp(err, program, strlen(program)) != 0 || n < strlen(help) ||
+        strcmp(err + n - strlen(help), help) != 0 || strchr(err, '\n') != err + n - 1)
+        fail_msg("%s: the message is not one line '%s...%s': '%s'", option, program, help, err);
+}
+
 static void test_bad_values_name_the_option(void **state)
 {
     (void)state;
@@ -94,24 +105,28 @@ static void test_bad_values_name_the_option(void **state)
         {"--epsilon", "nan", "--epsilon"}, {"--nonfinite", "zero", "--nonfinite"},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
-        parsed p = parse("render", bad[k][0], bad[k][1], NULL);
+        parsed p = parse("build/07_blinn_phong/render", bad[k][0], bad[k][1], NULL);
         if (p.result != OPTIONS_ERROR || !strstr(p.err, bad[k][2]) || !strstr(p.err, bad[k][1]))
             fail_msg("%s %s: result %d, message '%s'", bad[k][0], bad[k][1], p.result, p.err);
+        assert_one_line_naming_program_and_help(bad[k][0], p.err);
     }
 }
 
 static void test_unknown_option_missing_value_and_extra_scene(void **state)
 {
     (void)state;
-    parsed p = parse("render", "--frobnicate", NULL);
+    parsed p = parse("build/07_blinn_phong/render", "--frobnicate", NULL);
     assert_int_equal(OPTIONS_ERROR, p.result);
     assert_non_null(strstr(p.err, "--frobnicate"));
-    p = parse("render", "-o", NULL);
+    assert_one_line_naming_program_and_help("--frobnicate", p.err);
+    p = parse("build/07_blinn_phong/render", "-o", NULL);
     assert_int_equal(OPTIONS_ERROR, p.result);
     assert_non_null(strstr(p.err, "-o"));
-    p = parse("render", "a.xml", "b.xml", NULL);
+    assert_one_line_naming_program_and_help("-o", p.err);
+    p = parse("build/07_blinn_phong/render", "a.xml", "b.xml", NULL);
     assert_int_equal(OPTIONS_ERROR, p.result);
     assert_non_null(strstr(p.err, "b.xml"));
+    assert_one_line_naming_program_and_help("a.xml b.xml", p.err);
 }
 
 static void test_knobs_set_their_targets(void **state)
@@ -134,7 +149,8 @@ static void test_help_lists_options_knobs_and_defaults(void **state)
     assert_int_equal(OPTIONS_EXIT, p.result);
     const char *expected[] = {"test renderer", "--output", "--size", "--samples", "--threads", "--seed",
                               "--quiet",       "--nonfinite=M", "drop", "show", "fail", "--sphere", "robust|textbook", "default robust", "--depth",
-                              "default 5",     "--epsilon", "default 0.001", REAL_NAME};
+                              "default 5",     "--epsilon", "default 0.001", REAL_NAME,
+                              "(default: test.png in the current folder)"};
     for (size_t k = 0; k < sizeof expected / sizeof expected[0]; k++)
         if (!strstr(p.out, expected[k]))
             fail_msg("--help does not mention '%s':\n%s", expected[k], p.out);

@@ -84,7 +84,7 @@ static void test_refuses_what_is_not_a_regular_file(void **state)
         int status = png_write(&img, 1, paths[k], err, sizeof err);
         if (status != -1)
             fail_msg("%s: written (status %d)", paths[k], status);
-        char words[128];
+        char words[sizeof device + 64]; /* a path of up to 127 characters and the words */
         snprintf(words, sizeof words, "%s: not written: it is %s", paths[k], kinds[k]);
         if (!strstr(err, words))
             fail_msg("expected '%s' in '%s'", words, err);

@@ -9,6 +9,7 @@
 #include <stb_image_write.h>
 
 #include "scene.h"
+#include "scene_cost.h"
 #include "suite.h"
 
 static char folder[64];
@@ -534,6 +535,39 @@ static void test_cornell_corpus_parses(void **state)
     }
 }
 
+/* A stage without the grid is warned of a scene with more than
+ * SCENE_MANY_TRIANGLES triangles it tests (common/scene_cost.h): Triangle
+ * surfaces always, mesh faces when it models meshes. */
+static void test_cost_note_counts_the_triangles_a_stage_tests(void **state)
+{
+    (void)state;
+    mesh big = {.n_faces = SCENE_MANY_TRIANGLES}; /* only the count is read */
+    scene_surface surfaces[] = {{.kind = SURFACE_MESH, .mesh = 0}, {.kind = SURFACE_SPHERE},
+                                {.kind = SURFACE_TRIANGLE}, {.kind = SURFACE_BOX}};
+    scene s;
+    scene_init(&s);
+    s.meshes = &big;
+    s.n_meshes = 1;
+    s.surfaces = surfaces;
+    s.n_surfaces = 2; /* the mesh and the sphere: exactly at the limit */
+    const unsigned all = FEATURE_TRIANGLES | FEATURE_MESHES | FEATURE_SPHERES | FEATURE_BOXES;
+    char note[256] = "x";
+    assert_int_equal(SCENE_MANY_TRIANGLES, scene_triangles(&s, all));
+    scene_cost_note(&s, all, note, sizeof note);
+    assert_string_equal("", note);
+    s.n_surfaces = 4; /* and one Triangle: one more than the limit */
+    assert_int_equal(SCENE_MANY_TRIANGLES + 1, scene_triangles(&s, all));
+    scene_cost_note(&s, all, note, sizeof note);
+    char count[32];
+    snprintf(count, sizeof count, "%d triangles", SCENE_MANY_TRIANGLES + 1);
+    if (strncmp(note, count, strlen(count)) != 0 || !strstr(note, "chapter 11"))
+        fail_msg("the note does not start with '%s' and name chapter 11: '%s'", count, note);
+    /* Chapter 03 ignores meshes: one triangle to test. */
+    assert_int_equal(1, scene_triangles(&s, FEATURE_TRIANGLES | FEATURE_SPHERES));
+    scene_cost_note(&s, FEATURE_TRIANGLES | FEATURE_SPHERES, note, sizeof note);
+    assert_string_equal("", note);
+}
+
 static const graded_test tests[] = {
     GRADED(test_full_scene_values, 0),
     GRADED(test_defaults_of_an_empty_scene, 0),
@@ -546,6 +580,7 @@ static const graded_test tests[] = {
     GRADED(test_texture_images_are_decoded_in_full, 0),
     GRADED(test_limits_of_one_line_face_and_file, 0),
     GRADED(test_cornell_corpus_parses, 0),
+    GRADED(test_cost_note_counts_the_triangles_a_stage_tests, 0),
 };
 
 int main(int argc, char **argv)

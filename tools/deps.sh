@@ -4,29 +4,33 @@
 # With the group `fuzz` (make fuzz), the packages of the fuzz targets instead:
 # clang with libFuzzer and the sanitizers, and expat; the default build's own
 # packages are left as they are.  Other groups add the needs of one target:
+# figures (make figures and make check: gnuplot-nox for the plotted figures),
 # bench (make bench: gnuplot-nox for the plots, povray for the comparison
 # with POV-Ray) and bench-grid (make bench-grid: libembree-dev, Intel Embree
 # 3, to compare the grid with, and glmark2-data, the Stanford bunny as OBJ).
 #
 # Each need is probed by compiling a one-line program with CC.  What is
 # missing is installed with apt-get (as root) or sudo apt-get (when sudo works
-# without a password); otherwise one line names the packages and the build stops.
+# without a password); otherwise (or with DEPS_NO_INSTALL=1, as tests/make.sh
+# runs it) one line names the packages and the build stops.
 cc=${1:-cc}
 [ $# -gt 0 ] && shift
 missing=""
 mode=build
+needs_gnuplot=0
 for group in "$@"; do
     case "$group" in
         fuzz) mode=fuzz ;;
+        figures) needs_gnuplot=1 ;;
         bench)
-            command -v gnuplot >/dev/null 2>&1 || missing="$missing gnuplot-nox"
+            needs_gnuplot=1
             command -v povray >/dev/null 2>&1 || missing="$missing povray"
             ;;
         bench-grid)
             dpkg -s libembree-dev >/dev/null 2>&1 || missing="$missing libembree-dev"
             dpkg -s glmark2-data >/dev/null 2>&1 || missing="$missing glmark2-data"
             ;;
-        *) echo "deps.sh: unknown group '$group' (known: fuzz, bench, bench-grid)" >&2; exit 2 ;;
+        *) echo "deps.sh: unknown group '$group' (known: fuzz, figures, bench, bench-grid)" >&2; exit 2 ;;
     esac
 done
 
@@ -51,6 +55,7 @@ if [ "$mode" = fuzz ]; then
 elif ! command -v "$cc" >/dev/null 2>&1; then
     case "$cc" in
         clang*) missing="$missing clang libomp-dev" ;;
+        gcc-[0-9]*) missing="$missing $cc" ;; # Debian's gcc-11, gcc-12, ...
         *) missing="$missing gcc" ;;
     esac
 else
@@ -67,15 +72,22 @@ else
     esac
 fi
 command -v timeout >/dev/null 2>&1 || missing="$missing coreutils"
-command -v gnuplot >/dev/null 2>&1 || missing="$missing gnuplot-nox" # the plots of make figures
+if [ "$needs_gnuplot" = 1 ]; then
+    command -v gnuplot >/dev/null 2>&1 || missing="$missing gnuplot-nox"
+fi
 
 [ -z "$missing" ] && exit 0
 
-if [ "$(id -u)" = 0 ]; then
+if [ -n "${DEPS_NO_INSTALL:-}" ]; then
+    apt=
+elif [ "$(id -u)" = 0 ]; then
     apt=apt-get
 elif command -v sudo >/dev/null 2>&1 && sudo -n true 2>/dev/null; then
     apt="sudo apt-get"
 else
+    apt=
+fi
+if [ -z "$apt" ]; then
     echo "missing Debian packages:$missing (install them with: sudo apt-get install$missing)" >&2
     exit 1
 fi

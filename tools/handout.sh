@@ -1,9 +1,11 @@
 #!/bin/bash
 # handout.sh DEST DOUBLE_LIBS FLOAT_LIBS - write the repository a student receives.
 #
-# DEST gets the project without solutions/: Makefile, README.md (with a first
-# section for the student), common/,
-# chapters/ (the skeletons), tests/, tools/, docs/, and reference/double/ and
+# DEST gets the project without solutions/: Makefile, README.md (the
+# repository's first paragraph, a section for the student, the copy's layout
+# and the repository's sections that hold for it), common/, chapters/ (the
+# skeletons), tests/, tools/, docs/ (without the instructor's guide and
+# CONTRIBUTING.md, and without the links to them), and reference/double/ and
 # reference/float/, the compiled reference of each chapter's exercise files
 # (libNN_name.a from DOUBLE_LIBS and FLOAT_LIBS, which `make handout` builds).
 # The Makefile of the copy finds them: grading chapter N links the student's
@@ -77,7 +79,34 @@ reference's, once `make STUDENT=0` has built them.
 
 TEXT
 )
-awk -v text="$student_text" '!done && /^## / { print text; print ""; done = 1 } { print }' README.md >"$dest/README.md" || exit 1
+layout_text=$(cat <<'TEXT'
+## Layout of your copy
+
+```
+Makefile             make, make test, make grade, make help
+common/              the shared core: real, vec3, ray, colour, image, PNG output, options, render loop, scenes
+chapters/NN_name/    one stage each: its README, your exercise files (the TODOs), its scenes
+tests/               the test suites that grade your exercises, one per chapter, and those of common/
+reference/           the compiled reference of every chapter's exercise files
+docs/                the index of chapters, the design, the scene format, figures, measurements
+tools/               the scripts and small programs behind the make targets
+```
+TEXT
+)
+# The repository's first paragraph, the student's sections, then the
+# repository's sections that hold for the copy as they are.
+awk -v text="$student_text" -v layout="$layout_text" '
+    /^## / && !started { print text; print ""; print layout; print ""; started = 1 }
+    /^## / { keep = ($0 ~ /^## (Next to the repository|Precision and the other knobs)/) }
+    !started || keep { print }' README.md >"$dest/README.md" || exit 1
+# The instructor's and the maintainer's texts stay in the repository, and so
+# do the links to them.
+rm -f "$dest/docs/instructor-guide.md" "$dest/docs/CONTRIBUTING.md"
+for f in "$dest"/docs/*.md; do
+    awk '/^- \[[^]]*\]\((instructor-guide|CONTRIBUTING)\.md\)/ { skip = 1; next }
+         skip && /^  / { next } { skip = 0; print }' "$f" |
+        sed -E 's/ \(\[(instructor-guide|CONTRIBUTING)\.md\]\([^)]*\)\)//g' >"$f.tmp" && mv "$f.tmp" "$f" || exit 1
+done
 cat >"$dest/reference/README.md" <<'TEXT'
 # The compiled reference
 

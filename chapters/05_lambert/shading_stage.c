@@ -95,6 +95,7 @@ int shading_main(const shading_stage *stage, int argc, char **argv)
         .knobs = knobs,
         .n_knobs = SHAPE_KNOBS + stage->n_knobs,
         .modelled = stage->modelled,
+        .accelerated = stage->accelerated,
         .default_width = 512,
         .default_height = 512,
         .builtin = stage->builtin ? stage->builtin : shading_scene,

@@ -48,6 +48,7 @@ typedef struct {
     const void *shade_knobs; /* becomes tracer.knobs; the knobs' targets live in it */
     build_query_fn build_query; /* NULL: hit_query_linear */
     int (*builtin)(scene *desc); /* NULL: the shared built-in scene (shading_scene.h) */
+    bool accelerated;            /* build_query makes an acceleration structure (chapter 11) */
 } shading_stage;
 /* end snippet */
 #define MAX_STAGE_KNOBS 14 /* the most knobs a stage may have */

@@ -63,6 +63,7 @@ shading_stage grid_stage(void)
     stage.knobs = rows;
     stage.n_knobs = n;
     stage.builtin = grid_scene;
+    stage.accelerated = true;
     return stage;
 }
 /* end snippet */

@@ -154,6 +154,7 @@ int main(int argc, char **argv)
         .knobs = knobs,
         .n_knobs = n_knobs,
         .modelled = the_stage.modelled,
+        .accelerated = true,
         .default_width = 512,
         .default_height = 512,
         .builtin = the_stage.builtin,

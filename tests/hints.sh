@@ -1,0 +1,83 @@
+#!/bin/bash
+# hints.sh DIR - the suites' hints name the mistakes a student makes.
+#
+# Copies the project into DIR, plants one mistake at a time into a copy of a
+# solution (a sed script on its code lines, never on its comments), builds
+# the chapter's suite, runs the test that must catch it, and checks that the
+# output names the mistake (grep -E patterns, all must be found) and nothing
+# it must not (one pattern).  Run by tests/make.sh; needs solutions/.
+set -u
+dir=${1:?usage: hints.sh DIR}
+cc=${CC:-cc}
+mkdir -p "$dir" || exit 1
+cp -R Makefile common chapters solutions tests tools fuzz "$dir/" || exit 1
+mkdir -p "$dir/bench" && cp -R bench/grid "$dir/bench/" || exit 1
+failed=0
+
+# plant NAME CHAPTER FILE SED TEST MUST_NOT PATTERN...: STUDENT=1 with the
+# other chapters from the reference when FILE is "skeleton" (the untouched
+# exercise), else FILE of solutions/CHAPTER edited by SED.
+plant() {
+    local name=$1 chapter=$2 file=$3 script=$4 test=$5 must_not=$6
+    shift 6
+    local build=build-planted make_args=() out
+    if [ "$file" = skeleton ]; then
+        local others
+        others=$(cd "$dir/chapters" && ls -d [0-9][0-9]_* | grep -v "^$chapter" | cut -c1-2 | tr '\n' ' ')
+        make_args=(STUDENT=1 "REFERENCE=$others" BUILD=$build-skeleton)
+        build=$build-skeleton
+    else
+        cp "solutions/$chapter/$file" "$dir/solutions/$chapter/$file"
+        sed -i "$script" "$dir/solutions/$chapter/$file"
+        if cmp -s "solutions/$chapter/$file" "$dir/solutions/$chapter/$file"; then
+            echo "  FAIL    $name: the sed script changed nothing in solutions/$chapter/$file"
+            failed=$((failed + 1))
+            return
+        fi
+        make_args=(BUILD=$build)
+    fi
+    if ! make -s --no-print-directory -C "$dir" CC="$cc" "${make_args[@]}" "$build/tests/test_$chapter" \
+            >"$dir/build.log" 2>&1; then
+        echo "  FAIL    $name: the planted mistake does not compile:"
+        sed 's/^/          /' "$dir/build.log" | head -20
+        failed=$((failed + 1))
+    else
+        out=$("$dir/$build/tests/test_$chapter" --only "$test" 2>&1)
+        local pattern missing=""
+        for pattern in "$@"; do
+            printf '%s\n' "$out" | grep -qE -- "$pattern" || missing="$missing '$pattern'"
+        done
+        if printf '%s\n' "$out" | grep -q '^\[       OK \]'; then
+            missing="$missing (the test passed)"
+        fi
+        if [ -n "$missing" ] || { [ -n "$must_not" ] && printf '%s\n' "$out" | grep -qE -- "$must_not"; }; then
+            echo "  FAIL    $name: $test does not say$missing${must_not:+ or says '$must_not'}:"
+            printf '%s\n' "$out" | sed 's/^/          /' | head -30
+            failed=$((failed + 1))
+        else
+            echo "  ok      $name"
+        fi
+    fi
+    [ "$file" = skeleton ] || cp "solutions/$chapter/$file" "$dir/solutions/$chapter/$file"
+}
+
+# l = light.pos - point, not divided by r, with the right 1/r^2: the numbers
+# of dividing by r instead of r^2.  Both must be named.
+plant "hint: l not normalized (the numbers of 1/r)" 05_lambert lambert.c \
+    's|vec3 l = vec3_scale(to_light, 1 / real_sqrt(r2));|vec3 l = to_light;|' \
+    test_irradiance_facing "" "divided by r, not r\^2" "l not normalized"
+# The shadow ray built by hand from the hit point: acne, and spawn_ray_to named.
+plant "hint: a shadow ray from the hit point itself" 06_shadows shadow.c \
+    's|ray shadow = spawn_ray_to(sp, light_pos, policy, &t_max);|(void)policy; t_max = 1; ray shadow = {sp->hit.point, vec3_sub(light_pos, sp->hit.point)};|' \
+    test_no_acne_no_leak "" "% acne" "likely mistake: .*spawn_ray_to"
+# x^p by a loop of products: right for whole p only.
+plant "hint: x^p by an integer loop" 07_blinn_phong phong.c \
+    's|real highlight = real_pow(real_fmax(0, vec3_dot(n, h)), p);|real highlight = 1; for (int i = 0; i < p; i++) highlight *= real_fmax(0, vec3_dot(n, h));|' \
+    test_exponent_behaviour "" "p = 2\.5" "fractional p"
+# The untouched skeleton: no guessed mistake, the placeholder named.
+plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
+    test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"
+plant "hint: an untouched exercise, in a test's own message" 06_shadows skeleton "" \
+    test_occluder_between_beyond_behind "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"
+
+[ "$failed" -eq 0 ]
