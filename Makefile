@@ -145,11 +145,11 @@ $(OUT)/$1.png: $(BUILD)/$1/render
 
 $(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call stages_upto,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(call link,$$^) -lcmocka -o $$@
+	$$(QLINK)$$(call link,$$^) -lcmocka -o $$@
 
 $(BUILD)/$1/lab: $(call objs,chapters/$1/lab/main.c) $(call lab_objs,$1) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(call link,$$^) -o $$@
+	$$(QLINK)$$(call link,$$^) -o $$@
 
 $(BUILD)/tests/lab_$1: $(call objs,tests/lab_$1.c $(TEST_SUPPORT)) $(call lab_objs,$1) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)

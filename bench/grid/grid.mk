@@ -21,4 +21,4 @@ BENCH_GRID_OBJS := $(call objs,bench/grid/grid_vs_embree.c) $(foreach c,$(call u
 
 $(BENCH_GRID): $(BENCH_GRID_OBJS)
 	@mkdir -p $(@D)
-	$(call link,$^) -lembree3 -o $@
+	$(QLINK)$(call link,$^) -lembree3 -o $@
