@@ -19,3 +19,29 @@ for test in cramer watertight; do
     echo "$row"
 done
 rm -f "${TMPDIR:-/tmp}/bench-03-cracks.$$.png"
+
+# The crossing check of degenerate.c against the distance from the origin
+# (lab --degenerate=N): false hits (a point further than 1 % of an edge
+# from the triangle) at degenerate triangles and by rays in the plane, and
+# clear hits that Cramer's rule alone decides but the test loses.
+n=20000
+echo
+echo "Triangles of size 1 at a distance from the origin (\`build/03_triangle/lab --degenerate=$n\`): false hits of the"
+echo "$((2 * n)) rays at degenerate triangles and in the plane (a point further than 1 % of an edge from the"
+echo "triangle), and the clear hits lost (1 % inside, placed by Cramer's rule alone to within 1/1024 of an edge):"
+echo
+echo "| test, build | 0 | 10 | 10^2 | 10^3 | 10^4 | 10^5 | 10^6 |"
+echo "|---|---|---|---|---|---|---|---|"
+for test in cramer watertight; do
+    for b in "$build" "$fbuild"; do
+        name=double
+        [ "$b" = "$fbuild" ] && name=float
+        "$b/03_triangle/lab" --triangle=$test --degenerate=$n -s 8x8 -o "${TMPDIR:-/tmp}/bench-03-rates.$$.png" 2>&1 |
+            awk -v label="$test, $name" '/at distance/ {
+                sub(/.*: at distance [^:]*: /, ""); split($0, w, " ")
+                lost = $0; sub(/.*; /, "", lost); sub(/ clear hits lost/, "", lost)
+                row = row " " w[1] " / " lost " |"
+            } END { print "| " label " (false / lost of clear) |" row }'
+    done
+done
+rm -f "${TMPDIR:-/tmp}/bench-03-rates.$$.png"

@@ -61,63 +61,82 @@ static double det_of(const double e1[3], const double e2[3], const double w[3])
            e1[2] * (e2[0] * w[1] - e2[1] * w[0]);
 }
 
-/* snippet: det_certain */
-/* Whether det[e1 e2 w] = e1 . (e2 x w) is larger than the error rounding may
- * have put into it.  With u = epsilon / 2 (the unit roundoff) and, to first
- * order:
- *   - computing the determinant (two roundings in each component of the
- *     cross product, three in the dot product) errs by at most 5 u P, where
- *     P = sum |e1_i| |e2_j| |w_k| over the six orders i, j, k of the axes:
- *     the six products of the determinant without their signs;
- *   - computing e1 = a - b and e2 = a - c (one rounding each) moves it by
- *     2 u P, and w (a direction, or a difference of points) by one or two
- *     more roundings: 2 u P;
- *   - the data are rounded too: a vertex coordinate that came from a
- *     rotation, a translation or a file is known to within u to 2 u of
- *     s_i, the largest |coordinate| of the vertices along axis i plus the
- *     largest edge component (a rotation mixes the axes, so an axis along
- *     which the triangle is thin still carries rounding of its size).  That
- *     moves e1 and e2 by up to 4 u s_i and the determinant by up to 4 u Q,
- *     with Q = sum s_i (|e1_j| + |e2_j|) |w_k|; and when w = a - p is a
- *     difference of points it moves w by up to 4 u sw_k (sw as s, over a
- *     and p), the determinant by 4 u R with R = sum |e1_i| |e2_j| sw_k.
- * In all the error is at most 9 u P + 4 u Q + 4 u R.  The test asks for
- * twice the margin on the arithmetic: |det| > 8 eps P + 2 eps Q + 2 eps R.
- * Below that, even the sign of the determinant is rounding noise.  There is
- * no absolute epsilon: P, Q and R scale with the data. */
-static bool det_certain(const double e1[3], const double e2[3], const double w[3], const double s[3],
-                        const double sw[3])
+/* P of det[u v w]: the six products of the determinant without their signs,
+ * sum |u_i| |v_j| |w_k| over the six orders i, j, k of the axes. */
+static double size_of(const double u[3], const double v[3], const double w[3])
 {
-    double det = det_of(e1, e2, w), p = 0, q = 0, r = 0;
+    double p = 0;
     for (int i = 0; i < 3; i++) {
         int j = (i + 1) % 3, k = (i + 2) % 3;
-        p += fabs(e1[i]) * (fabs(e2[j] * w[k]) + fabs(e2[k] * w[j]));
-        q += s[i] * ((fabs(e1[j]) + fabs(e2[j])) * fabs(w[k]) + (fabs(e1[k]) + fabs(e2[k])) * fabs(w[j]));
-        r += sw[i] * (fabs(e1[j] * e2[k]) + fabs(e1[k] * e2[j]));
+        p += fabs(u[i]) * (fabs(v[j] * w[k]) + fabs(v[k] * w[j]));
     }
+    return p;
+}
+
+static double biggest(const double v[3]) { return larger(fabs(v[0]), larger(fabs(v[1]), fabs(v[2]))); }
+
+/* snippet: decided */
+/* Whether Cramer's rule, computed in real arithmetic on the data as they are
+ * stored, decides the crossing.  A determinant det[u v w] computed in real
+ * errs by at most 4 eps P(u, v, w) (to first order: 5 u in the products,
+ * 3 u in the differences a - b, a - c, a - p; u = eps / 2), where P is the
+ * sum of its six products without their signs.  With M = det[e1 e2 d],
+ * N = det[e1 e2 f] (f = a - p; t = N / M), beta = det[f e2 d] / M and
+ * gamma = det[e1 f d] / M:
+ *   - the sign of N must be certain, |N| > 8 eps P_N, so that the ray does
+ *     not start in the plane (t = 0 or no crossing);
+ *   - the hit point a + beta (b - a) + gamma (c - a) must be known to
+ *     within TRIANGLE_POINT_SLACK of the triangle's size L.  When |M| is at least
+ *     twice its error, the errors of beta and gamma are at most twice
+ *     (4 eps P_beta + |beta| 4 eps P_M) / |M| and (4 eps P_gamma + |gamma|
+ *     4 eps P_M) / |M|, and the point's at most their sum times the edge
+ *     lengths (|beta| + |gamma| <= 1 inside); measured by the largest
+ *     |component| (E1, E2, L), lengths are at most 2 times that:
+ *         16 eps (P_beta E1 + P_gamma E2 + P_M L) <= TRIANGLE_POINT_SLACK L |M|.
+ *     It implies |M| > 8 eps P_M: the sign of M is certain too.  (The error
+ *     of t moves the point along the ray: a ray from far away knows its t
+ *     only to eps times the distance, whatever the check does.)
+ * A degenerate triangle (collinear or coincident vertices) and a ray along
+ * its plane fail it, because M is then rounding noise or too small to
+ * place the point; so does a triangle so thin that beta or gamma are
+ * noise even where M is not.  The data themselves are taken as they are:
+ * a vertex far from the origin is where its coordinates say, to the last
+ * digit, so a crossing that the arithmetic decides is a hit at any
+ * distance.  (Budgeting also a rounding of the data of the size of their
+ * coordinates lost nine in ten clear hits on float triangles 10^6 edge
+ * lengths from the origin.)  There is no absolute epsilon: every term
+ * scales with the data. */
+static bool decided(const double e1[3], const double e2[3], const double d[3], const double f[3])
+{
     const double eps = (double)REAL_EPSILON;
-    return fabs(det) > 8 * eps * p + 2 * eps * q + 2 * eps * r; /* NaN fails */
+    double m = fabs(det_of(e1, e2, d)), n = fabs(det_of(e1, e2, f)), p_m = size_of(e1, e2, d);
+    double big_e1 = biggest(e1), big_e2 = biggest(e2), big_l = larger(big_e1, big_e2);
+    if (!(n > 8 * eps * size_of(e1, e2, f))) /* NaN fails */
+        return false;
+    double error = size_of(f, e2, d) * big_e1 + size_of(e1, f, d) * big_e2 + p_m * big_l;
+    return 16 * eps * error <= TRIANGLE_POINT_SLACK * big_l * m && m > 0;
 }
 /* end snippet */
 
-/* A quick sufficient test for det_certain, which the common case (a clear
- * hit) passes at a third of the cost.  Each of the six terms of P is at
- * most E1 E2 W, where E1 = max_i |e1_i|, E2 and W likewise; each of Q at
- * most S (E1 + E2) W, S = max_i s_i; each of R at most SW E1 E2.  So
- *   8 eps P + 2 eps Q + 2 eps R <= 12 eps (W (4 E1 E2 + S (E1 + E2)) + SW E1 E2).
- * det_certain rounds each term of its bound at most 8 times (up, by at most
- * u = 2^-53 in double), this bound at most 6 times (down): the factor
+/* A quick sufficient test for decided, which the common case (a clear hit)
+ * passes at a fraction of the cost.  Each of the six terms of a P is at
+ * most the product of the three largest |components|: P_M <= 6 E1 E2 W,
+ * P_N <= 6 E1 E2 F, P_beta <= 6 F E2 W, P_gamma <= 6 E1 F W, so that
+ *   8 eps P_N <= 48 eps E1 E2 F,
+ *   16 eps (P_beta E1 + P_gamma E2 + P_M L) <= 96 eps E1 E2 W (2 F + L).
+ * decided rounds each term of its bounds at most 8 times (up, by at most
+ * u = 2^-53 in double), this test at most 8 times (down): the factor
  * 1 + 2^-20 covers both.  A rounding below the normal doubles errs by up to
- * 2^-1075 absolutely: 2^-1000 covers all of them.  So where |det|, computed
- * by det_of as there, is larger than this, det_certain is true; where not
- * (and for NaN), det_certain decides. */
-static bool clearly_certain(const double e1[3], const double e2[3], const double w[3], double big_e1,
-                            double big_e2, double big_s, double big_sw)
+ * 2^-1075 absolutely: 2^-1000 covers all of them.  The right-hand side,
+ * TRIANGLE_POINT_SLACK L |M|, and |N| are computed as there.  So where this is true,
+ * decided is; where not (and for NaN), decided decides. */
+static bool clearly_decided(const double e1[3], const double e2[3], const double d[3], const double f[3])
 {
-    double big_w = larger(fabs(w[0]), larger(fabs(w[1]), fabs(w[2])));
-    double e12 = big_e1 * big_e2;
-    const double k = 12 * (double)REAL_EPSILON * (1 + 0x1p-20); /* exact: 3 + 3 2^-20 fits in 53 bits */
-    return fabs(det_of(e1, e2, w)) > k * (big_w * (4 * e12 + big_s * (big_e1 + big_e2)) + big_sw * e12) + 0x1p-1000;
+    const double k = 48 * (double)REAL_EPSILON * (1 + 0x1p-20); /* exact: 3 + 3 2^-20 fits in 53 bits */
+    double m = fabs(det_of(e1, e2, d)), n = fabs(det_of(e1, e2, f));
+    double big_e1 = biggest(e1), big_e2 = biggest(e2), big_w = biggest(d), big_f = biggest(f);
+    double big_l = larger(big_e1, big_e2), e12 = big_e1 * big_e2;
+    return n > k * (e12 * big_f) + 0x1p-1000 && 2 * k * (e12 * big_w * (2 * big_f + big_l)) + 0x1p-1000 < TRIANGLE_POINT_SLACK * big_l * m;
 }
 
 /* 0 when every component of v is finite (x - x is then exactly 0), NaN
@@ -130,8 +149,7 @@ static inline double finite_sum(vec3 v)
 
 /* The data as det_certain sees them: in double, scaled by powers of two.
  * The float build's data are exact in double, and double arithmetic errs
- * less than the bound assumes for float, so the bound still holds.  False
- * for non-finite data. */
+ * far less than the bound allows for float.  False for non-finite data. */
 static bool scaled_data(const triangle *tri, ray r, double a[3], double b[3], double c[3], double p[3],
                         double d[3])
 {
@@ -149,19 +167,15 @@ static bool scaled_data(const triangle *tri, ray r, double a[3], double b[3], do
     return true;
 }
 
-/* The edges e1 = a - b, e2 = a - c and f = a - p; the largest |component| of
- * e1 and e2 (edge). */
-static double edges(const double a[3], const double b[3], const double c[3], const double p[3], double e1[3],
-                    double e2[3], double f[3])
+/* The edges e1 = a - b, e2 = a - c and f = a - p. */
+static void edges(const double a[3], const double b[3], const double c[3], const double p[3], double e1[3],
+                  double e2[3], double f[3])
 {
-    double edge = 0;
     for (int i = 0; i < 3; i++) {
         e1[i] = a[i] - b[i];
         e2[i] = a[i] - c[i];
         f[i] = a[i] - p[i];
-        edge = larger(edge, larger(fabs(e1[i]), fabs(e2[i])));
     }
-    return edge;
 }
 
 bool triangle_crossing_certain_exact(const triangle *tri, ray r)
@@ -169,22 +183,9 @@ bool triangle_crossing_certain_exact(const triangle *tri, ray r)
     double a[3], b[3], c[3], p[3], d[3];
     if (!scaled_data(tri, r, a, b, c, p, d))
         return false;
-    double e1[3], e2[3], f[3], s[3], sf[3];
-    double edge = edges(a, b, c, p, e1, e2, f);
-    for (int i = 0; i < 3; i++) {
-        s[i] = larger(fabs(a[i]), larger(fabs(b[i]), fabs(c[i]))) + edge;
-        sf[i] = larger(fabs(a[i]), fabs(p[i])) + edge;
-    }
-    /* snippet: crossing_certain */
-    /* M = det[a - b   a - c   d] is 0 for a degenerate triangle and for a
-     * direction in (or parallel to) the plane; det[a - b   a - c   a - p], the
-     * numerator of t, is 0 when the origin p lies in the plane, so that the
-     * ray meets the plane at t = 0 or (lying in it) nowhere.  Rounding leaves
-     * either of them a sliver of either sign, and a hit computed from that
-     * sliver is noise. */
-    const double none[3] = {0, 0, 0};
-    return det_certain(e1, e2, d, s, none) && det_certain(e1, e2, f, s, sf);
-    /* end snippet */
+    double e1[3], e2[3], f[3];
+    edges(a, b, c, p, e1, e2, f);
+    return decided(e1, e2, d, f);
 }
 
 bool triangle_crossing_certain(const triangle *tri, ray r)
@@ -192,18 +193,7 @@ bool triangle_crossing_certain(const triangle *tri, ray r)
     double a[3], b[3], c[3], p[3], d[3];
     if (!scaled_data(tri, r, a, b, c, p, d))
         return false;
-    double e1[3], e2[3], f[3], big_e1 = 0, big_e2 = 0, big_v = 0, big_vp = 0;
-    double edge = edges(a, b, c, p, e1, e2, f);
-    for (int i = 0; i < 3; i++) {
-        big_e1 = larger(big_e1, fabs(e1[i]));
-        big_e2 = larger(big_e2, fabs(e2[i]));
-        big_v = larger(big_v, larger(fabs(a[i]), larger(fabs(b[i]), fabs(c[i]))));
-        big_vp = larger(big_vp, larger(fabs(a[i]), fabs(p[i])));
-    }
-    /* Rounding is monotonic: big_v + edge >= every s_i of the exact test,
-     * big_vp + edge every sf_i. */
-    double big_s = big_v + edge, big_sf = big_vp + edge;
-    if (clearly_certain(e1, e2, d, big_e1, big_e2, big_s, 0) && clearly_certain(e1, e2, f, big_e1, big_e2, big_s, big_sf))
-        return true;
-    return triangle_crossing_certain_exact(tri, r);
+    double e1[3], e2[3], f[3];
+    edges(a, b, c, p, e1, e2, f);
+    return clearly_decided(e1, e2, d, f) || decided(e1, e2, d, f);
 }

@@ -1,6 +1,9 @@
 /* degenerate_count.c - chapter 03's lab: false and lost hits, with rounded data. */
 #include "03_triangle/lab/degenerate_count.h"
 
+#include "03_triangle/lab/crossing_reference.h"
+
+#include <math.h>
 #include <stdint.h>
 
 typedef struct {
@@ -24,7 +27,9 @@ typedef struct {
     double m[3][3], scale, offset[3];
 } placement;
 
-static placement random_placement(generator *g)
+/* Random: a scale from 1e-3 to 1e3 and, half of the time, a distance up to
+ * 1e4 scales.  With fixed >= 0: scale 1 at that distance. */
+static placement random_placement(generator *g, double fixed)
 {
     double q[4], n = 0;
     for (int i = 0; i < 4; i++) {
@@ -39,8 +44,13 @@ static placement random_placement(generator *g)
                    pow(10, 6 * uniform(g) - 3),
                    {0, 0, 0}};
     double distance = uniform(g) < 0.5 ? 0 : pow(10, 4 * uniform(g)) * p.scale;
+    double along[3] = {symmetric(g), symmetric(g), symmetric(g)};
+    if (fixed >= 0) { /* along a random direction (the offsets' length is fixed) */
+        p.scale = 1;
+        distance = fixed / sqrt(along[0] * along[0] + along[1] * along[1] + along[2] * along[2]);
+    }
     for (int i = 0; i < 3; i++)
-        p.offset[i] = distance * symmetric(g);
+        p.offset[i] = distance * along[i];
     return p;
 }
 
@@ -52,28 +62,13 @@ static vec3 place(const placement *p, double x, double y, double z)
     return vec3_make((real)out[0], (real)out[1], (real)out[2]);
 }
 
-/* The reference: Cramer's rule in long double on the same (rounded) data.
- * Returns the smallest of alpha, beta, gamma (negative outside) and t. */
-static long double reference(const triangle *tri, ray r, long double *t)
+/* A hit that the data as stored do not have: its point is farther from the
+ * triangle than 1 % of the triangle's longest edge (crossing_reference.h). */
+static long is_false(const triangle *tri, ray r, triangle_hit h, degenerate_count *c)
 {
-    long double e1[3] = {(long double)tri->a.x - tri->b.x, (long double)tri->a.y - tri->b.y,
-                         (long double)tri->a.z - tri->b.z};
-    long double e2[3] = {(long double)tri->a.x - tri->c.x, (long double)tri->a.y - tri->c.y,
-                         (long double)tri->a.z - tri->c.z};
-    long double s[3] = {(long double)tri->a.x - r.p.x, (long double)tri->a.y - r.p.y,
-                        (long double)tri->a.z - r.p.z};
-    long double d[3] = {r.d.x, r.d.y, r.d.z};
-#define DET(u, v, w)                                                                                               \
-    ((u)[0] * ((v)[1] * (w)[2] - (v)[2] * (w)[1]) + (u)[1] * ((v)[2] * (w)[0] - (v)[0] * (w)[2]) +                  \
-     (u)[2] * ((v)[0] * (w)[1] - (v)[1] * (w)[0]))
-    long double M = DET(e1, e2, d);
-    if (M == 0)
-        return -1;
-    long double beta = DET(s, e2, d) / M, gamma = DET(e1, s, d) / M;
-    *t = DET(e1, e2, s) / M;
-#undef DET
-    long double least = beta < gamma ? beta : gamma;
-    return 1 - beta - gamma < least ? 1 - beta - gamma : least;
+    long double off = hit_distance(tri, r, h.t);
+    c->worst_off = fmax(c->worst_off, (double)off);
+    return off > 0.01L;
 }
 
 static double distance_in_edges(ray r, real t, vec3 x, real edge)
@@ -81,7 +76,9 @@ static double distance_in_edges(ray r, real t, vec3 x, real edge)
     return (double)(vec3_length(vec3_sub(ray_at(r, t), x)) / edge);
 }
 
-degenerate_count degenerate_counts(long n, triangle_test test)
+degenerate_count degenerate_counts(long n, triangle_test test) { return degenerate_counts_at(n, test, -1); }
+
+degenerate_count degenerate_counts_at(long n, triangle_test test, double distance)
 {
     degenerate_count c = {0};
     generator g = {88172645463325252u};
@@ -89,7 +86,7 @@ degenerate_count degenerate_counts(long n, triangle_test test)
     const vec3 e_u = vec3_make((real)(1 / sqrt(2.0)), (real)(-1 / sqrt(2.0)), 0);
     const vec3 e_v = vec3_make((real)(1 / sqrt(6.0)), (real)(1 / sqrt(6.0)), (real)(-2 / sqrt(6.0)));
     for (long i = 0; i < n; i++) {
-        placement pl = random_placement(&g);
+        placement pl = random_placement(&g, distance);
         triangle_hit h;
         { /* 1. A degenerate triangle: the third vertex on the line ab, or equal to a or b. */
             double ax = symmetric(&g), ay = symmetric(&g), bx = symmetric(&g), by = symmetric(&g);
@@ -106,6 +103,7 @@ degenerate_count degenerate_counts(long n, triangle_test test)
             c.degenerate_rays++;
             if (triangle_intersect(&tri, r, 0, REAL_INFINITY, test, &h)) {
                 c.degenerate_hits++;
+                c.degenerate_false += is_false(&tri, r, h, &c);
                 c.degenerate_worst = fmax(c.degenerate_worst, distance_in_edges(r, h.t, x, vec3_length(vec3_sub(b, a))));
             }
         }
@@ -126,6 +124,7 @@ degenerate_count degenerate_counts(long n, triangle_test test)
             c.plane_rays++;
             if (triangle_intersect(&tri, r, 0, REAL_INFINITY, test, &h)) {
                 c.plane_hits++;
+                c.plane_false += is_false(&tri, r, h, &c);
                 c.plane_worst = fmax(c.plane_worst, distance_in_edges(r, h.t, x, vec3_length(vec3_sub(tri.b, tri.a))));
             }
         }
@@ -140,9 +139,12 @@ degenerate_count degenerate_counts(long n, triangle_test test)
             double height = 3 * pow(10, -8 * uniform(&g)) * (uniform(&g) < 0.5 ? 1 : -1);
             vec3 p = place(&pl, 3 * symmetric(&g), 3 * symmetric(&g), height);
             ray r = {p, vec3_sub(x, p)};
-            long double t = 0;
-            long double inside = reference(&tri, r, &t);
-            if (inside > 0.01L && t > 1e-3L) {
+            crossing ref;
+            /* Clear: 1 % inside, and decided by the arithmetic: Cramer's rule
+             * in real without the check puts the point within 1/1024 of the
+             * longest edge of where the data put it. */
+            if (crossing_reference(&tri, r, &ref) && ref.least > 0.01L && ref.t > 1e-3L &&
+                triangle_cramer(&tri, r, 0, REAL_INFINITY, &h) && hit_error(&tri, r, h, &ref) <= 1.0L / 1024) {
                 c.clear_hits++;
                 c.lost_hits += !triangle_intersect(&tri, r, 0, REAL_INFINITY, test, &h);
             }

@@ -15,6 +15,7 @@
  *                       random rotated and translated data (degenerate_count.h).
  * A scene file's Triangle surfaces are shown as the chosen --show says.
  */
+#include <math.h>
 #include <time.h>
 
 #include "03_triangle/lab/crack_view.h"
@@ -49,10 +50,20 @@ static void count_degenerate(triangle_test test)
 {
     degenerate_count c = degenerate_counts(degenerate_cases, test);
     fprintf(stderr,
-            "%s: --triangle=%s (%s): %ld of %ld rays at degenerate triangles hit (worst %.3g edge lengths off); "
-            "%ld of %ld rays in the plane hit (worst %.3g); %ld of %ld clear hits lost\n",
-            LAB_NAME, test_names[test], REAL_NAME, c.degenerate_hits, c.degenerate_rays, c.degenerate_worst,
-            c.plane_hits, c.plane_rays, c.plane_worst, c.lost_hits, c.clear_hits);
+            "%s: --triangle=%s (%s): %ld of %ld rays at degenerate triangles hit, %ld false (worst %.3g edge lengths "
+            "off); %ld of %ld rays in the plane hit, %ld false (worst %.3g); %ld of %ld clear hits lost\n",
+            LAB_NAME, test_names[test], REAL_NAME, c.degenerate_hits, c.degenerate_rays, c.degenerate_false,
+            c.degenerate_worst, c.plane_hits, c.plane_rays, c.plane_false, c.plane_worst, c.lost_hits, c.clear_hits);
+    /* the same for triangles of size 1 at distances 0 to 10^6 from the origin */
+    for (int e = 0; e <= 6; e++) {
+        double distance = e == 0 ? 0 : pow(10, e);
+        c = degenerate_counts_at(degenerate_cases, test, distance);
+        fprintf(stderr,
+                "%s: --triangle=%s (%s): at distance %g: %ld false hits of %ld rays (worst %.2g edge lengths off the "
+                "triangle); %ld of %ld clear hits lost\n",
+                LAB_NAME, test_names[test], REAL_NAME, distance, c.degenerate_false + c.plane_false,
+                c.degenerate_rays + c.plane_rays, c.worst_off, c.lost_hits, c.clear_hits);
+    }
 }
 
 static int builtin(scene *desc) { return show == SHOW_CRACKS ? crack_scene(desc) : triangle_scene(desc); }
