@@ -53,14 +53,15 @@ static void test_near_edge(void **state)
     assert_vec3_close(flat.c, e1, 0);
 }
 
-/* degenerate_count with both tests: no hit at a degenerate triangle and
- * none by a ray in the plane (degenerate.h's promise: such a crossing is
- * not certain, so it is a miss), and every case counted.  Clear hits (1 %
- * inside by a long-double reference) are all found in double; in float the
- * check rightly rejects those whose origin lies within float's rounding of
- * the triangle's plane (grazing rays from heights down to 3e-8 sizes, with
- * the plane known to about epsilon times 1e4 sizes far from the origin):
- * the README measures 0.1 %, so at most 1 % here. */
+/* degenerate_count with both tests, every case counted.  A hit at a
+ * degenerate triangle or by a ray in the plane counts only when its point
+ * is on the triangle (the data, as stored, may well have that crossing):
+ * with Cramer's rule no false hit, with the watertight test (whose
+ * barycentrics the check's bound does not follow exactly) at most 10 per
+ * 10^6 rays in the lab's measurement, so at most 2 of these 40,000, and
+ * every hit within 1/8 of an edge of its triangle (degenerate.h's bound).
+ * Clear hits (1 % inside by a long-double reference) are all found in
+ * double; in float the lab measures 1 lost of 240,018, so at most 1 % here. */
 static void test_degenerate_counts(void **state)
 {
     (void)state;
@@ -70,8 +71,11 @@ static void test_degenerate_counts(void **state)
         degenerate_count c = degenerate_counts(n, tests[k]);
         assert_int_equal(n, c.degenerate_rays);
         assert_int_equal(n, c.plane_rays);
-        assert_int_equal(0, c.degenerate_hits);
-        assert_int_equal(0, c.plane_hits);
+        if (tests[k] == TRIANGLE_CRAMER)
+            assert_int_equal(0, c.degenerate_false + c.plane_false);
+        else
+            assert_true(c.degenerate_false + c.plane_false <= 2);
+        assert_true(c.worst_off <= 0.125);
         assert_true(c.clear_hits > n / 5);
         if (sizeof(real) == sizeof(double))
             assert_int_equal(0, c.lost_hits);
