@@ -5,6 +5,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "11_grid/grid.h"
+
 fast_grid_options fast_grid_default_options(void)
 {
     return (fast_grid_options){.density = FAST_GRID_DEFAULT_DENSITY,
@@ -157,36 +159,6 @@ static void bin_surface(fast_grid *g, const surface *s, uint32_t index, uint32_t
             }
 }
 
-/* snippet: resolution */
-/* Cells along each axis: about density x N cells in all, as cubic as the box
- * allows (n_a proportional to the box's extent e_a).  An axis of zero extent
- * (a flat scene) gets one cell and the others share the count. */
-static void resolution(const double extent[3], long surfaces, double density, long max_cells, int n[3])
-{
-    double volume = 1;
-    int spanned = 0;
-    for (int a = 0; a < 3; a++)
-        if (extent[a] > 0) {
-            volume *= extent[a];
-            spanned++;
-        }
-    double wanted = fmin(density * (double)surfaces, (double)max_cells);
-    /* s cells per unit length along every spanned axis: prod (e_a s) = wanted */
-    double s = spanned ? fmin(pow(fmax(wanted, 1) / volume, 1.0 / spanned), 1e300) : 0;
-    for (;;) {
-        double cells = 1;
-        for (int a = 0; a < 3; a++) {
-            double na = extent[a] > 0 ? fmin(fmax(round(extent[a] * s), 1), 1 << 20) : 1;
-            n[a] = (int)na;
-            cells *= na;
-        }
-        if (cells <= (double)max_cells)
-            return;
-        s *= 0.99 * pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1));
-    }
-}
-/* end snippet */
-
 /* snippet: empty_distances */
 /* empty[8 c + o]: for a ray in cell c heading into octant o (bit 0: x
  * decreasing, bit 1: y, bit 2: z), the side s of the largest cube of empty
@@ -284,7 +256,7 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
         g->margin = 1; /* every surface is a point at the origin */
     /* end snippet */
     double extent[3] = {(double)hi.x - (double)lo.x, (double)hi.y - (double)lo.y, (double)hi.z - (double)lo.z};
-    resolution(extent, binned, opt.density, opt.max_cells, g->n);
+    grid_resolution(extent, binned, opt.density, opt.max_cells, g->n); /* the lesson's */
     g->lo = widen(lo, -g->margin);
     g->hi = widen(hi, g->margin);
     vec3 size = vec3_sub(g->hi, g->lo);
