@@ -8,8 +8,9 @@
 -- A code span that is exactly the name of a file beside the text becomes a
 -- link to that file's listing.  A code block marked as a snippet
 -- (<!-- snippet: PATH#NAME -->, docs/CONTRIBUTING.md) gets a line above it
--- naming its file and lines, linked to the listing.  Every heading gets a
--- link to itself.
+-- naming its file and lines, linked to the listing.  A table of the page's
+-- contents (its headings of levels 2 and 3) follows the first heading, and
+-- every heading gets a link to itself.
 --
 -- The environment says what the filter works on: BOOK_SOURCE, the text (a
 -- path from the top of the repository), BOOK_PAGES, the list of pages
@@ -113,7 +114,7 @@ end
 
 -- A link inside a link is not allowed in HTML: the inner one keeps only its text.
 local function unlink(inlines)
-  return pandoc.walk_inline(pandoc.Span(inlines), {
+  return pandoc.Span(inlines):walk({
     Link = function(l) return l.content end,
   }).content
 end
@@ -129,6 +130,33 @@ function Code(el)
   if el.text:match("^[%w_.-]+$") and not pages[file] and exists(file) and not is_dir(file) then
     return pandoc.Link({ el }, book_target(el.text, "`" .. el.text .. "`"))
   end
+end
+
+-- The contents of the page: a list of its level-2 headings, each with its
+-- level-3 headings, after the page's first heading.
+function Pandoc(doc)
+  local toc, last = pandoc.List(), nil
+  for _, block in ipairs(doc.blocks) do
+    if block.t == "Header" and block.identifier ~= "" and (block.level == 2 or (block.level == 3 and last)) then
+      local item = pandoc.Plain({ pandoc.Link(block.content, "#" .. block.identifier) })
+      if block.level == 2 then
+        last = { item }
+        toc:insert(last)
+      else
+        if #last == 1 then last[2] = pandoc.BulletList({}) end
+        last[2].content:insert({ item })
+      end
+    end
+  end
+  if #toc == 0 then return doc end
+  local at = 1
+  for i, block in ipairs(doc.blocks) do
+    if block.t == "Header" and block.level == 1 then at = i + 1 break end
+  end
+  doc.blocks:insert(at, pandoc.RawBlock("html", '<details class="toc" open><summary>Contents</summary><nav>'))
+  doc.blocks:insert(at + 1, pandoc.BulletList(toc))
+  doc.blocks:insert(at + 2, pandoc.RawBlock("html", "</nav></details>"))
+  return doc
 end
 
 function Header(el)
@@ -187,6 +215,7 @@ function Blocks(blocks)
 end
 
 return {
-  { Image = Image, Link = Link, Code = Code, Header = Header },
-  { Blocks = Blocks },
+  { Image = Image, Link = Link, Code = Code },
+  { Pandoc = Pandoc },
+  { Header = Header, Blocks = Blocks },
 }

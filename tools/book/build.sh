@@ -25,7 +25,7 @@ pages="$tmp/.pages.tsv" needs="$tmp/.needs"
 page() {
     BOOK_SOURCE=$1 BOOK_PAGES=$pages BOOK_NEEDS=$needs \
         pandoc -f gfm+tex_math_dollars -t html5 --lua-filter "$here/book.lua" --template "$here/template.html" \
-        --katex=katex/ --toc --toc-depth=3 --highlight-style=tango \
+        --katex=katex/ --highlight-style=tango \
         -M pagetitle="$3" -V root= ${4:+-V prev="$4" -V prev-title="$5"} ${6:+-V next="$6" -V next-title="$7"} \
         -o "$tmp/$2.html" "$1"
 }
