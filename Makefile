@@ -393,6 +393,7 @@ test:
 	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-extremes
 	@tools/sum-results.sh $(BUILD) $(BUILD)-float $(BUILD)-asan
 	$(MAKE) --no-print-directory check
+	$(MAKE) --no-print-directory test-book
 
 # ---- bench: the speed/accuracy measurements of docs/measurements.md ----------------
 #
@@ -447,6 +448,8 @@ help:
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
 	@echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-grid-images"
 	@echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"
+	@echo "make book            the course as a static site in build/book/ (open index.html): pages, equations, listings"
+	@echo "make check-book      every page of the book in headless Chromium: errors, images, equations, links, phone width"
 	@echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
 	@echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"
 	@echo "make bench-grid      chapter 11's grid against the linear scan and Embree 3 (installs libembree-dev, glmark2-data)"
@@ -459,6 +462,8 @@ help:
 
 clean:
 	rm -rf build build-* out out-student*
+
+include tools/book/book.mk
 
 # The grid's benchmark against Embree (make bench-grid); a student's copy has no bench/.
 ifeq ($(HANDOUT),)

@@ -39,13 +39,12 @@ for i in "${!lines[@]}"; do
     page "$src" "$name" "$title" "${prev[0]:-}" "${prev[1]:-}" "${next[0]:-}" "${next[1]:-}"
 done
 
-# The listings and copies the pages need.
-sort -u "$needs" | while read -r kind path; do
-    case "$kind" in
-        copy) mkdir -p "$tmp/files/$(dirname "$path")" && cp "$path" "$tmp/files/$path" ;;
-        listing) "$here/listing.sh" "$path" "$pages" "$tmp/src/$path.html" ;;
-    esac
+# The copies and listings the pages need (the listings two at a time).
+sed -n 's/^copy //p' "$needs" | sort -u | while read -r path; do
+    mkdir -p "$tmp/files/$(dirname "$path")" && cp "$path" "$tmp/files/$path"
 done
+sed -n 's/^listing //p' "$needs" | sort -u |
+    xargs -P 2 -I '{}' "$here/listing.sh" '{}' "$pages" "$tmp/src/{}.html"
 
 mkdir -p "$tmp/katex"
 cp "$katex/katex.min.js" "$katex/katex.min.css" "$tmp/katex/"
