@@ -289,6 +289,8 @@ grade-run: $(BUILD)/tools/grade
 # libraries, reference/double/ and reference/float/ (tools/handout.sh).
 # `make autograder` zips such a copy with Gradescope's scripts
 # (tools/autograder.sh).  Neither holds a line of solution source; both check it.
+# The handout also ships the book (book/, tools/book/), built in the copy from
+# its own files: the exercises appear in it as the skeletons.
 
 DEST ?=
 REFERENCE_CHAPTERS = $(foreach c,$(CHAPTERS),$(if $(EXERCISES_$c),$c))
@@ -303,6 +305,8 @@ handout-libs:
 handout: handout-libs
 	@$(if $(DEST),,echo "make handout: say where, DEST=dir" >&2; exit 2)
 	@tools/handout.sh "$(DEST)" build-handout/reference build-handout-float/reference
+	@tools/deps.sh "$(CC)" book && (cd "$(DEST)" && tools/book/build.sh book) || \
+	    { rm -rf "$(DEST)"; echo "handout: the book of the copy could not be built; $(DEST) removed" >&2; exit 1; }
 
 # A Gradescope autograder: a student's copy, setup.sh and run_autograder in one zip.
 AUTOGRADER ?= $(GRADE_BUILD)/autograder$(if $(CHAPTER),-$(CHAPTER)).zip
