@@ -13,12 +13,17 @@
 BOOK ?= build/book
 BOOK_CHECK ?= build/book-check
 
+# The book is rebuilt when any file it may show or link has changed.
+BOOK_INPUTS := $(shell find README.md chapters docs common tests tools -type f 2>/dev/null)
+
 .PHONY: book check-book test-book
-book:
+book: $(BOOK)/index.html
+
+$(BOOK)/index.html: $(BOOK_INPUTS)
 	@tools/deps.sh "$(CC)" book
 	@tools/book/build.sh $(BOOK)
 
-check-book: book
+check-book: $(BOOK)/index.html
 	@tools/deps.sh "$(CC)" book-check
 	@node tools/book/check.mjs $(BOOK) $(BOOK_CHECK)
 
