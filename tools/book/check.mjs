@@ -45,14 +45,15 @@ const INSPECT = `(async () => {
     return {
         images: [...document.images].map((i) => ({ src: i.currentSrc || i.src, width: i.naturalWidth, complete: i.complete })),
         equations: maths.length,
-        unrendered: maths.filter((m) => !m.querySelector('.katex')).map((m) => m.textContent.slice(0, 80)),
+        unrendered: maths.filter((m) => !m.querySelector('.katex, .katex-error')).map((m) => m.textContent.slice(0, 80)),
         errors: [...document.querySelectorAll('.katex-error')].map((e) => e.title || e.textContent.slice(0, 80)),
         raw,
         links: [...document.querySelectorAll('a[href]')].map((a) => a.href),
         ids: [...document.querySelectorAll('[id]')].map((e) => e.id),
     };
 })()`;
-const WIDTH = `({ scroll: document.documentElement.scrollWidth, window: window.innerWidth })`;
+// The page's width; a phone's browser would widen its window to it and zoom out.
+const WIDTH = `document.documentElement.scrollWidth`;
 
 const started = Date.now();
 const problems = [];
@@ -104,8 +105,8 @@ try {
         }
         await viewport(PHONE);
         await page.evaluate('window.scrollTo(0, 0)');
-        const w = await page.evaluate(WIDTH);
-        if (w.scroll > w.window) complain(`${w.scroll} pixels wide in a window of ${w.window}`);
+        const width = await page.evaluate(WIDTH);
+        if (width > PHONE.width) complain(`${width} pixels wide in a window of ${PHONE.width}`);
         if (shot) await shoot(`${shot}-phone.png`);
         if (shot && shot !== 'index') {
             await page.evaluate(`document.querySelector('.katex-display')?.scrollIntoView({ block: 'center' })`);
