@@ -118,12 +118,13 @@ try {
 }
 
 // The links: a file of the book that exists, and an anchor its page has.
-let internal = 0, anchors = 0, outside = 0;
+let internal = 0, anchors = 0, within = 0, outside = 0;
 for (const [from, href] of links) {
     const url = new URL(href);
     if (url.protocol !== 'file:') { outside++; continue; }
     internal++;
     const target = fileURLToPath(url);
+    if (target === join(root, from)) within++;
     if (!target.startsWith(root + '/') || !existsSync(target)) {
         problems.push(`${from}: the link ${href} leads nowhere`);
         continue;
@@ -137,7 +138,8 @@ for (const [from, href] of links) {
 
 const seconds = ((Date.now() - started) / 1000).toFixed(1);
 for (const p of problems) console.error(`check-book: ${p}`);
-console.log(`check-book: ${files.length} pages, ${equations} equations, ${images} images, ${internal} links (${anchors} to an anchor; ` +
+console.log(`check-book: ${files.length} pages, ${equations} equations, ${images} images, ${internal} links (${internal - within} to ` +
+    `another page or file, ${within} within the page; ${anchors} to an anchor; ` +
     `${outside} out of the book, not followed) at ${DESKTOP.width} and ${PHONE.width} pixels wide in ${seconds} s: ` +
     `${problems.length ? `${problems.length} problems` : 'no problem'}; screenshots in ${shots}`);
 process.exit(problems.length ? 1 : 0);
