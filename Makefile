@@ -333,6 +333,8 @@ grade-run: $(BUILD)/tools/grade
 # libraries, reference/double/ and reference/float/ (tools/handout.sh).
 # `make autograder` zips such a copy with Gradescope's scripts
 # (tools/autograder.sh).  Neither holds a line of solution source; both check it.
+# The handout also ships the book (book/, tools/book/), built in the copy from
+# its own files: the exercises appear in it as the skeletons.
 
 DEST ?=
 REFERENCE_CHAPTERS = $(foreach c,$(CHAPTERS),$(if $(EXERCISES_$c),$c))
@@ -347,6 +349,8 @@ handout-libs:
 handout: handout-libs
 	@$(if $(DEST),,echo "make handout: say where, DEST=dir" >&2; exit 2)
 	@tools/handout.sh "$(DEST)" build-handout/reference build-handout-float/reference
+	@tools/deps.sh "$(CC)" book && (cd "$(DEST)" && tools/book/build.sh book) || \
+	    { rm -rf "$(DEST)"; echo "handout: the book of the copy could not be built; $(DEST) removed" >&2; exit 1; }
 
 # A Gradescope autograder: a student's copy, setup.sh and run_autograder in one zip.
 AUTOGRADER ?= $(GRADE_BUILD)/autograder$(if $(CHAPTER),-$(CHAPTER)).zip
@@ -461,6 +465,7 @@ test:
 	@tools/sum-results.sh $(BUILD) $(BUILD)-float $(BUILD)-asan
 	$(Q)$(MAKE) --no-print-directory test-make
 	$(Q)$(MAKE) --no-print-directory check
+	$(Q)$(MAKE) --no-print-directory test-book
 
 # ---- bench: the speed/accuracy measurements of docs/measurements.md ----------------
 #
@@ -530,6 +535,8 @@ help:
 	$(REPO_ONLY)echo "make bench-grid      chapter 11's grid against the linear scan and Embree 3 (installs libembree-dev, glmark2-data)"
 	$(REPO_ONLY)echo "make fuzz            build the libFuzzer targets (clang) and fuzz each for FUZZ_SECONDS (60) seconds;"
 	$(REPO_ONLY)echo "                     findings go to $(FUZZ_BUILD)/ (docs/fuzzing.md)"
+	@echo "make book            the course as a static site in build/book/ (open index.html): pages, equations, listings"
+	@echo "make check-book      every page of the book in headless Chromium: errors, images, equations, links, phone width"
 	@echo "make clean           remove build*/ and out*/"
 	@echo "variables: REAL=float  STUDENT=1 (build the skeletons in chapters/)  SANITIZE=1  CC=clang  BUILD=dir"
 	@echo "           V=1 (every command and each suite's whole output; by default one line each, logs in BUILD/logs/)"
@@ -538,6 +545,8 @@ help:
 
 clean:
 	rm -rf build build-* out out-*
+
+include tools/book/book.mk
 
 # The grid's benchmark against Embree (make bench-grid); a student's copy has no bench/.
 ifeq ($(HANDOUT),)

@@ -7,7 +7,9 @@
 # figures (make figures and make check: gnuplot-nox for the plotted figures),
 # bench (make bench: gnuplot-nox for the plots, povray for the comparison
 # with POV-Ray) and bench-grid (make bench-grid: libembree-dev, Intel Embree
-# 3, to compare the grid with, and glmark2-data, the Stanford bunny as OBJ).
+# 3, to compare the grid with, and glmark2-data, the Stanford bunny as OBJ),
+# book (make book: pandoc and KaTeX, libjs-katex) and book-check (make
+# check-book: Debian's chromium, driven by nodejs).
 #
 # Each need is probed by compiling a one-line program with CC.  What is
 # missing is installed with apt-get (as root) or sudo apt-get (when sudo works
@@ -30,7 +32,15 @@ for group in "$@"; do
             dpkg -s libembree-dev >/dev/null 2>&1 || missing="$missing libembree-dev"
             dpkg -s glmark2-data >/dev/null 2>&1 || missing="$missing glmark2-data"
             ;;
-        *) echo "deps.sh: unknown group '$group' (known: fuzz, figures, bench, bench-grid)" >&2; exit 2 ;;
+        book)
+            command -v pandoc >/dev/null 2>&1 || missing="$missing pandoc"
+            [ -f /usr/share/javascript/katex/katex.min.js ] || missing="$missing libjs-katex"
+            ;;
+        book-check)
+            command -v chromium >/dev/null 2>&1 || missing="$missing chromium"
+            command -v node >/dev/null 2>&1 || missing="$missing nodejs"
+            ;;
+        *) echo "deps.sh: unknown group '$group' (known: fuzz, figures, bench, bench-grid, book, book-check)" >&2; exit 2 ;;
     esac
 done
 

@@ -58,7 +58,8 @@ student_text=$(cat <<'TEXT'
 
 This is a student's copy: the exercise files in `chapters/NN_name/` are skeletons for you to complete, and
 the reference versions of them come compiled, in `reference/`.  Start with
-[chapters/01_camera_rays/README.md](chapters/01_camera_rays/README.md).  From this folder:
+[chapters/01_camera_rays/README.md](chapters/01_camera_rays/README.md), or open `book/index.html` in a
+browser: the same texts as a book, with the equations typeset and the code as you have it.  From this folder:
 
 ```sh
 make                  # builds your renderers into build-student/, each built-in scene into out-student/
