@@ -432,7 +432,7 @@ check-grid-images: $(BUILD)/10_interpolation/render $(BUILD)/11_grid/render $(BU
 # Text, skeletons and figures agree with their sources; the grid changes no
 # pixel (in the repository; a student's copy has no solutions/ to compare
 # them with).
-check: $(if $(HANDOUT),,check-skeletons check-snippets check-outputs check-figures check-links check-grid-images)
+check: $(if $(HANDOUT),,check-skeletons check-snippets check-outputs check-lessons check-figures check-links check-grid-images)
 	@$(if $(HANDOUT),echo "make check: nothing to check in a student's copy (it compares texts, skeletons and figures with solutions/)")
 
 # ---- tests ----------------------------------------------------------------------
@@ -528,7 +528,7 @@ help:
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	$(REPO_ONLY)echo "make globe-texture   write chapter 10's scenes/globe.png from globe_texture (sphere_mesh.c)"
 	$(REPO_ONLY)echo "make snippets        fill the code blocks of the READMEs from the source"
-	$(REPO_ONLY)echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-grid-images"
+	$(REPO_ONLY)echo "make check           check-skeletons, -snippets, -outputs, -lessons (docs/design.md), -figures, -links, -grid-images"
 	$(REPO_ONLY)echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"
 	$(REPO_ONLY)echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
 	$(REPO_ONLY)echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"
