@@ -150,8 +150,10 @@ static void add_test(explainer *e, bool hit, real t, const char *format, ...)
         return;
     const int order = ++e->nodes[owner].tests;
     if (!hit && e->nodes[owner].misses++ >= EXPLAIN_MISSES_SHOWN) {
-        if (e->nodes[owner].hidden++ == 0) /* the line that counts them, where they begin */
-            e->nodes[owner].tally = add(e, NODE_LINE, "more misses");
+        if (e->nodes[owner].hidden++ == 0) { /* the line that counts them, where they begin */
+            int tally = add(e, NODE_LINE, "more misses"); /* (may move the nodes) */
+            e->nodes[owner].tally = tally;
+        }
         e->surface = -1;
         return;
     }
