@@ -107,6 +107,7 @@ LAB_TESTS := $(foreach c,$(LAB_CHAPTERS),$(if $(wildcard tests/lab_$c.c),lab_$c)
 ALL_TESTS += $(LAB_TESTS)
 
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render) $(foreach c,$(LAB_CHAPTERS),$(BUILD)/$c/lab)
+include tests/explain.mk
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
 # The built-in scenes' images: one folder per build variant, as build/ is:
 # out/, out-float/, out-clang/, out-student/, out-student-ref01/, ...

@@ -10,7 +10,7 @@
 #define MAX_KNOBS 24
 #define MAX_IMAGE_SIDE 16384
 
-enum { OPT_SEED = 256, OPT_NONFINITE, OPT_KNOB = 512 };
+enum { OPT_SEED = 256, OPT_NONFINITE, OPT_EXPLAIN, OPT_EXPLAIN_JSON, OPT_EXPLAIN_PICTURE, OPT_KNOB = 512 };
 
 static const char *const nonfinite_modes[] = {[NONFINITE_DROP] = "drop", [NONFINITE_SHOW] = "show",
                                               [NONFINITE_FAIL] = "fail", NULL};
@@ -49,6 +49,21 @@ static bool parse_size(const char *s, int *width, int *height)
         return false;
     *width = (int)w;
     *height = (int)h;
+    return true;
+}
+
+/* "X,Y": two non-negative integers below MAX_IMAGE_SIDE. */
+static bool parse_pixel(const char *s, int *x, int *y)
+{
+    char *end;
+    errno = 0;
+    long a = strtol(s, &end, 10);
+    long b;
+    if (errno || end == s || *end != ',' || a < 0 || a >= MAX_IMAGE_SIDE ||
+        !parse_long(end + 1, 0, MAX_IMAGE_SIDE - 1, &b))
+        return false;
+    *x = (int)a;
+    *y = (int)b;
     return true;
 }
 
@@ -134,6 +149,11 @@ static void print_help(const char *program, const char *summary, const char *def
             "      --nonfinite=M   a sample whose radiance is NaN or infinite is counted and: drop (left out\n"
             "                      of its pixel; the default), show (its pixel painted magenta), or fail\n"
             "                      (no image written, exit status 3)\n"
+            "      --explain X,Y   also print the rays behind pixel (X, Y), column and row from the image's\n"
+            "                      top-left corner, with every number the lecture's equations took\n"
+            "      --explain-json FILE     the same tree as JSON\n"
+            "      --explain-picture FILE  a PNG of the image and of the pixel's rays seen from above and\n"
+            "                              from the side\n"
             "  -h, --help          this text\n",
             summary, program, default_output);
     for (int k = 0; k < n_knobs; k++) {
@@ -153,13 +173,15 @@ options_result options_parse(int argc, char **argv, const char *summary, const c
         fprintf(err, "%s: too many knobs (%d > %d)\n", argv[0], n_knobs, MAX_KNOBS);
         return OPTIONS_ERROR;
     }
-    struct option longs[9 + MAX_KNOBS + 1] = {
+    struct option longs[11 + MAX_KNOBS + 1] = {
         {"output", required_argument, NULL, 'o'}, {"size", required_argument, NULL, 's'},
         {"samples", required_argument, NULL, 'n'}, {"threads", required_argument, NULL, 'j'},
         {"seed", required_argument, NULL, OPT_SEED}, {"quiet", no_argument, NULL, 'q'},
         {"help", no_argument, NULL, 'h'}, {"nonfinite", required_argument, NULL, OPT_NONFINITE},
+        {"explain", required_argument, NULL, OPT_EXPLAIN}, {"explain-json", required_argument, NULL, OPT_EXPLAIN_JSON},
+        {"explain-picture", required_argument, NULL, OPT_EXPLAIN_PICTURE},
     };
-    int n_longs = 8;
+    int n_longs = 11;
     for (int k = 0; k < n_knobs; k++)
         longs[n_longs++] = (struct option){knobs[k].name, required_argument, NULL, OPT_KNOB + k};
     longs[n_longs] = (struct option){0};
@@ -220,6 +242,19 @@ options_result options_parse(int argc, char **argv, const char *summary, const c
             opt->nonfinite = (nonfinite_mode)chosen;
             break;
         }
+        case OPT_EXPLAIN:
+            if (!parse_pixel(optarg, &opt->explain_x, &opt->explain_y)) {
+                option_error(err, argv[0], "--explain: '%s' is not X,Y (a pixel's column and row, from 0)", optarg);
+                return OPTIONS_ERROR;
+            }
+            opt->explain = true;
+            break;
+        case OPT_EXPLAIN_JSON:
+            opt->explain_json = optarg;
+            break;
+        case OPT_EXPLAIN_PICTURE:
+            opt->explain_picture = optarg;
+            break;
         case 'h':
             print_help(argv[0], summary, default_output, knobs, n_knobs, out);
             return OPTIONS_EXIT;
@@ -236,6 +271,11 @@ options_result options_parse(int argc, char **argv, const char *summary, const c
             }
             break;
         }
+    }
+    if ((opt->explain_json || opt->explain_picture) && !opt->explain) {
+        option_error(err, argv[0], "%s needs --explain X,Y (which pixel)",
+                     opt->explain_json ? "--explain-json" : "--explain-picture");
+        return OPTIONS_ERROR;
     }
     if (optind < argc)
         opt->scene_path = argv[optind++];

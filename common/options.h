@@ -31,6 +31,10 @@ typedef struct {
     unsigned long seed;      /* --seed; jitters the sub-pixel samples */
     bool quiet;              /* -q; no progress line, no summary */
     nonfinite_mode nonfinite; /* --nonfinite=drop|show|fail */
+    bool explain;            /* --explain X,Y: print the rays behind pixel (X, Y) (explain.h) */
+    int explain_x, explain_y; /* column from the left, row from the top, as in the PNG */
+    const char *explain_json;    /* --explain-json FILE: the same tree as JSON */
+    const char *explain_picture; /* --explain-picture FILE: the rays drawn over the scene */
 } render_options;
 
 typedef enum {

@@ -11,6 +11,7 @@
 #include <stb_image_write.h>
 
 #include "display.h"
+#include "output_file.h"
 
 typedef struct {
     FILE *file;
@@ -60,6 +61,16 @@ int png_check_output(const char *path, char *err, size_t err_size)
     return -1;
 }
 
+int png_write_rgb(const uint8_t *bytes, int width, int height, const char *path, char *err, size_t err_size)
+{
+    output_file f;
+    if (output_open(&f, path, err, err_size) != 0)
+        return -1;
+    png_sink sink = {f.file, 0};
+    int encoded = stbi_write_png_to_func(sink_write, &sink, width, height, 3, bytes, width * 3);
+    return output_close(&f, !encoded || sink.failed, "the PNG", err, err_size);
+}
+
 int png_write(const image *img, real exposure, const char *path, char *err, size_t err_size)
 {
     if (png_check_output(path, err, err_size) != 0)
@@ -69,47 +80,7 @@ int png_write(const image *img, real exposure, const char *path, char *err, size
         snprintf(err, err_size, "%s: out of memory", path);
         return -1;
     }
-    size_t tmp_size = strlen(path) + sizeof ".tmp-XXXXXX";
-    char *tmp = malloc(tmp_size);
-    if (!tmp) {
-        free(bytes);
-        snprintf(err, err_size, "%s: out of memory", path);
-        return -1;
-    }
-    snprintf(tmp, tmp_size, "%s.tmp-XXXXXX", path);
-
-    int status = -1;
-    int fd = mkstemp(tmp);
-    if (fd < 0) {
-        snprintf(err, err_size, "%s: cannot create a file there: %s", path, strerror(errno));
-        goto done;
-    }
-    png_sink sink = {fdopen(fd, "wb"), 0};
-    if (!sink.file) {
-        snprintf(err, err_size, "%s: %s", path, strerror(errno));
-        close(fd);
-        unlink(tmp);
-        goto done;
-    }
-    errno = 0;
-    int encoded = stbi_write_png_to_func(sink_write, &sink, img->width, img->height, 3, bytes, img->width * 3);
-    int flushed = fflush(sink.file) == 0 && fsync(fileno(sink.file)) == 0;
-    int closed = fclose(sink.file) == 0;
-    if (!encoded || sink.failed || !flushed || !closed) {
-        snprintf(err, err_size, "%s: writing the PNG failed: %s", path, errno ? strerror(errno) : "encoder error");
-        unlink(tmp);
-        goto done;
-    }
-    /* mkstemp creates the file 0600; a picture is for everyone to read. */
-    chmod(tmp, 0644);
-    if (rename(tmp, path) != 0) {
-        snprintf(err, err_size, "%s: %s", path, strerror(errno));
-        unlink(tmp);
-        goto done;
-    }
-    status = 0;
-done:
-    free(tmp);
+    int status = png_write_rgb(bytes, img->width, img->height, path, err, err_size);
     free(bytes);
     return status;
 }

@@ -10,6 +10,7 @@
 #define RT_PNG_WRITE_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "image.h"
 
@@ -22,5 +23,9 @@ int png_check_output(const char *path, char *err, size_t err_size);
  * Returns 0, or -1 with a message naming the path and the problem in err
  * (png_check_output's refusal included). */
 int png_write(const image *img, real exposure, const char *path, char *err, size_t err_size);
+
+/* Writes RGB bytes (3 a pixel, top row first) as the PNG `path`, as
+ * png_write does.  Returns 0, or -1 with the problem in err. */
+int png_write_rgb(const uint8_t *bytes, int width, int height, const char *path, char *err, size_t err_size);
 
 #endif

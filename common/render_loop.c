@@ -5,6 +5,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#include "explain.h"
+
 static double now(void)
 {
     struct timespec ts;
@@ -61,6 +63,38 @@ static int side_of(int samples)
     return n;
 }
 
+color render_pixel(sample_fn sample, const void *scene, const render_options *opt, pixel_map_fn map, int i, int j,
+                   int nx, int ny, uint64_t *rays, uint64_t *nonfinite)
+{
+    const int n = side_of(opt->samples > 0 ? opt->samples : 1);
+    const real weight = (real)1 / (real)(n * n);
+    color sum = {0, 0, 0}, scaled = {0, 0, 0};
+    int finite = 0;
+    for (int a = 0; a < n; a++) {
+        for (int b = 0; b < n; b++) {
+            real du, dv;
+            render_sample_offset(opt->seed, i, j, a, b, n, &du, &dv);
+            real u, v;
+            if (map) {
+                map(i, j, nx, ny, du, dv, &u, &v);
+            } else {
+                u = ((real)i + du) / (real)nx;
+                v = ((real)j + dv) / (real)ny;
+            }
+            EXPLAIN(explain_sample(a * n + b, n * n, du, dv, u, v));
+            color L = sample(scene, u, v, rays);
+            EXPLAIN(explain_sample_done(L));
+            if (is_finite(L)) {
+                sum = color_add(sum, L);
+                scaled = color_add(scaled, color_scale(L, weight));
+                finite++;
+            }
+        }
+    }
+    *nonfinite += (uint64_t)(n * n - finite);
+    return pixel_value(sum, scaled, finite, n * n, weight, opt->nonfinite);
+}
+
 render_stats render_image(image *img, sample_fn sample, const void *scene, const render_options *opt)
 {
     return render_image_mapped(img, sample, scene, opt, NULL);
@@ -70,8 +104,6 @@ render_stats render_image_mapped(image *img, sample_fn sample, const void *scene
                                  pixel_map_fn map)
 {
     const int nx = img->width, ny = img->height;
-    const int n = side_of(opt->samples > 0 ? opt->samples : 1);
-    const real weight = (real)1 / (real)(n * n);
     const int threads = opt->threads > 0 ? opt->threads : omp_get_max_threads();
     const int show_progress = !opt->quiet && isatty(STDERR_FILENO);
     const double start = now();
@@ -83,31 +115,8 @@ render_stats render_image_mapped(image *img, sample_fn sample, const void *scene
     for (int j = 0; j < ny; j++) {
         uint64_t row_rays[RAY_KINDS] = {0};
         uint64_t row_nonfinite = 0;
-        for (int i = 0; i < nx; i++) {
-            color sum = {0, 0, 0}, scaled = {0, 0, 0};
-            int finite = 0;
-            for (int a = 0; a < n; a++) {
-                for (int b = 0; b < n; b++) {
-                    real du, dv;
-                    render_sample_offset(opt->seed, i, j, a, b, n, &du, &dv);
-                    real u, v;
-                    if (map) {
-                        map(i, j, nx, ny, du, dv, &u, &v);
-                    } else {
-                        u = ((real)i + du) / (real)nx;
-                        v = ((real)j + dv) / (real)ny;
-                    }
-                    color L = sample(scene, u, v, row_rays);
-                    if (is_finite(L)) {
-                        sum = color_add(sum, L);
-                        scaled = color_add(scaled, color_scale(L, weight));
-                        finite++;
-                    }
-                }
-            }
-            row_nonfinite += (uint64_t)(n * n - finite);
-            *image_at(img, i, j) = pixel_value(sum, scaled, finite, n * n, weight, opt->nonfinite);
-        }
+        for (int i = 0; i < nx; i++)
+            *image_at(img, i, j) = render_pixel(sample, scene, opt, map, i, j, nx, ny, row_rays, &row_nonfinite);
         for (int k = 0; k < RAY_KINDS; k++) {
 #pragma omp atomic
             stats.by_kind[k] += row_rays[k];

@@ -44,6 +44,13 @@ typedef struct {
  * centre, for one sample).  Chapter 01 implements it (pixel_to_image). */
 typedef void (*pixel_map_fn)(int i, int j, int nx, int ny, real du, real dv, real *u, real *v);
 
+/* Pixel (i, j) of an nx x ny image, as render_image_mapped computes it: the
+ * mean of its samples (opt->samples, opt->seed, opt->nonfinite), each mapped
+ * by `map`; adds the rays cast to rays[] and the non-finite samples to
+ * *nonfinite.  --explain (explain.h) calls it for the pixel it explains. */
+color render_pixel(sample_fn sample, const void *scene, const render_options *opt, pixel_map_fn map, int i, int j,
+                   int nx, int ny, uint64_t *rays, uint64_t *nonfinite);
+
 /* render_image with the mapping `map`; NULL maps as pixel_to_image does,
  * for the suites of common/, which link no chapter. */
 render_stats render_image_mapped(image *img, sample_fn sample, const void *scene, const render_options *opt,

@@ -4,6 +4,7 @@
 #include <stdlib.h>
 
 #include "exercise.h"
+#include "explain.h"
 #include "png_write.h"
 #include "scene_cost.h"
 
@@ -42,6 +43,13 @@ int renderer_main(const renderer *r, int argc, char **argv)
     if (!opt.samples)
         opt.samples = desc.samples ? desc.samples : 1;
 
+    if (opt.explain && (opt.explain_x >= width || opt.explain_y >= height)) {
+        fprintf(stderr, "%s: --explain %d,%d: no such pixel in a %dx%d image (X from 0 to %d, Y from 0 to %d)\n",
+                r->name, opt.explain_x, opt.explain_y, width, height, width - 1, height - 1);
+        scene_free(&desc);
+        return 2;
+    }
+
     void *prepared = r->prepare(&desc, err, sizeof err);
     if (!prepared) {
         fprintf(stderr, "%s: %s\n", r->name, err);
@@ -65,7 +73,9 @@ int renderer_main(const renderer *r, int argc, char **argv)
     const char *output = options_output(&opt, fallback);
     int status = 1;
     image img = {0};
-    if (png_check_output(output, err, sizeof err) != 0) { /* before rendering, not after */
+    if (png_check_output(output, err, sizeof err) != 0 || /* before rendering, not after */
+        (opt.explain_json && png_check_output(opt.explain_json, err, sizeof err) != 0) ||
+        (opt.explain_picture && png_check_output(opt.explain_picture, err, sizeof err) != 0)) {
         fprintf(stderr, "%s: %s\n", r->name, err);
     } else if (image_init(&img, width, height) != 0) {
         fprintf(stderr, "%s: out of memory for a %dx%d image\n", r->name, width, height);
@@ -85,6 +95,11 @@ int renderer_main(const renderer *r, int argc, char **argv)
             if (r->report && !opt.quiet)
                 r->report(prepared, stats, stderr);
             status = 0;
+            if (opt.explain && explain_pixel(r->sample, prepared, &opt, r->pixel_to_image, &img, &desc, stdout, err,
+                                             sizeof err) != 0) {
+                fprintf(stderr, "%s: %s\n", r->name, err);
+                status = 1;
+            }
         }
         image_free(&img);
     }

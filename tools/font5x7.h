@@ -6,6 +6,9 @@
 #ifndef RT_TOOLS_FONT5X7_H
 #define RT_TOOLS_FONT5X7_H
 
+#include <stddef.h>
+#include <string.h>
+
 typedef struct {
     char c;
     const char *rows[7];
@@ -100,5 +103,21 @@ static const glyph font5x7[] = {
     {'z', {".....", ".....", "#####", "...#.", "..#..", ".#...", "#####"}},
     {'|', {"..#..", "..#..", "..#..", "..#..", "..#..", "..#..", "..#.."}},
 };
+
+/* Whether character c has ink at (row, col) of its cell, 9 rows by 5
+ * columns: its glyph's 7 rows, 2 rows lower for g, p, q and y (their tails
+ * go below the line); an unknown character is a box. */
+static inline int font5x7_ink(char c, int row, int col)
+{
+    const glyph *g = NULL;
+    for (size_t k = 0; k < sizeof font5x7 / sizeof font5x7[0] && !g; k++)
+        if (font5x7[k].c == c)
+            g = &font5x7[k];
+    if (c && strchr("gpqy", c))
+        row -= 2;
+    if (row < 0 || row > 6 || col < 0 || col > 4)
+        return 0;
+    return g ? g->rows[row][col] == '#' : row == 0 || row == 6 || col == 0 || col == 4;
+}
 
 #endif

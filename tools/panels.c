@@ -28,14 +28,6 @@ typedef struct {
     const char *label, *path;
 } panel;
 
-static const glyph *find_glyph(char c)
-{
-    for (size_t k = 0; k < sizeof font5x7 / sizeof font5x7[0]; k++)
-        if (font5x7[k].c == c)
-            return &font5x7[k];
-    return NULL;
-}
-
 /* A glyph is 5 columns and 1 of space: 6 columns a character. */
 static int text_width(const char *s, int scale) { return ((int)strlen(s) * 6 - 1) * scale; }
 
@@ -47,20 +39,15 @@ static void put(unsigned char *img, int width, int x, int y, unsigned char value
 
 static void draw_text(unsigned char *img, int width, int x0, int y0, const char *s, int scale)
 {
-    for (int k = 0; s[k]; k++) {
-        const glyph *g = find_glyph(s[k]);
-        const int drop = strchr("gpqy", s[k]) ? 2 : 0; /* their tails go below the line */
-        for (int row = 0; row < 7; row++)
+    for (int k = 0; s[k]; k++)
+        for (int row = 0; row < 9; row++)
             for (int col = 0; col < 5; col++) {
-                /* an unknown character is a box */
-                int ink = g ? g->rows[row][col] == '#' : row == 0 || row == 6 || col == 0 || col == 4;
-                if (!ink)
+                if (!font5x7_ink(s[k], row, col))
                     continue;
                 for (int a = 0; a < scale; a++)
                     for (int b = 0; b < scale; b++)
-                        put(img, width, x0 + (6 * k + col) * scale + b, y0 + (row + drop) * scale + a, 0);
+                        put(img, width, x0 + (6 * k + col) * scale + b, y0 + row * scale + a, 0);
             }
-    }
 }
 
 int main(int argc, char **argv)

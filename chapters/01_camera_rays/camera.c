@@ -4,6 +4,8 @@
 
 #include <stdio.h>
 
+#include "explain.h"
+
 /* Scales a by its largest component before normalizing, so that vectors with
  * huge or tiny components neither overflow nor underflow in the dot product. */
 static vec3 unit(vec3 a) { return vec3_normalize(vec3_scale(a, 1 / vec3_max_abs(a))); }
@@ -66,6 +68,7 @@ ray camera_ray(const camera *cam, real u, real v)
     (void)u;
     (void)v;
     ray r = {cam->e, vec3_make(0, 0, 0)};
+    EXPLAIN(explain_eye_ray(r));
     return r;
 }
 /* end snippet */

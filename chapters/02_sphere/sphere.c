@@ -9,6 +9,8 @@
 #include "02_sphere/sphere.h"
 #include "exercise.h"
 
+#include "explain.h"
+
 /* The lecture's algebraic solution, for any d (not only a unit d):
  *     t = (-d.f -+ sqrt((d.f)^2 - (d.d)(f.f - R^2))) / (d.d)          (2)
  * Returns false when the discriminant is negative (the ray misses). */
@@ -113,8 +115,11 @@ bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
 /* snippet: intersect */
 bool sphere_intersect(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula, real *t, vec3 *n)
 {
-    real t0, t1, hit;
-    if (!sphere_roots(s, r, formula, &t0, &t1) || !sphere_nearest_root(t0, t1, t_min, t_max, &hit))
+    real t0 = 0, t1 = 0, hit = 0;
+    bool roots = sphere_roots(s, r, formula, &t0, &t1);
+    bool found = roots && sphere_nearest_root(t0, t1, t_min, t_max, &hit);
+    EXPLAIN(explain_sphere(s->center, s->radius, roots, t0, t1, t_min, t_max, found, hit));
+    if (!found)
         return false;
     *t = hit;
     *n = sphere_normal(s, ray_at(r, hit));

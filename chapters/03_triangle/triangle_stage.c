@@ -5,6 +5,8 @@
 
 #include "01_camera_rays/pixel.h"
 #include "03_triangle/scenes/icosahedron.h"
+#include "03_triangle/triangle_explain.h"
+#include "explain.h"
 #include "scene_build.h"
 
 static const char *const triangle_choices[] = {"cramer", "watertight", NULL}; /* in the order of the enum */
@@ -23,11 +25,15 @@ int triangle_stage_closest(const triangle_stage *s, ray r, triangle_test t, tria
 {
     int found = -1;
     real t_max = REAL_INFINITY;
-    for (int k = 0; k < s->n; k++)
-        if (triangle_intersect(&s->tris[k], r, 0, t_max, t, best)) {
+    for (int k = 0; k < s->n; k++) {
+        EXPLAIN(explain_surface(k, k, 0));
+        bool hit = triangle_intersect(&s->tris[k], r, 0, t_max, t, best);
+        EXPLAIN(triangle_explain(&s->tris[k], r, 0, t_max, t, hit, best));
+        if (hit) {
             t_max = best->t;
             found = k;
         }
+    }
     return found;
 }
 
@@ -45,8 +51,10 @@ color triangle_stage_sample(const void *prepared, real u, real v, uint64_t *rays
     ray r = camera_ray(&s->cam, u, v);
     ++*rays;
     triangle_hit h;
-    if (triangle_stage_closest(s, r, s->test, &h) < 0)
+    int k = triangle_stage_closest(s, r, s->test, &h);
+    if (k < 0)
         return s->back;
+    EXPLAIN(explain_closest(k, k, h.t, ray_at(r, h.t)));
     return barycentric_color(h);
 }
 

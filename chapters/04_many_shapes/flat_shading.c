@@ -2,6 +2,7 @@
 #include "04_many_shapes/flat_shading.h"
 
 #include "04_many_shapes/closest_hit.h"
+#include "explain.h"
 
 /* snippet: flat_color */
 color flat_color(const scene *desc, const hit_record *hit)
@@ -19,8 +20,10 @@ color flat_color(const scene *desc, const hit_record *hit)
 color trace_flat(const surface_list *list, const scene *desc, ray r, real t_min, real t_max)
 {
     hit_record hit;
-    if (surfaces_intersect(list, r, t_min, t_max, &hit))
+    if (surfaces_intersect(list, r, t_min, t_max, &hit)) {
+        EXPLAIN(explain_closest(hit.surface, hit.source, hit.t, hit.point));
         return flat_color(desc, &hit);
+    }
     return desc->back_color;
 }
 /* end snippet */

@@ -3,6 +3,8 @@
 
 #include <stdlib.h>
 
+#include "03_triangle/triangle_explain.h"
+#include "explain.h"
 #include "grow.h"
 
 void surface_list_init(surface_list *list, sphere_formula formula, triangle_test test)
@@ -40,12 +42,15 @@ bool surface_intersect(const surface *s, const surface_list *list, ray r, real t
 {
     real t, beta = 0, gamma = 0;
     vec3 n;
+    EXPLAIN(explain_surface((int)(s - list->items), s->source, s->face));
     if (s->kind == SHAPE_SPHERE) {
         if (!sphere_intersect(&s->sphere, r, t_min, t_max, list->sphere_formula, &t, &n))
             return false;
     } else {
         triangle_hit th;
-        if (!triangle_intersect(&s->triangle, r, t_min, t_max, list->triangle_test, &th))
+        bool found = triangle_intersect(&s->triangle, r, t_min, t_max, list->triangle_test, &th);
+        EXPLAIN(triangle_explain(&s->triangle, r, t_min, t_max, list->triangle_test, found, &th));
+        if (!found)
             return false;
         t = th.t;
         beta = th.beta;

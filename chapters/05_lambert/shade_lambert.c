@@ -3,6 +3,7 @@
 
 #include "04_many_shapes/flat_shading.h"
 #include "05_lambert/lambert.h"
+#include "explain.h"
 
 /* snippet: shade_lambert */
 color shade_lambert(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
@@ -15,6 +16,8 @@ color shade_lambert(const tracer *tr, const shading_point *sp, int depth, uint64
     if (tr->desc->n_lights == 0)
         return color_make(0, 0, 0);
     /* Surface.shade(ray, point, normal, light) with the lecture's one light */
-    return lambert(shader->diffuse_color, sp->hit.point, sp->n, &tr->desc->lights[0]);
+    color L_d = lambert(shader->diffuse_color, sp->hit.point, sp->n, &tr->desc->lights[0]);
+    EXPLAIN(explain_light(&tr->desc->lights[0], sp->hit.point, sp->n, sp->v, L_d, false, L_d));
+    return L_d;
 }
 /* end snippet */

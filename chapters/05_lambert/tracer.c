@@ -2,6 +2,7 @@
 #include "05_lambert/tracer.h"
 
 #include "04_many_shapes/closest_hit.h"
+#include "explain.h"
 
 bool closest_hit_linear(const void *accel, ray r, real t_min, real t_max, hit_record *hit)
 {
@@ -34,12 +35,18 @@ const scene_shader *hit_shader(const scene *desc, const hit_record *hit)
 /* snippet: trace */
 color trace(const tracer *tr, ray r, real t_min, real t_max, int depth, uint64_t *rays)
 {
+    EXPLAIN(explain_trace(r, t_min, t_max, depth, tr->weight, rays));
     hit_record hit;
-    if (!tr->closest_hit(tr->accel, r, t_min, t_max, &hit))
+    if (!tr->closest_hit(tr->accel, r, t_min, t_max, &hit)) {
+        EXPLAIN(explain_miss(tr->desc->back_color); explain_radiance(tr->desc->back_color));
         return tr->desc->back_color;
+    }
     shading_point sp = {.r = r, .hit = hit, .shader = hit_shader(tr->desc, &hit)};
     sp.v = vec3_neg(vec3_normalize(r.d));           /* v = -normalize(ray.direction) */
     sp.n = normal_towards_viewer(hit.normal, r.d); /* the normal, turned to face v */
-    return tr->shade(tr, &sp, depth, rays);
+    EXPLAIN(explain_closest(hit.surface, hit.source, hit.t, hit.point); explain_shading(hit.normal, sp.n, sp.v, sp.shader));
+    color L = tr->shade(tr, &sp, depth, rays);
+    EXPLAIN(explain_radiance(L));
+    return L;
 }
 /* end snippet */

@@ -4,6 +4,7 @@
 #include "05_lambert/lambert.h"
 #include "05_lambert/shade_lambert.h"
 #include "06_shadows/shadow.h"
+#include "explain.h"
 
 bool light_in_front(const shading_point *sp, const scene_light *light)
 {
@@ -19,6 +20,8 @@ color shade_shadows(const tracer *tr, const shading_point *sp, int depth, uint64
     const scene_light *light = &tr->desc->lights[0];
     if (light_blocked(tr, sp, light->position, tracer_eps(tr), rays)) /* behind the surface, or a shadow */
         return color_make(0, 0, 0);
-    return lambert(shader->diffuse_color, sp->hit.point, sp->n, light);
+    color L_d = lambert(shader->diffuse_color, sp->hit.point, sp->n, light);
+    EXPLAIN(explain_light(light, sp->hit.point, sp->n, sp->v, L_d, false, L_d));
+    return L_d;
 }
 /* end snippet */

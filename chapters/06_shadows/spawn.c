@@ -1,6 +1,8 @@
 /* spawn.c - chapter 06: rays that leave a surface, and the epsilon policy. */
 #include "06_shadows/spawn.h"
 
+#include "explain.h"
+
 const char *const eps_policy_names[] = {"none", "fixed", "bound", NULL};
 
 int spawn_knob_rows(spawn_knobs *k, knob *rows)
@@ -44,6 +46,7 @@ ray spawn_ray(const shading_point *sp, vec3 d, eps_policy policy)
         break;
     }
     }
+    EXPLAIN(explain_spawn(eps_policy_names[policy], sp->hit.point, p, sp->hit.normal));
     return (ray){p, d};
 }
 
@@ -58,6 +61,7 @@ ray spawn_ray_to(const shading_point *sp, vec3 target, eps_policy policy, real *
     else if (policy == EPS_BOUND) /* a surface through the target is computed as far off as the point was */
         back_off = EPS_BOUND_ULPS * REAL_EPSILON * real_fmax(vec3_max_abs(target), vec3_max_abs(r.p));
     *t_max = 1 - back_off / length;
+    EXPLAIN(explain_shadow_ray(r, *t_max, target));
     return r;
 }
 /* end snippet */

@@ -5,6 +5,7 @@
 #include "08_mirrors/mirror.h"
 #include "08_mirrors/shade_glazed.h"
 #include "09_refraction/refract.h"
+#include "explain.h"
 
 int glass_knob_rows(glass_knobs *k, knob *rows)
 {
@@ -53,6 +54,7 @@ color shade_glass(const tracer *tr, const shading_point *sp, int depth, uint64_t
     if (shader->kind != SHADER_GLASS)
         return shade_glazed(tr, sp, depth, rays); /* chapter 08 */
     glass_event e = glass_at(sp, shader->refractive_index, tracer_fresnel(tr));
+    EXPLAIN(explain_glass(e.eta_i, e.eta_t, e.cos_i, e.transmits, e.cos_t, e.R));
     color R = color_make(e.R, e.R, e.R), T = color_make(1 - e.R, 1 - e.R, 1 - e.R);
     color L = color_make(0, 0, 0);
     if (e.R > 0) /* R L_reflected */

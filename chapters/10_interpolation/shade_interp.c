@@ -4,6 +4,7 @@
 #include "04_many_shapes/flat_shading.h"
 #include "10_interpolation/interpolate.h"
 #include "10_interpolation/sphere_uv.h"
+#include "explain.h"
 
 /* The shading of the chapters before this one: chapter 09's glass, which
  * shades every other shader by chapter 08's glazed surface. */
@@ -60,6 +61,7 @@ color shade_interp(const tracer *tr, const shading_point *sp, int depth, uint64_
 {
     const scene_shader *shader = sp->shader;
     interp_point ip = interp_at(tr, sp);
+    EXPLAIN(explain_interp(sp->hit.source, sp->hit.beta, sp->hit.gamma, ip.smooth, ip.sp.n, ip.has_uv, ip.uv.u, ip.uv.v));
     if (shader->kind == SHADER_RGB_NORMALS && ip.smooth) { /* (n + 1) / 2 of the interpolated normal */
         hit_record shown = sp->hit;
         shown.normal = ip.n_raw;
@@ -76,6 +78,7 @@ color shade_interp(const tracer *tr, const shading_point *sp, int depth, uint64_
     scene_shader textured = *shader;
     textured.diffuse_color = texture_lookup(&tr->desc->textures[shader->texture], ip.uv,
                                             (texture_filter)knobs->filter);
+    EXPLAIN(explain_texel(ip.uv.u, ip.uv.v, texture_filter_names[knobs->filter], textured.diffuse_color));
     ip.sp.shader = &textured;
     return shade_earlier(tr, &ip.sp, depth, rays);
 }

@@ -4,6 +4,8 @@
 
 #include <math.h>
 
+#include "explain.h"
+
 #ifdef RT_REAL_FLOAT
 #define real_next_up(x) nextafterf((x), INFINITY)
 #else
@@ -136,6 +138,7 @@ static uint64_t march(const grid *g, search *s, ray r, real t_min, real t_max)
         /* Every surface of the cell, over the whole window: a hit beyond the cell is kept too. */
         cells++;
         long c = m.i[0] + (long)g->n[0] * (m.i[1] + (long)g->n[1] * m.i[2]);
+        EXPLAIN(explain_cell(m.i[0], m.i[1], m.i[2], (long)(g->start[c + 1] - g->start[c])));
         for (uint32_t e = g->start[c]; e < g->start[c + 1]; e++)
             test_surface(s, g->refs[e]);
         /* The cell ends where the ray crosses its nearest boundary. */

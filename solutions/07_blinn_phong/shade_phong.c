@@ -4,6 +4,7 @@
 #include "05_lambert/lambert.h"
 #include "05_lambert/shade_lambert.h"
 #include "06_shadows/shadow.h"
+#include "explain.h"
 
 phong_form tracer_phong_form(const tracer *tr)
 {
@@ -15,11 +16,15 @@ phong_form tracer_phong_form(const tracer *tr)
 color light_contribution(const tracer *tr, const shading_point *sp, const scene_shader *shader,
                          const scene_light *light)
 {
-    color L = lambert(shader->diffuse_color, sp->hit.point, sp->n, light); /* chapter 05 */
-    if (shader->kind == SHADER_PHONG) /* no specular work for a Lambertian shader */
-        L = color_add(L, blinn_phong_specular(shader->specular_color, shader->exponent, sp->hit.point, sp->n, sp->v,
-                                              light, tracer_phong_form(tr)));
-    return L;
+    color L_d = lambert(shader->diffuse_color, sp->hit.point, sp->n, light); /* chapter 05 */
+    if (shader->kind != SHADER_PHONG) { /* no specular work for a Lambertian shader */
+        EXPLAIN(explain_light(light, sp->hit.point, sp->n, sp->v, L_d, false, L_d));
+        return L_d;
+    }
+    color L_s = blinn_phong_specular(shader->specular_color, shader->exponent, sp->hit.point, sp->n, sp->v, light,
+                                     tracer_phong_form(tr));
+    EXPLAIN(explain_light(light, sp->hit.point, sp->n, sp->v, L_d, true, L_s));
+    return color_add(L_d, L_s);
 }
 /* end snippet */
 
@@ -42,6 +47,7 @@ color shade_phong(const tracer *tr, const shading_point *sp, int depth, uint64_t
     (void)rays;
     color result = color_make(0, 0, 0);
     END EXERCISE */
+    EXPLAIN(explain_ambient(tr->desc->ambient));
     return result;
 }
 /* end snippet */
