@@ -3,6 +3,8 @@
 
 #include <math.h>
 
+#include "03_triangle/watertight.h"
+
 #ifdef RT_REAL_FLOAT
 #define real_next_up(x) nextafterf((x), INFINITY)
 #else
@@ -23,32 +25,88 @@ typedef struct {
     const surface_list *list;
     ray r;
     real t_min;
-    real best_t;     /* the t of the best hit, t_max before any */
-    real upper;      /* surfaces are asked for hits in (t_min, upper) */
-    int best;        /* its surface, -1 before any */
-    hit_record hit;  /* its record */
+    real best_t;        /* the t of the best hit, t_max before any */
+    real upper;         /* surfaces are asked for hits in (t_min, upper) */
+    int best;           /* its surface, -1 before any */
+    bool recorded;      /* its record is in `hit` (surface_intersect's); else its beta and gamma are in `tri` */
+    hit_record hit;
+    triangle_hit tri;
+    int by_ray;         /* triangles take the watertight test with the ray's part made once, `wr`:
+                         * 1 yes, 0 no, -1 not known before the first triangle */
+    watertight_ray wr;
     uint64_t tests;
 } search;
+
+/* The search for ray r in (t_min, t_max). */
+static search search_start(const surface_list *list, ray r, real t_min, real t_max)
+{
+    return (search){.list = list, .r = r, .t_min = t_min, .best_t = t_max, .upper = t_max, .best = -1,
+                    .by_ray = list->triangle_test == TRIANGLE_WATERTIGHT ? -1 : 0};
+}
+
+/* Whether the triangles take the ray's own watertight test.  For a watertight
+ * list, chapter 03's watertight_ray_hit with the ray's permutation and shear
+ * made once, at the first triangle (many rays test none): triangle_intersect
+ * does the same arithmetic for every triangle, unless d is so long or short
+ * that it first scales it (then every surface takes surface_intersect, as
+ * there). */
+static inline bool triangles_by_ray(search *s)
+{
+    if (s->by_ray < 0)
+        s->by_ray = vec3_scale_exponent(s->r.d) == 0 && watertight_ray_make(s->r, &s->wr);
+    return s->by_ray;
+}
+
+/* The new best hit: surface k at t. */
+static inline void take(search *s, uint32_t k, real t)
+{
+    s->best_t = t;
+    s->upper = real_next_up(t);
+    s->best = (int)k;
+}
 
 /* snippet: test_surface */
 /* Surface k against the ray.  The linear scan keeps the first surface in
  * the list among those hit at the smallest t; the grid meets the surfaces
  * in another order, so it also asks for hits AT the best t so far (upper is
- * the next real above it) and takes one there when its index is smaller. */
+ * the next real above it) and takes one there when its index is smaller.
+ * A triangle's record waits for the end of the search (search_record): most
+ * hits found along the way lose to a later one. */
 static inline void test_surface(search *s, uint32_t k)
 {
-    hit_record candidate;
+    const surface *item = &s->list->items[k];
     s->tests++;
-    if (surface_intersect(&s->list->items[k], s->list, s->r, s->t_min, s->upper, &candidate) &&
+    if (item->kind == SHAPE_TRIANGLE && s->by_ray && triangles_by_ray(s)) {
+        triangle_hit th;
+        if (watertight_ray_hit(&s->wr, &item->triangle, s->t_min, s->upper, &th) &&
+            (th.t < s->best_t || (int)k < s->best)) {
+            take(s, k, th.t);
+            s->tri = th;
+            s->recorded = false;
+        }
+        return;
+    }
+    hit_record candidate;
+    if (surface_intersect(item, s->list, s->r, s->t_min, s->upper, &candidate) &&
         (candidate.t < s->best_t || (int)k < s->best)) {
-        s->best_t = candidate.t;
-        s->upper = real_next_up(candidate.t);
-        s->best = (int)k;
+        take(s, k, candidate.t);
         s->hit = candidate;
-        s->hit.surface = (int)k;
+        s->recorded = true;
     }
 }
 /* end snippet */
+
+/* The best hit's record, as surface_intersect would have filled it in. */
+static hit_record search_record(const search *s)
+{
+    hit_record h = s->hit;
+    if (!s->recorded) {
+        const surface *item = &s->list->items[s->best];
+        h = surface_hit_record(item, s->r, s->best_t, triangle_normal(&item->triangle), s->tri.beta, s->tri.gamma);
+    }
+    h.surface = s->best;
+    return h;
+}
 
 /* snippet: cull */
 /* Whether the ray can meet the part of a surface's box inside the cell,
@@ -260,7 +318,7 @@ static inline bool dda_leap(const fast_grid *g, dda *m, int side, const real p[3
 
 bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit, fast_grid_counts *counts)
 {
-    search s = {.list = g->list, .r = r, .t_min = t_min, .best_t = t_max, .upper = t_max, .best = -1};
+    search s = search_start(g->list, r, t_min, t_max);
     uint64_t cells = 0, culled = 0;
     for (long u = 0; u < g->n_unbinned; u++)
         test_surface(&s, g->unbinned[u]);
@@ -402,7 +460,7 @@ done:
     }
     if (s.best < 0)
         return false;
-    *hit = s.hit;
+    *hit = search_record(&s);
     return true;
 }
 
