@@ -14,12 +14,16 @@
 #define GRID_FREE fast_grid_free
 #define GRID_DEFAULTS fast_grid_default_options
 #define GRID_STAGE fast_stage
-/* a few densities with every knob on, then mailboxing, leaping and culling
- * off one at a time and all together */
+/* a few densities with every knob on, one level and two (the default split,
+ * and splits so low that most cells with surfaces get grids of their own),
+ * then mailboxing, leaping and culling off one at a time and all together */
 static const fast_grid_options knob_sets[] = {
-    {0.3, 1L << 20, true, true, true}, {2, 1L << 20, true, true, true},  {10, 1L << 20, true, true, true},
-    {2, 1L << 20, false, true, true},  {2, 1L << 20, true, false, true}, {2, 1L << 20, true, true, false},
-    {2, 1L << 20, false, false, false},
+    {0.3, 1L << 20, true, true, true, 0},   {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT},
+    {10, 1L << 20, true, true, true, 0},    {2, 1L << 20, true, true, true, 0},
+    {0.3, 1L << 20, true, true, true, 2},   {2, 1L << 20, true, true, true, 4},
+    {2, 1L << 20, false, true, true, 0},    {2, 1L << 20, true, false, true, 0},
+    {2, 1L << 20, true, true, false, 0},    {2, 1L << 20, false, false, false, 0},
+    {2, 1L << 20, false, false, false, 3},
 };
 #define N_KNOB_SETS (sizeof knob_sets / sizeof knob_sets[0])
 
@@ -28,7 +32,7 @@ static shading_stage fast_stage(void)
 {
     shading_stage stage = grid_stage();
     stage.build_query = lab_faces;
-    fast_settings = (fast_knobs){.accel = LAB_ACCEL_FAST};
+    fast_settings = (fast_knobs){.accel = LAB_ACCEL_FAST, .split = FAST_GRID_DEFAULT_SPLIT};
     return stage;
 }
 
@@ -81,7 +85,8 @@ static void test_mailbox_counts(void **state)
 
 /* The leap's cubes: for every cell and octant, empty[8 c + o] is the side of
  * the largest cube of empty cells with c as its corner and lying ahead of c
- * in octant o (cells beyond the grid count as empty, capped at 255), found
+ * in octant o (cells beyond the grid count as empty, capped at 255 or at the
+ * largest n_a + 1 if less), found
  * here by growing the cube one cell at a time. */
 static bool cube_empty(const fast_grid *g, int i, int j, int k, int o, int side)
 {
@@ -129,8 +134,8 @@ static void test_empty_cubes(void **state)
                     int side = 0;
                     while (side <= largest && cube_empty(&g, i, j, k, o, side + 1))
                         side++;
-                    if (side > largest) /* reaches past the grid on every axis */
-                        side = 255;
+                    if (side > largest) /* reaches past the grid on every axis: the largest side kept */
+                        side = largest < 255 ? largest + 1 : 255;
                     long c = i + (long)g.n[0] * (j + (long)g.n[1] * k);
                     if (g.empty[8 * c + o] != side)
                         fail_msg("cell (%d, %d, %d), octant %d: empty cube of side %d expected, the grid says %d", i,

@@ -2,7 +2,7 @@
  * Intel Embree 3, on exactly the same rays.  Built and run by `make bench-grid`
  * only (bench/grid/grid.mk); never part of `make` or `make test`.
  *
- *     grid_vs_embree MESH.obj | sphere:N   [--size 512] [--linear-rows K] [--random] [--cramer]
+ *     grid_vs_embree MESH.obj | sphere:N   [--size 512] [--linear-rows K] [--random] [--cramer] [--split N]
  *
  * One primary ray per pixel of a WxW image looking at the mesh (or, with
  * --random, as many incoherent rays: see make_random_rays); every
@@ -14,7 +14,8 @@
  * and the memory of the grid and of Embree's BVH (both without the mesh
  * itself), the grid's knobs side by side, and how often the three agree on
  * the triangle hit.  The triangle test is the renderers' default, the
- * watertight one (--cramer: chapter 03's Cramer's rule).  The linear scan traces every K-th row only (K =
+ * watertight one (--cramer: chapter 03's Cramer's rule); the grid has two
+ * levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell (--split N; 0: one).  The linear scan traces every K-th row only (K =
  * --linear-rows; 0 skips it) and its rate is that of the rows it traced.
  */
 #include <math.h>
@@ -309,6 +310,7 @@ int main(int argc, char **argv)
     int size = 512, linear_rows = 32, runs = 5, knobs = 1;
     bool random_rays = false;
     triangle_test test = TRIANGLE_TEST_DEFAULT;
+    fast_grid_options grid_options = fast_grid_default_options();
     for (int k = 1; k < argc; k++) {
         if (!strcmp(argv[k], "--size") && k + 1 < argc)
             size = atoi(argv[++k]);
@@ -320,6 +322,8 @@ int main(int argc, char **argv)
             knobs = atoi(argv[++k]);
         else if (!strcmp(argv[k], "--random"))
             random_rays = true;
+        else if (!strcmp(argv[k], "--split") && k + 1 < argc)
+            grid_options.split = atoi(argv[++k]);
         else if (!strcmp(argv[k], "--cramer"))
             test = TRIANGLE_CRAMER;
         else
@@ -327,7 +331,7 @@ int main(int argc, char **argv)
     }
     if (!what || size < 1 || runs < 1) {
         fprintf(stderr, "usage: grid_vs_embree MESH.obj|sphere:N [--size 512] [--linear-rows 32] [--runs 5] [--knobs 1|2|0] "
-                        "[--random] [--cramer]\n");
+                        "[--random] [--cramer] [--split N]\n");
         return 2;
     }
     float_mesh fm;
@@ -369,7 +373,7 @@ int main(int argc, char **argv)
     fast_grid g;
     char err[256];
     t0 = now();
-    if (fast_grid_build(&g, &list, fast_grid_default_options(), err, sizeof err) != 0) {
+    if (fast_grid_build(&g, &list, grid_options, err, sizeof err) != 0) {
         fprintf(stderr, "grid_vs_embree: %s\n", err);
         return 1;
     }
@@ -437,7 +441,8 @@ int main(int argc, char **argv)
         for (size_t k = 0; k < sizeof densities / sizeof densities[0]; k++) {
             fast_grid h;
             fast_grid_options opt = {.density = densities[k], .max_cells = FAST_GRID_DEFAULT_MAX_CELLS,
-                                .mailbox = variant != 1, .leap = variant != 2, .cull = variant != 3};
+                                     .mailbox = variant != 1, .leap = variant != 2, .cull = variant != 3,
+                                     .split = grid_options.split};
             t0 = now();
             if (fast_grid_build(&h, &list, opt, err, sizeof err) != 0) {
                 fprintf(stderr, "grid_vs_embree: %s\n", err);
