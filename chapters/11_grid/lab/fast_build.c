@@ -166,20 +166,36 @@ static void bin_surface(fast_grid *g, const surface *s, uint32_t index, uint32_t
  * (a flat scene) gets one cell and the others share the count. */
 void fast_grid_resolution(const double extent[3], long surfaces, double density, long max_cells, int n[3])
 {
-    double volume = 1;
-    int spanned = 0;
+    /* s cells per unit length along every spanned axis: prod (e_a s) = wanted.
+     * An axis too thin for one cell at that spacing (e_a s < 1/2) gets one,
+     * and the others share the cells: so a box that is thin but not quite
+     * flat (a cell of floor in a grid of two levels) is not cut into
+     * millions of slivers. */
+    double wanted = fmin(density * (double)surfaces, (double)max_cells), s = 0;
+    bool spans[3];
     for (int a = 0; a < 3; a++)
-        if (extent[a] > 0) {
-            volume *= extent[a];
-            spanned++;
-        }
-    double wanted = fmin(density * (double)surfaces, (double)max_cells);
-    /* s cells per unit length along every spanned axis: prod (e_a s) = wanted */
-    double s = spanned ? fmin(pow(fmax(wanted, 1) / volume, 1.0 / spanned), 1e300) : 0;
+        spans[a] = extent[a] > 0;
+    int spanned;
+    for (bool thinned = true; thinned;) {
+        double volume = 1;
+        spanned = 0;
+        for (int a = 0; a < 3; a++)
+            if (spans[a]) {
+                volume *= extent[a];
+                spanned++;
+            }
+        s = spanned ? fmin(pow(fmax(wanted, 1) / volume, 1.0 / spanned), 1e300) : 0;
+        thinned = false;
+        for (int a = 0; a < 3; a++)
+            if (spans[a] && spanned > 1 && extent[a] * s < 0.5) {
+                spans[a] = false;
+                thinned = true;
+            }
+    }
     for (;;) {
         double cells = 1;
         for (int a = 0; a < 3; a++) {
-            double na = extent[a] > 0 ? fmin(fmax(round(extent[a] * s), 1), 1 << 20) : 1;
+            double na = spans[a] ? fmin(fmax(round(extent[a] * s), 1), 1 << 20) : 1;
             n[a] = (int)na;
             cells *= na;
         }
