@@ -223,15 +223,34 @@ typedef struct {
 
 static void march(const fast_grid *g, search *s, const ray_frame *rf, march_state *ms);
 
+/* One entry of the cell: skipped when its surface was tested already along
+ * the ray, culled when the ray passes by its box in the cell, else tested. */
+static inline void consider(const fast_grid_entry *entry, const cull_frame *f, bool cull, bool use_mailbox,
+                            search *s, march_state *ms)
+{
+    const uint32_t k = entry->surface;
+    if (use_mailbox && ms->mailbox[k % MAILBOX] == k)
+        return; /* tested already along this ray */
+    if (cull && !passes_box(entry->box, f, s->t_min, s->upper)) {
+        ms->culled++;
+        return; /* the ray passes by its box in this cell */
+    }
+    if (use_mailbox)
+        ms->mailbox[k % MAILBOX] = k;
+    test_surface(s, k);
+}
+
 /* snippet: cell */
 /* Every surface of cell m->cell, each tested over the whole window
  * (t_min, best): a hit beyond this cell is kept too, and counts once the
- * march reaches its cell.  In batches of up to BATCH entries: first the
- * entries whose boxes are not beside the ray's span, gathered without
- * branches (which entries pass is different in every cell: a branch on it
- * is often guessed wrong); then, of those, each one not tested yet whose
- * box the ray passes through is tested.  A cell with a grid of its own
- * (two levels) lists that grid alone: the ray marches through it. */
+ * march reaches its cell.  A cell of SIFT_FROM entries or more goes in
+ * batches of up to BATCH entries: first the entries whose boxes are not
+ * beside the ray's span, gathered without branches (which entries pass is
+ * different in every cell: a branch on it is often guessed wrong); then
+ * each of those.  A cell of fewer entries takes them one by one, and makes
+ * the cull frame only at the first not tested yet (a floor's triangles are
+ * listed in every cell under it and tested once).  A cell with a grid of
+ * its own (two levels) lists that grid alone: the ray marches through it. */
 static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, search *s, const ray_frame *rf,
                               march_state *ms)
 {
@@ -243,33 +262,35 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
         march(&g->subs[refs[first].surface - FAST_GRID_SUB], s, rf, ms);
         return;
     }
-    uint64_t span_lo = 0, span_hi = 0;
-    const bool cull = g->cull, use_mailbox = g->mailbox, sift = cull && last - first >= SIFT_FROM;
-    if (cull)
-        cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->cull_slack);
-    if (sift)
-        cull_span(f, g, m->i, rf->p, rf->d, rf->reach, rf->d_max, s->t_min, s->upper, &span_lo, &span_hi);
+    const bool cull = g->cull, use_mailbox = g->mailbox;
+    if (!cull || last - first < SIFT_FROM) {
+        bool framed = !cull;
+        for (uint32_t e = first; e < last; e++) {
+            const uint32_t k = refs[e].surface;
+            if (use_mailbox && ms->mailbox[k % MAILBOX] == k)
+                continue;
+            if (!framed) {
+                cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->cull_slack);
+                framed = true;
+            }
+            consider(&refs[e], f, cull, use_mailbox, s, ms);
+        }
+        return;
+    }
+    uint64_t span_lo, span_hi;
+    cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->cull_slack);
+    cull_span(f, g, m->i, rf->p, rf->d, rf->reach, rf->d_max, s->t_min, s->upper, &span_lo, &span_hi);
     for (uint32_t e = first; e < last;) {
         const uint32_t end = last - e > BATCH ? e + BATCH : last, batch = end - e;
         const fast_grid_entry *near_ray[BATCH];
         uint32_t n_near = 0;
         for (; e < end; e++) {
             near_ray[n_near] = &refs[e];
-            n_near += !sift | !box_beside_span(refs[e].box, span_lo, span_hi);
+            n_near += !box_beside_span(refs[e].box, span_lo, span_hi);
         }
         ms->culled += batch - n_near;
-        for (uint32_t j = 0; j < n_near; j++) {
-            const uint32_t k = near_ray[j]->surface;
-            if (use_mailbox && ms->mailbox[k % MAILBOX] == k)
-                continue; /* tested already along this ray */
-            if (cull && !passes_box(near_ray[j]->box, f, s->t_min, s->upper)) {
-                ms->culled++;
-                continue; /* the ray passes by its box in this cell */
-            }
-            if (use_mailbox)
-                ms->mailbox[k % MAILBOX] = k;
-            test_surface(s, k);
-        }
+        for (uint32_t j = 0; j < n_near; j++)
+            consider(near_ray[j], f, cull, use_mailbox, s, ms);
     }
 }
 /* end snippet */
