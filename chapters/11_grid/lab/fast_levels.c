@@ -6,7 +6,8 @@
  * in a few cells, every one of whose surfaces each ray through them has to
  * cull.  Kalojanov, Billeter and Slusallek ("Two-level grids for ray tracing
  * on GPUs", 2011) give each cell a grid of its own, sized by what it holds;
- * here only the cells that list more than `split` surfaces get one.
+ * here only the cells that list more than `split` surfaces get one, the
+ * most crowded first, within a memory budget.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -62,46 +63,93 @@ static int build_sub(fast_grid *sub, const fast_grid *g, const uint32_t *subset,
     return 0;
 }
 
+/* A cell that lists more than `split` surfaces, and the grid it got (-1: none). */
+typedef struct {
+    long cell;
+    uint32_t count;
+    long sub;
+} crowded_cell;
+
+/* The most crowded first (a tie by cell, so that the build does not depend
+ * on qsort's order), and by cell. */
+static int by_count(const void *x, const void *y)
+{
+    const crowded_cell *a = x, *b = y;
+    return a->count != b->count ? (a->count < b->count) - (a->count > b->count) : (a->cell > b->cell) - (a->cell < b->cell);
+}
+static int by_cell(const void *x, const void *y)
+{
+    const crowded_cell *a = x, *b = y;
+    return (a->cell > b->cell) - (a->cell < b->cell);
+}
+
 int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_size)
 {
     if (opt.split <= 0 || g->n_cells == 0)
         return 0;
-    long crowded = 0;
+    long n_crowded = 0;
     uint32_t most = 0;
     for (long c = 0; c < g->n_cells; c++) {
         uint32_t count = g->start[c + 1] - g->start[c];
-        crowded += count > (uint32_t)opt.split;
+        n_crowded += count > (uint32_t)opt.split;
         most = count > most ? count : most;
     }
-    if (crowded == 0)
+    if (n_crowded == 0)
         return 0;
-    g->subs = calloc((size_t)crowded, sizeof *g->subs);
+    crowded_cell *crowded = malloc((size_t)n_crowded * sizeof *crowded);
+    g->subs = calloc((size_t)n_crowded, sizeof *g->subs);
     uint32_t *subset = malloc((size_t)most * sizeof *subset);
-    if (!g->subs || !subset) {
+    if (!crowded || !g->subs || !subset) {
+        free(crowded);
         free(subset);
         snprintf(err, err_size, "grid: out of memory");
         return -1;
     }
+    long k = 0;
+    for (long c = 0; c < g->n_cells; c++)
+        if (g->start[c + 1] - g->start[c] > (uint32_t)opt.split)
+            crowded[k++] = (crowded_cell){.cell = c, .count = g->start[c + 1] - g->start[c], .sub = -1};
+    /* The most crowded cells first, while the grids of their own take at
+     * most a quarter of what the grid takes with one level (at least 1 MB):
+     * on a mesh the crowded cells are where thin triangles meet (the poles
+     * of a sphere), and their grids cost much and buy little. */
+    qsort(crowded, (size_t)n_crowded, sizeof *crowded, by_count);
+    size_t budget = fast_grid_memory(g) / 4, spent = 0;
+    budget = budget > (1u << 20) ? budget : (1u << 20);
+    for (k = 0; k < n_crowded && spent < budget; k++) {
+        const long c = crowded[k].cell;
+        for (uint32_t q = 0; q < crowded[k].count; q++)
+            subset[q] = g->refs[g->start[c] + q].surface;
+        const int idx[3] = {(int)(c % g->n[0]), (int)(c / g->n[0] % g->n[1]), (int)(c / g->n[0] / g->n[1])};
+        fast_grid *sub = &g->subs[g->n_subs];
+        int kept = build_sub(sub, g, subset, crowded[k].count, idx, opt, err, err_size);
+        if (kept < 0) {
+            free(crowded);
+            free(subset);
+            return -1;
+        }
+        if (kept == 0 && spent + fast_grid_memory(sub) > budget) {
+            fast_grid_free(sub);
+            break;
+        }
+        if (kept == 0) {
+            spent += fast_grid_memory(sub);
+            crowded[k].sub = g->n_subs++;
+        }
+    }
+    free(subset);
     /* Each cell's list moves down to where the lists before it end now: a
-     * crowded cell's shrinks to the one entry of its grid.  The cell's old
-     * list is read before anything is written over it. */
+     * cell with a grid of its own lists that grid alone. */
+    qsort(crowded, (size_t)n_crowded, sizeof *crowded, by_cell);
     uint32_t written = 0, from = g->start[0];
+    k = 0;
     for (long c = 0; c < g->n_cells; c++) {
         const uint32_t to = g->start[c + 1], count = to - from;
         g->start[c] = written;
-        int kept = 1;
-        if (count > (uint32_t)opt.split) {
-            for (uint32_t q = 0; q < count; q++)
-                subset[q] = g->refs[from + q].surface;
-            const int idx[3] = {(int)(c % g->n[0]), (int)(c / g->n[0] % g->n[1]), (int)(c / g->n[0] / g->n[1])};
-            kept = build_sub(&g->subs[g->n_subs], g, subset, count, idx, opt, err, err_size);
-            if (kept < 0) {
-                free(subset);
-                return -1;
-            }
-        }
-        if (kept == 0) {
-            g->refs[written++] = (fast_grid_entry){.surface = FAST_GRID_SUB + (uint32_t)g->n_subs++};
+        while (k < n_crowded && crowded[k].cell < c)
+            k++;
+        if (k < n_crowded && crowded[k].cell == c && crowded[k].sub >= 0) {
+            g->refs[written++] = (fast_grid_entry){.surface = FAST_GRID_SUB + (uint32_t)crowded[k].sub};
         } else {
             memmove(&g->refs[written], &g->refs[from], count * sizeof *g->refs);
             written += count;
@@ -110,7 +158,7 @@ int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_s
     }
     g->start[g->n_cells] = written;
     g->n_refs = written;
-    free(subset);
+    free(crowded);
     fast_grid_entry *shrunk = realloc(g->refs, (written ? written : 1) * sizeof *g->refs);
     g->refs = shrunk ? shrunk : g->refs;
     size_t now = fast_grid_memory(g) + most * sizeof *subset;
