@@ -72,7 +72,7 @@ static const shading_stage stage07 = {.name = "07_blinn_phong", .shade = shade_p
 
 /* The same stage over chapter 11's grid. */
 static const shading_stage stage07_grid = {
-    .name = "07_blinn_phong", .shade = shade_phong, .shade_knobs = &phong_defaults, .build_query = grid_query_build};
+    .name = "07_blinn_phong", .shade = shade_phong, .shade_knobs = &phong_defaults, .build_query = grid_query};
 
 static void test_07_one_sphere(void **state) { (void)state; check_scene(&stage07, "one-sphere"); }
 static void test_07_two_boxes(void **state) { (void)state; check_scene(&stage07, "two-boxes"); }

@@ -7,7 +7,7 @@
  *
  *     static int grid_faces(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t n)
  *     {
- *         return face_query_build(list, desc, grid_query_build, q, err, n);
+ *         return face_query_build(list, desc, grid_query, q, err, n);
  *     }
  *     ...
  *     shading_stage stage = interp_stage(grid_faces);

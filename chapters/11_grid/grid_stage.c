@@ -30,7 +30,7 @@ static void grid_release(void *owned)
 }
 
 /* The grid over `list`, or the list itself under --accel=list. */
-static int grid_query(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
+int grid_query(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
 {
     if (grid_settings.accel == GRID_ACCEL_LIST)
         return hit_query_linear(list, desc, q, err, err_size);

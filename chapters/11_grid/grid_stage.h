@@ -28,6 +28,11 @@ extern grid_knobs grid_settings;
 enum { GRID_KNOBS = 2 };
 extern const knob grid_knob_rows[GRID_KNOBS];
 
+/* A build_query_fn: the grid of `list` (grid_settings), or chapter 04's
+ * linear scan under --accel=list; for a stage that shades without chapter
+ * 10's faces (the scenes suite renders chapter 07 through it). */
+int grid_query(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
+
 /* A build_query_fn: chapter 10's face_query around the grid of `list`
  * (grid_settings), or around the linear scan under --accel=list. */
 int grid_faces(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
