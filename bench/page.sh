@@ -185,7 +185,10 @@ scenes translated by bench/scene2pov.c (the comments there say how: the course's
 are analytic, no antialiasing; a specular colour that is not grey is rendered one channel at a time).
 Its image is compared with the course's reference image; its trace time is the one it prints (not its
 parse time or start-up).  The project's side is the latest chapter whose renderer models every feature
-of the scene (it prints no "ignores:" line for it).
+of the scene (it prints no "ignores:" line for it).  Chapter 11 runs as its lab's renderer,
+\`build/11_grid/lab --accel=fast\` (row label \`11_grid/lab\`): the fast grid of chapters/11_grid/lab/, which
+gives the lesson's image byte for byte; the lesson's renderer marches the lecture's simple grid, which is
+there to be read, not raced.
 EOF
 if [ -n "$pov_note" ]; then
     echo

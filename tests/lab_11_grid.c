@@ -14,12 +14,16 @@
 #define GRID_FREE fast_grid_free
 #define GRID_DEFAULTS fast_grid_default_options
 #define GRID_STAGE fast_stage
-/* a few densities with every knob on, then mailboxing, leaping and culling
- * off one at a time and all together */
+/* a few densities with every knob on, one level and two (the default split,
+ * and splits so low that most cells with surfaces get grids of their own),
+ * then mailboxing, leaping and culling off one at a time and all together */
 static const fast_grid_options knob_sets[] = {
-    {0.3, 1L << 20, true, true, true}, {2, 1L << 20, true, true, true},  {10, 1L << 20, true, true, true},
-    {2, 1L << 20, false, true, true},  {2, 1L << 20, true, false, true}, {2, 1L << 20, true, true, false},
-    {2, 1L << 20, false, false, false},
+    {0.3, 1L << 20, true, true, true, 0},   {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT},
+    {10, 1L << 20, true, true, true, 0},    {2, 1L << 20, true, true, true, 0},
+    {0.3, 1L << 20, true, true, true, 2},   {2, 1L << 20, true, true, true, 4},
+    {2, 1L << 20, false, true, true, 0},    {2, 1L << 20, true, false, true, 0},
+    {2, 1L << 20, true, true, false, 0},    {2, 1L << 20, false, false, false, 0},
+    {2, 1L << 20, false, false, false, 3},
 };
 #define N_KNOB_SETS (sizeof knob_sets / sizeof knob_sets[0])
 
@@ -28,7 +32,7 @@ static shading_stage fast_stage(void)
 {
     shading_stage stage = grid_stage();
     stage.build_query = lab_query_build;
-    fast_settings = (fast_knobs){.accel = LAB_ACCEL_FAST};
+    fast_settings = (fast_knobs){.accel = LAB_ACCEL_FAST, .split = FAST_GRID_DEFAULT_SPLIT};
     return stage;
 }
 
@@ -81,7 +85,8 @@ static void test_mailbox_counts(void **state)
 
 /* The leap's cubes: for every cell and octant, empty[8 c + o] is the side of
  * the largest cube of empty cells with c as its corner and lying ahead of c
- * in octant o (cells beyond the grid count as empty, capped at 255), found
+ * in octant o (cells beyond the grid count as empty, capped at 255 or at the
+ * largest n_a + 1 if less), found
  * here by growing the cube one cell at a time. */
 static bool cube_empty(const fast_grid *g, int i, int j, int k, int o, int side)
 {
@@ -129,8 +134,8 @@ static void test_empty_cubes(void **state)
                     int side = 0;
                     while (side <= largest && cube_empty(&g, i, j, k, o, side + 1))
                         side++;
-                    if (side > largest) /* reaches past the grid on every axis */
-                        side = 255;
+                    if (side > largest) /* reaches past the grid on every axis: the largest side kept */
+                        side = largest < 255 ? largest + 1 : 255;
                     long c = i + (long)g.n[0] * (j + (long)g.n[1] * k);
                     if (g.empty[8 * c + o] != side)
                         fail_msg("cell (%d, %d, %d), octant %d: empty cube of side %d expected, the grid says %d", i,
@@ -140,6 +145,38 @@ static void test_empty_cubes(void **state)
     assert_true(leaps > 0); /* the scene leaves room to leap */
     fast_grid_free(&g);
     surface_list_free(&list);
+}
+
+/* The fast grid makes the watertight test's ray part once per ray, and only
+ * for directions that triangle_intersect tests as they are: a d longer than
+ * 2^REAL_SAFE_EXPONENT is divided by a power of two there first, and the
+ * grid must then take that path too.  Random scenes with each triangle test;
+ * the same rays with d as it is and with d's largest component made the
+ * largest power of two (there S_z = 1 / d_z is below the normal reals, and
+ * the test without the scaling loses digits of t): the same answers as the
+ * linear scan, bit for bit, record and all. */
+static void test_directions_of_any_length(void **state)
+{
+    (void)state;
+    rng_state = 20;
+    for (int t = 0; t < 2; t++)
+        for (int huge = 0; huge < 2; huge++) {
+            surface_list list;
+            surface_list_init(&list, SPHERE_ROBUST, triangle_tests[t]);
+            vec3 centre = uniform_vec(vec3_make(-100, -100, -100), vec3_make(100, 100, 100));
+            random_scene(&list, 300, centre, 10);
+            const long n = 2000;
+            ray_set rays = rays_alloc(n);
+            for (long k = 0; k < n; k++) {
+                vec3 p = vec3_add(centre, vec3_scale(random_direction(), k % 2 ? 40 : 8));
+                vec3 target = vec3_add(centre, vec3_scale(random_direction(), 10));
+                vec3 d = vec3_sub(target, p);
+                if (huge) /* exactly: a power of two times d */
+                    d = vec3_ldexp(d, ilogb((double)REAL_MAX) - ilogb((double)vec3_max_abs(d)));
+                set_ray(&rays, k, p, d);
+            }
+            expect_as_linear(&list, &rays, n / 4);
+        }
 }
 
 static const graded_test tests[] = {
@@ -153,6 +190,7 @@ static const graded_test tests[] = {
     GRADED(test_empty_and_single, 0),
     GRADED(test_mailbox_counts, 0),
     GRADED(test_empty_cubes, 0),
+    GRADED(test_directions_of_any_length, 0),
     GRADED(test_cornell_scenes, 0),
     GRADED(test_builtin_scenes_as_chapter_10, 0),
 };

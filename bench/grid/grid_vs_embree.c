@@ -2,7 +2,7 @@
  * Intel Embree 3, on exactly the same rays.  Built and run by `make bench-grid`
  * only (bench/grid/grid.mk); never part of `make` or `make test`.
  *
- *     grid_vs_embree MESH.obj | sphere:N   [--size 512] [--linear-rows K] [--random]
+ *     grid_vs_embree MESH.obj | sphere:N   [--size 512] [--linear-rows K] [--random] [--cramer] [--split N]
  *
  * One primary ray per pixel of a WxW image looking at the mesh (or, with
  * --random, as many incoherent rays: see make_random_rays); every
@@ -13,7 +13,9 @@
  * (from wall-clock time), the build times
  * and the memory of the grid and of Embree's BVH (both without the mesh
  * itself), the grid's knobs side by side, and how often the three agree on
- * the triangle hit.  The linear scan traces every K-th row only (K =
+ * the triangle hit.  The triangle test is the renderers' default, the
+ * watertight one (--cramer: chapter 03's Cramer's rule); the grid has two
+ * levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell (--split N; 0: one).  The linear scan traces every K-th row only (K =
  * --linear-rows; 0 skips it) and its rate is that of the rows it traced.
  */
 #include <math.h>
@@ -307,6 +309,8 @@ int main(int argc, char **argv)
     const char *what = NULL;
     int size = 512, linear_rows = 32, runs = 5, knobs = 1;
     bool random_rays = false;
+    triangle_test test = TRIANGLE_TEST_DEFAULT;
+    fast_grid_options grid_options = fast_grid_default_options();
     for (int k = 1; k < argc; k++) {
         if (!strcmp(argv[k], "--size") && k + 1 < argc)
             size = atoi(argv[++k]);
@@ -318,12 +322,16 @@ int main(int argc, char **argv)
             knobs = atoi(argv[++k]);
         else if (!strcmp(argv[k], "--random"))
             random_rays = true;
+        else if (!strcmp(argv[k], "--split") && k + 1 < argc)
+            grid_options.split = atoi(argv[++k]);
+        else if (!strcmp(argv[k], "--cramer"))
+            test = TRIANGLE_CRAMER;
         else
             what = argv[k];
     }
     if (!what || size < 1 || runs < 1) {
         fprintf(stderr, "usage: grid_vs_embree MESH.obj|sphere:N [--size 512] [--linear-rows 32] [--runs 5] [--knobs 1|2|0] "
-                        "[--random]\n");
+                        "[--random] [--cramer] [--split N]\n");
         return 2;
     }
     float_mesh fm;
@@ -335,7 +343,7 @@ int main(int argc, char **argv)
     fm.v = realloc(fm.v, ((size_t)fm.n_v * 3 + 4) * sizeof *fm.v);
 
     surface_list list;
-    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER); /* the lecture's test, as the README measures it */
+    surface_list_init(&list, SPHERE_ROBUST, test); /* the renderers' watertight test, or --cramer the lecture's */
     for (long k = 0; k < fm.n_tri; k++) {
         const unsigned *t = fm.tri + 3 * k;
         triangle tri = {vertex(&fm, t[0]), vertex(&fm, t[1]), vertex(&fm, t[2])};
@@ -352,8 +360,8 @@ int main(int argc, char **argv)
         for (long k = 0; k < n_rays; k++)
             prim[m][k] = -2;
     }
-    printf("%s: %ld triangles, %dx%d %s rays, %s, median of %d runs\n", what, fm.n_tri, size, size,
-           random_rays ? "random" : "primary", REAL_NAME, runs);
+    printf("%s: %ld triangles, %dx%d %s rays, %s, %s test, median of %d runs\n", what, fm.n_tri, size, size,
+           random_rays ? "random" : "primary", REAL_NAME, test == TRIANGLE_CRAMER ? "Cramer" : "watertight", runs);
 
     /* Embree: a device with one build thread, its memory watched. */
     RTCDevice device = rtcNewDevice("threads=1");
@@ -365,7 +373,7 @@ int main(int argc, char **argv)
     fast_grid g;
     char err[256];
     t0 = now();
-    if (fast_grid_build(&g, &list, fast_grid_default_options(), err, sizeof err) != 0) {
+    if (fast_grid_build(&g, &list, grid_options, err, sizeof err) != 0) {
         fprintf(stderr, "grid_vs_embree: %s\n", err);
         return 1;
     }
@@ -433,7 +441,8 @@ int main(int argc, char **argv)
         for (size_t k = 0; k < sizeof densities / sizeof densities[0]; k++) {
             fast_grid h;
             fast_grid_options opt = {.density = densities[k], .max_cells = FAST_GRID_DEFAULT_MAX_CELLS,
-                                .mailbox = variant != 1, .leap = variant != 2, .cull = variant != 3};
+                                     .mailbox = variant != 1, .leap = variant != 2, .cull = variant != 3,
+                                     .split = grid_options.split};
             t0 = now();
             if (fast_grid_build(&h, &list, opt, err, sizeof err) != 0) {
                 fprintf(stderr, "grid_vs_embree: %s\n", err);

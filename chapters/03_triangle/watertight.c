@@ -3,7 +3,13 @@
 
 #include "03_triangle/degenerate.h"
 
-static real component(vec3 v, int k) { return k == 0 ? v.x : k == 1 ? v.y : v.z; }
+/* v's coordinate along axis k (0: x, 1: y, 2: z), read from an array rather
+ * than chosen by branches: the test reads nine of them per triangle. */
+static inline real component(vec3 v, int k)
+{
+    const real c[3] = {v.x, v.y, v.z};
+    return c[k];
+}
 
 /* The axis along which |d| is largest. */
 static int largest_axis(vec3 d)
@@ -12,7 +18,7 @@ static int largest_axis(vec3 d)
     return x >= y && x >= z ? 0 : y >= z ? 1 : 2;
 }
 
-bool triangle_intersect_watertight(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
+bool watertight_ray_make(ray r, watertight_ray *wr)
 {
     /* snippet: watertight_shear */
     /* 1. Ray space: the axis where d is largest becomes z, the other two follow
@@ -28,7 +34,17 @@ bool triangle_intersect_watertight(const triangle *tri, ray r, real t_min, real 
     }
     /* The shear that maps d to (0, 0, 1): x' = x - S_x z, y' = y - S_y z, z' = S_z z. */
     real sx = component(r.d, kx) / dz, sy = component(r.d, ky) / dz, sz = 1 / dz;
+    /* end snippet */
+    *wr = (watertight_ray){.r = r, .kx = kx, .ky = ky, .kz = kz, .sx = sx, .sy = sy, .sz = sz};
+    return true;
+}
 
+bool watertight_ray_hit(const watertight_ray *wr, const triangle *tri, real t_min, real t_max, triangle_hit *hit)
+{
+    const ray r = wr->r;
+    const int kx = wr->kx, ky = wr->ky, kz = wr->kz;
+    const real sx = wr->sx, sy = wr->sy, sz = wr->sz;
+    /* snippet: watertight_vertices */
     /* 2. The vertices relative to p, sheared: the ray is now the positive z axis. */
     vec3 a = vec3_sub(tri->a, r.p), b = vec3_sub(tri->b, r.p), c = vec3_sub(tri->c, r.p);
     real ax = component(a, kx) - sx * component(a, kz), ay = component(a, ky) - sy * component(a, kz);
@@ -77,4 +93,10 @@ bool triangle_intersect_watertight(const triangle *tri, ray r, real t_min, real 
     *hit = (triangle_hit){.t = t, .beta = v / det, .gamma = w / det};
     return true;
     /* end snippet */
+}
+
+bool triangle_intersect_watertight(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
+{
+    watertight_ray wr;
+    return watertight_ray_make(r, &wr) && watertight_ray_hit(&wr, tri, t_min, t_max, hit);
 }

@@ -57,7 +57,14 @@ bool surface_intersect(const surface *s, const surface_list *list, ray r, real t
         gamma = th.gamma;
         n = triangle_normal(&s->triangle);
     }
-    *hit = (hit_record){
+    *hit = surface_hit_record(s, r, t, n, beta, gamma);
+    return true;
+}
+/* end snippet */
+
+hit_record surface_hit_record(const surface *s, ray r, real t, vec3 n, real beta, real gamma)
+{
+    return (hit_record){
         .t = t,
         .point = ray_at(r, t),
         .normal = n,
@@ -68,6 +75,4 @@ bool surface_intersect(const surface *s, const surface_list *list, ray r, real t
         .beta = beta,
         .gamma = gamma,
     };
-    return true;
 }
-/* end snippet */

@@ -75,4 +75,9 @@ int surface_list_add_triangle(surface_list *list, triangle tri, int shader, int 
  * which only the list knows.  *hit is left unchanged on a miss. */
 bool surface_intersect(const surface *s, const surface_list *list, ray r, real t_min, real t_max, hit_record *hit);
 
+/* The record surface_intersect fills in for a hit of s at t, with the unit
+ * normal n there (and a triangle's beta and gamma; 0 for a sphere), so that a
+ * caller that finds the hit another way (chapter 11's lab) records it alike. */
+hit_record surface_hit_record(const surface *s, ray r, real t, vec3 n, real beta, real gamma);
+
 #endif

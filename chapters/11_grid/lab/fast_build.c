@@ -1,11 +1,11 @@
 /* fast_build.c - chapter 11's lab: the fast grid's cells, with culling boxes and empty-cube distances. */
 #include "11_grid/lab/fast_grid.h"
 
+#include "11_grid/lab/fast_build.h"
+
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
-
-#include "11_grid/grid.h"
 
 fast_grid_options fast_grid_default_options(void)
 {
@@ -13,13 +13,14 @@ fast_grid_options fast_grid_default_options(void)
                           .max_cells = FAST_GRID_DEFAULT_MAX_CELLS,
                           .mailbox = true,
                           .leap = true,
-                          .cull = true};
+                          .cull = true,
+                          .split = FAST_GRID_DEFAULT_SPLIT};
 }
 
 static real get(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
 
 /* A surface's bounding box: a sphere's centre +- R, a triangle's vertices' extremes. */
-static void surface_bounds(const surface *s, vec3 *lo, vec3 *hi)
+void fast_grid_surface_bounds(const surface *s, vec3 *lo, vec3 *hi)
 {
     if (s->kind == SHAPE_SPHERE) {
         real r = real_abs(s->sphere.radius);
@@ -136,7 +137,7 @@ static void cull_box(const fast_grid *g, vec3 lo, vec3 hi, int i, int j, int k, 
 static void bin_surface(fast_grid *g, const surface *s, uint32_t index, uint32_t *count, uint32_t *fill)
 {
     vec3 lo, hi;
-    surface_bounds(s, &lo, &hi);
+    fast_grid_surface_bounds(s, &lo, &hi);
     if (!vec3_is_finite(lo) || !vec3_is_finite(hi))
         return; /* unbinned: tested for every ray */
     int first[3], last[3];
@@ -159,12 +160,58 @@ static void bin_surface(fast_grid *g, const surface *s, uint32_t index, uint32_t
             }
 }
 
+/* snippet: resolution */
+/* Cells along each axis: about density x N cells in all, as cubic as the box
+ * allows (n_a proportional to the box's extent e_a).  An axis of zero extent
+ * (a flat scene) gets one cell and the others share the count. */
+void fast_grid_resolution(const double extent[3], long surfaces, double density, long max_cells, int n[3])
+{
+    /* s cells per unit length along every spanned axis: prod (e_a s) = wanted.
+     * An axis too thin for one cell at that spacing (e_a s < 1/2) gets one,
+     * and the others share the cells: so a box that is thin but not quite
+     * flat (a cell of floor in a grid of two levels) is not cut into
+     * millions of slivers. */
+    double wanted = fmin(density * (double)surfaces, (double)max_cells), s = 0;
+    bool spans[3];
+    for (int a = 0; a < 3; a++)
+        spans[a] = extent[a] > 0;
+    int spanned;
+    for (bool thinned = true; thinned;) {
+        double volume = 1;
+        spanned = 0;
+        for (int a = 0; a < 3; a++)
+            if (spans[a]) {
+                volume *= extent[a];
+                spanned++;
+            }
+        s = spanned ? fmin(pow(fmax(wanted, 1) / volume, 1.0 / spanned), 1e300) : 0;
+        thinned = false;
+        for (int a = 0; a < 3; a++)
+            if (spans[a] && spanned > 1 && extent[a] * s < 0.5) {
+                spans[a] = false;
+                thinned = true;
+            }
+    }
+    for (;;) {
+        double cells = 1;
+        for (int a = 0; a < 3; a++) {
+            double na = spans[a] ? fmin(fmax(round(extent[a] * s), 1), 1 << 20) : 1;
+            n[a] = (int)na;
+            cells *= na;
+        }
+        if (cells <= (double)max_cells)
+            return;
+        s *= 0.99 * pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1));
+    }
+}
+/* end snippet */
+
 /* snippet: empty_distances */
 /* empty[8 c + o]: for a ray in cell c heading into octant o (bit 0: x
  * decreasing, bit 1: y, bit 2: z), the side s of the largest cube of empty
  * cells that has c as its corner and lies ahead of c in that octant: cells
  * i .. i + (s - 1) sgn_x along x, and so along y and z.  0 for a cell with
- * surfaces; at most 255; cells beyond the grid count as empty (a ray that
+ * surfaces; at most g->beyond (255, or less for a small grid); cells beyond the grid count as empty (a ray that
  * leaves the grid is done).  The classic "largest empty square" recurrence in
  * 3D: s = 1 + the least s of the 7 neighbours one step ahead, filled in the
  * order in which those neighbours come first. */
@@ -182,7 +229,7 @@ static void empty_distances(fast_grid *g)
                     const long c = i + (long)n[0] * (j + (long)n[1] * k);
                     int side = 0;
                     if (g->start[c + 1] == g->start[c]) {
-                        int least = 254;
+                        int least = g->beyond - 1;
                         for (int corner = 1; corner < 8; corner++) {
                             int ii = i + (corner & 1 ? sx : 0), jj = j + (corner & 2 ? sy : 0),
                                 kk = k + (corner & 4 ? sz : 0);
@@ -200,11 +247,92 @@ static void empty_distances(fast_grid *g)
 /* end snippet */
 
 /* The entries of the table of cell boundaries: n_a + 1 planes per axis and
- * PLANES_BEYOND more on either side (the largest cube a leap takes). */
-#define PLANES_BEYOND 255
+ * g->beyond more on either side (the largest cube a leap takes). */
 static size_t plane_count(const fast_grid *g)
 {
-    return (size_t)g->n[0] + g->n[1] + g->n[2] + 3 * (1 + 2 * PLANES_BEYOND);
+    return (size_t)g->n[0] + g->n[1] + g->n[2] + 3 * (1 + 2 * (size_t)g->beyond);
+}
+
+int fast_grid_fill(fast_grid *g, const uint32_t *subset, long n, bool leap, char *err, size_t err_size)
+{
+    vec3 size = vec3_sub(g->hi, g->lo);
+    g->cell = vec3_make(size.x / (real)g->n[0], size.y / (real)g->n[1], size.z / (real)g->n[2]);
+    g->inv_cell = vec3_make(1 / g->cell.x, 1 / g->cell.y, 1 / g->cell.z);
+    for (int a = 0; a < 3; a++) {
+        g->lo_a[a] = get(g->lo, a);
+        g->cell_a[a] = get(g->cell, a);
+        g->inv_cell_a[a] = get(g->inv_cell, a);
+        g->per_unit[a] = FAST_GRID_BOX_STEPS / (g->cell_a[a] + 2 * g->margin);
+        g->frame_step[a] = (g->cell_a[a] + 2 * g->margin) / FAST_GRID_BOX_STEPS;
+    }
+    g->n_cells = (long)g->n[0] * g->n[1] * g->n[2];
+    /* The cell boundaries, one table for the three axes: the march reads them
+     * instead of computing lo_a + k cell_a at every crossing (the same values).
+     * A leap looks up to `beyond` cells beyond the grid's faces: the table goes
+     * on that far on both sides. */
+    int widest = g->n[0] > g->n[1] ? g->n[0] : g->n[1];
+    widest = widest > g->n[2] ? widest : g->n[2];
+    g->beyond = widest < 255 ? widest + 1 : 255;
+    real *planes = malloc(plane_count(g) * sizeof *planes);
+    if (!planes)
+        goto out_of_memory;
+    g->plane[0] = planes + g->beyond;
+    g->plane[1] = g->plane[0] + g->n[0] + 1 + 2 * g->beyond;
+    g->plane[2] = g->plane[1] + g->n[1] + 1 + 2 * g->beyond;
+    for (int a = 0; a < 3; a++)
+        for (int k = -g->beyond; k <= g->n[a] + g->beyond; k++)
+            g->plane[a][k] = g->lo_a[a] + (real)k * g->cell_a[a];
+
+    /* Two passes over the surfaces: count each cell's surfaces, then, with the
+     * offsets summed from the counts, write them in increasing index.  A cell
+     * lists each surface at most once, so its count fits 32 bits; the same
+     * array then holds where the next index of each cell goes. */
+    uint32_t *count = calloc((size_t)g->n_cells, sizeof *count);
+    g->start = malloc(((size_t)g->n_cells + 1) * sizeof *g->start);
+    if (!count || !g->start) {
+        free(count);
+        goto out_of_memory;
+    }
+    for (long q = 0; q < n; q++)
+        bin_surface(g, &g->list->items[subset ? subset[q] : q], subset ? subset[q] : (uint32_t)q, count, NULL);
+    uint64_t total = 0;
+    for (long c = 0; c < g->n_cells; c++) {
+        g->start[c] = (uint32_t)total;
+        total += count[c];
+        if (total > UINT32_MAX) {
+            free(count);
+            snprintf(err, err_size, "grid: more than 2^32 cell entries; lower the density or the cell cap");
+            return -1;
+        }
+    }
+    g->start[g->n_cells] = (uint32_t)total;
+    g->n_refs = (long)total;
+    g->refs = malloc((total ? (size_t)total : 1) * sizeof *g->refs);
+    if (!g->refs) {
+        free(count);
+        goto out_of_memory;
+    }
+    uint32_t *fill = count;
+    for (long c = 0; c < g->n_cells; c++)
+        fill[c] = g->start[c];
+    for (long q = 0; q < n; q++)
+        bin_surface(g, &g->list->items[subset ? subset[q] : q], subset ? subset[q] : (uint32_t)q, NULL, fill);
+    free(fill);
+    /* the most the build held at once: the grid and the fill array */
+    g->peak_bytes = fast_grid_memory(g) + (size_t)g->n_cells * sizeof *fill;
+    if (leap) {
+        g->empty = malloc(8 * (size_t)g->n_cells);
+        if (!g->empty)
+            goto out_of_memory;
+        empty_distances(g);
+        size_t now = fast_grid_memory(g); /* the fill array is gone by now */
+        g->peak_bytes = now > g->peak_bytes ? now : g->peak_bytes;
+    }
+    return 0;
+
+out_of_memory:
+    snprintf(err, err_size, "grid: out of memory");
+    return -1;
 }
 
 int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options opt, char *err, size_t err_size)
@@ -220,7 +348,7 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
     long binned = 0;
     for (int k = 0; k < list->n; k++) {
         vec3 slo, shi;
-        surface_bounds(&list->items[k], &slo, &shi);
+        fast_grid_surface_bounds(&list->items[k], &slo, &shi);
         if (vec3_is_finite(slo) && vec3_is_finite(shi)) {
             lo = vec3_make(real_fmin(lo.x, slo.x), real_fmin(lo.y, slo.y), real_fmin(lo.z, slo.z));
             hi = vec3_make(real_fmax(hi.x, shi.x), real_fmax(hi.y, shi.y), real_fmax(hi.z, shi.z));
@@ -236,7 +364,7 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
         long u = 0;
         for (int k = 0; k < list->n; k++) {
             vec3 slo, shi;
-            surface_bounds(&list->items[k], &slo, &shi);
+            fast_grid_surface_bounds(&list->items[k], &slo, &shi);
             if (!(vec3_is_finite(slo) && vec3_is_finite(shi)))
                 g->unbinned[u++] = (uint32_t)k;
         }
@@ -256,81 +384,15 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
         g->margin = 1; /* every surface is a point at the origin */
     /* end snippet */
     double extent[3] = {(double)hi.x - (double)lo.x, (double)hi.y - (double)lo.y, (double)hi.z - (double)lo.z};
-    grid_resolution(extent, binned, opt.density, opt.max_cells, g->n); /* the lesson's */
+    fast_grid_resolution(extent, binned, opt.density, opt.max_cells, g->n);
     g->lo = widen(lo, -g->margin);
     g->hi = widen(hi, g->margin);
-    vec3 size = vec3_sub(g->hi, g->lo);
-    g->cell = vec3_make(size.x / (real)g->n[0], size.y / (real)g->n[1], size.z / (real)g->n[2]);
-    g->inv_cell = vec3_make(1 / g->cell.x, 1 / g->cell.y, 1 / g->cell.z);
-    for (int a = 0; a < 3; a++) {
-        g->lo_a[a] = get(g->lo, a);
-        g->cell_a[a] = get(g->cell, a);
-        g->inv_cell_a[a] = get(g->inv_cell, a);
-        g->per_unit[a] = FAST_GRID_BOX_STEPS / (g->cell_a[a] + 2 * g->margin);
-        g->frame_step[a] = (g->cell_a[a] + 2 * g->margin) / FAST_GRID_BOX_STEPS;
-    }
-    g->n_cells = (long)g->n[0] * g->n[1] * g->n[2];
-    /* The cell boundaries, one table for the three axes: the march reads them
-     * instead of computing lo_a + k cell_a at every crossing (the same values).
-     * A leap looks up to 255 cells beyond the grid's faces: the table goes on
-     * that far on both sides. */
-    real *planes = malloc(plane_count(g) * sizeof *planes);
-    if (!planes)
-        goto out_of_memory;
-    g->plane[0] = planes + PLANES_BEYOND;
-    g->plane[1] = g->plane[0] + g->n[0] + 1 + 2 * PLANES_BEYOND;
-    g->plane[2] = g->plane[1] + g->n[1] + 1 + 2 * PLANES_BEYOND;
-    for (int a = 0; a < 3; a++)
-        for (int k = -PLANES_BEYOND; k <= g->n[a] + PLANES_BEYOND; k++)
-            g->plane[a][k] = g->lo_a[a] + (real)k * g->cell_a[a];
-
-    /* Two passes over the surfaces: count each cell's surfaces, then, with the
-     * offsets summed from the counts, write them in increasing index.  A cell
-     * lists each surface at most once, so its count fits 32 bits; the same
-     * array then holds where the next index of each cell goes. */
-    uint32_t *count = calloc((size_t)g->n_cells, sizeof *count);
-    g->start = malloc(((size_t)g->n_cells + 1) * sizeof *g->start);
-    if (!count || !g->start) {
-        free(count);
-        goto out_of_memory;
-    }
-    for (int k = 0; k < list->n; k++)
-        bin_surface(g, &list->items[k], (uint32_t)k, count, NULL);
-    uint64_t total = 0;
-    for (long c = 0; c < g->n_cells; c++) {
-        g->start[c] = (uint32_t)total;
-        total += count[c];
-        if (total > UINT32_MAX) {
-            free(count);
-            fast_grid_free(g);
-            snprintf(err, err_size, "grid: more than 2^32 cell entries; lower the density or the cell cap");
-            return -1;
-        }
-    }
-    g->start[g->n_cells] = (uint32_t)total;
-    g->n_refs = (long)total;
-    g->refs = malloc((total ? (size_t)total : 1) * sizeof *g->refs);
-    if (!g->refs) {
-        free(count);
-        goto out_of_memory;
-    }
-    uint32_t *fill = count;
-    for (long c = 0; c < g->n_cells; c++)
-        fill[c] = g->start[c];
-    for (int k = 0; k < list->n; k++)
-        bin_surface(g, &list->items[k], (uint32_t)k, NULL, fill);
-    free(fill);
-    /* the most the build held at once: the grid and the fill array */
-    g->peak_bytes = fast_grid_memory(g) + (size_t)g->n_cells * sizeof *fill;
-    if (opt.leap) {
-        g->empty = malloc(8 * (size_t)g->n_cells);
-        if (!g->empty)
-            goto out_of_memory;
-        empty_distances(g);
-        size_t now = fast_grid_memory(g); /* the fill array is gone by now */
-        g->peak_bytes = now > g->peak_bytes ? now : g->peak_bytes;
-    }
-    return 0;
+    int status = fast_grid_fill(g, NULL, list->n, opt.leap, err, err_size);
+    if (status == 0)
+        status = fast_grid_split(g, opt, err, err_size);
+    if (status != 0)
+        fast_grid_free(g);
+    return status;
 
 out_of_memory:
     fast_grid_free(g);
@@ -345,7 +407,12 @@ void fast_grid_free(fast_grid *g)
     free(g->unbinned);
     free(g->empty);
     if (g->plane[0])
-        free(g->plane[0] - PLANES_BEYOND);
+        free(g->plane[0] - g->beyond);
+    for (long k = 0; k < g->n_subs; k++)
+        fast_grid_free(&g->subs[k]);
+    free(g->subs);
+    g->subs = NULL;
+    g->n_subs = 0;
     g->plane[0] = g->plane[1] = g->plane[2] = NULL;
     g->start = g->unbinned = NULL;
     g->refs = NULL;
@@ -358,5 +425,5 @@ size_t fast_grid_memory(const fast_grid *g)
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
     return sizeof *g + (cells + (size_t)g->n_unbinned) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof *g->refs +
            (g->empty ? 8 * (size_t)g->n_cells : 0) +
-           (g->plane[0] ? plane_count(g) * sizeof(real) : 0);
+           (g->plane[0] ? plane_count(g) * sizeof(real) : 0) + fast_grid_subs_memory(g);
 }

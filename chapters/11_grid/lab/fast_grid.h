@@ -5,9 +5,12 @@
  * query, bit for bit, with more machinery: a triangle is listed only in the
  * cells it touches (a separating-axis test), each entry carries the part of
  * the surface's box inside its cell in bytes (culling), a mailbox skips
- * surfaces already tested along the ray, and a ray in an empty cell leaps
+ * surfaces already tested along the ray, a ray in an empty cell leaps
  * over the largest cube of empty cells ahead of it in one step (Cohen and
- * Sheffer's proximity clouds, a cube per octant of directions).
+ * Sheffer's proximity clouds, a cube per octant of directions), and a cell
+ * that lists many surfaces gets a grid of its own (two levels, Kalojanov,
+ * Billeter and Slusallek 2011).  The triangles of a watertight list take the
+ * watertight test with its ray part made once per ray.
  *
  * fast_grid_intersect returns what the lesson's grid_intersect and chapter
  * 04's surfaces_intersect return: the same surface and bit for bit the same
@@ -30,11 +33,17 @@ typedef struct {
     bool mailbox;    /* skip a surface already tested along the ray */
     bool leap;       /* leap over blocks of empty cells in one step */
     bool cull;       /* test a surface only when the ray passes through its box */
+    int split;       /* a cell that lists more surfaces than this gets a grid of its own; 0: one level */
 } fast_grid_options;
 /* end snippet */
 
 #define FAST_GRID_DEFAULT_DENSITY 2.0
 #define FAST_GRID_DEFAULT_MAX_CELLS (1L << 24)
+#define FAST_GRID_DEFAULT_SPLIT 48
+
+/* An entry whose `surface` is FAST_GRID_SUB + s stands for the cell's own
+ * grid, subs[s]: the only entry of a cell that has one. */
+#define FAST_GRID_SUB 0x80000000u
 
 /* A surface's box inside a cell is kept in steps of 1/FAST_GRID_BOX_STEPS of the
  * cell's frame, one byte per side; 127 leaves each byte's top bit free, so
@@ -51,7 +60,8 @@ typedef struct {
                        * the march reads all eight at once); zeros when culling is off */
 } fast_grid_entry;
 
-typedef struct {
+typedef struct fast_grid fast_grid;
+struct fast_grid {
     const surface_list *list; /* the surfaces; the grid holds their indices only */
     vec3 lo, hi;              /* the grid's box: the surfaces' bounding box, widened by `margin` */
     vec3 cell;                /* the size of one cell along x, y and z */
@@ -61,7 +71,8 @@ typedef struct {
     real per_unit[3];         /* FAST_GRID_BOX_STEPS / (cell_a + 2 margin): steps of a cell's frame per unit of length */
     real frame_step[3];       /* (cell_a + 2 margin) / FAST_GRID_BOX_STEPS: the length of one step of a cell's frame */
     real *plane[3];           /* plane[a][k] = lo_a + k cell_a: the cell boundaries along axis a, for
-                               * k = -255 .. n_a + 255 (a leap's cube may reach beyond the grid) */
+                               * k = -beyond .. n_a + beyond (a leap's cube may reach beyond the grid) */
+    int beyond;               /* the largest side of a leap's cube: 255, or the largest n_a + 1 if less */
     int n[3];                 /* cells along x, y and z */
     /* The cells' lists, flat (compressed sparse rows): the surfaces of cell
      * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],
@@ -73,13 +84,16 @@ typedef struct {
                                * cells ahead in octant o holds nothing; 0 for a cell with
                                * surfaces.  NULL when leaping is off */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
+    fast_grid *subs;          /* the grids of the cells that have their own (two levels), over the
+                               * cell's box and the surfaces it lists; they have no subs themselves */
+    long n_subs;
     long n_cells, n_refs, n_unbinned;
     real margin;              /* every surface's box is widened by this before it is binned */
     real scale;               /* the largest coordinate of the box, for the rounding bounds */
     bool mailbox;
     bool cull;                /* refs[].box is filled in */
     size_t peak_bytes;        /* the most memory the build held at once */
-} fast_grid;
+};
 /* end snippet */
 
 /* What a march did: added to by fast_grid_intersect_counted. */
@@ -89,7 +103,8 @@ typedef struct {
     uint64_t culled; /* surfaces of those cells whose boxes the ray passes by */
 } fast_grid_counts;
 
-/* The default knobs: FAST_GRID_DEFAULT_DENSITY, FAST_GRID_DEFAULT_MAX_CELLS, mailboxing, leaping and culling on. */
+/* The default knobs: FAST_GRID_DEFAULT_DENSITY, FAST_GRID_DEFAULT_MAX_CELLS, mailboxing, leaping and culling
+ * on, two levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell. */
 fast_grid_options fast_grid_default_options(void);
 
 /* Builds the grid of `list`, which must outlive it and not change.  Returns

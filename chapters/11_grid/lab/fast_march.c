@@ -1,13 +1,10 @@
-/* fast_march.c - chapter 11's lab: the fast grid's march: culling, mailbox, leaps, batches. */
+/* fast_march.c - chapter 11's lab: the fast grid's march: mailbox, leaps, batches, two levels. */
 #include "11_grid/lab/fast_grid.h"
 
 #include <math.h>
 
-#ifdef RT_REAL_FLOAT
-#define real_next_up(x) nextafterf((x), INFINITY)
-#else
-#define real_next_up(x) nextafter((x), INFINITY)
-#endif
+#include "11_grid/lab/fast_cull.h"
+#include "11_grid/lab/fast_search.h"
 
 /* The mailbox: the last surfaces tested along this ray, one slot per value
  * of (index mod MAILBOX).  A surface found in its slot was tested already
@@ -15,130 +12,11 @@
  * test of the first, never a wrong answer. */
 #define MAILBOX 32
 
-/* A cell's entries are sifted this many at a time. */
+/* A cell's entries are sifted this many at a time, by the ray's span in the
+ * cell (cull_span) when the cell lists at least SIFT_FROM of them; fewer go
+ * straight to passes_box. */
 #define BATCH 32
-
-/* The search so far: the best hit, and the window a new hit must fall in. */
-typedef struct {
-    const surface_list *list;
-    ray r;
-    real t_min;
-    real best_t;     /* the t of the best hit, t_max before any */
-    real upper;      /* surfaces are asked for hits in (t_min, upper) */
-    int best;        /* its surface, -1 before any */
-    hit_record hit;  /* its record */
-    uint64_t tests;
-} search;
-
-/* snippet: test_surface */
-/* Surface k against the ray.  The linear scan keeps the first surface in
- * the list among those hit at the smallest t; the grid meets the surfaces
- * in another order, so it also asks for hits AT the best t so far (upper is
- * the next real above it) and takes one there when its index is smaller. */
-static inline void test_surface(search *s, uint32_t k)
-{
-    hit_record candidate;
-    s->tests++;
-    if (surface_intersect(&s->list->items[k], s->list, s->r, s->t_min, s->upper, &candidate) &&
-        (candidate.t < s->best_t || (int)k < s->best)) {
-        s->best_t = candidate.t;
-        s->upper = real_next_up(candidate.t);
-        s->best = (int)k;
-        s->hit = candidate;
-        s->hit.surface = (int)k;
-    }
-}
-/* end snippet */
-
-/* snippet: cull */
-/* Whether the ray can meet the part of a surface's box inside the cell,
- * `box` (cull_box: steps of the cell's frame), at some t in (t_min, upper):
- * the slabs of the three axes overlap there.  Along axis a the frame's low
- * side is crossed at base_a and each step adds unit_a, so side q is crossed
- * at base_a + q unit_a; the side the ray enters by is box[near_a] (box[a]
- * for d_a > 0, box[3 + a] for d_a < 0) and it leaves by box[far_a].  Each
- * crossing is widened by the axis's rounding slack: enter[a] = base_a -
- * slack_a, leave[a] = base_a + slack_a.  A NaN never culls, so that a
- * surface surface_intersect would report is never culled.  Written out
- * axis by axis: it runs for every surface of every cell the ray visits. */
-typedef struct {
-    real enter[3], leave[3], unit[3];
-    int near[3], far[3];
-} cull_frame;
-
-static inline bool passes_box(const uint8_t box[8], const cull_frame *f, real t_min, real upper)
-{
-    real x0 = f->enter[0] + (real)box[f->near[0]] * f->unit[0], x1 = f->leave[0] + (real)box[f->far[0]] * f->unit[0];
-    real y0 = f->enter[1] + (real)box[f->near[1]] * f->unit[1], y1 = f->leave[1] + (real)box[f->far[1]] * f->unit[1];
-    real z0 = f->enter[2] + (real)box[f->near[2]] * f->unit[2], z1 = f->leave[2] + (real)box[f->far[2]] * f->unit[2];
-    real t_in = x0 > t_min ? x0 : t_min, t_out = x1 < upper ? x1 : upper;
-    t_in = y0 > t_in ? y0 : t_in;
-    t_out = y1 < t_out ? y1 : t_out;
-    t_in = z0 > t_in ? z0 : t_in;
-    t_out = z1 < t_out ? z1 : t_out;
-    return !(t_in > t_out);
-}
-/* end snippet */
-
-/* The cull frame of cell i (its base_a), and the span of the ray in it:
- * along each axis, the steps of the frame that the ray's points at t in
- * (t_min, upper) inside the frame cover, widened by one step and by the
- * rounding of those points, lo_a .. hi_a, clamped to 0 .. FAST_GRID_BOX_STEPS.
- * A box that ends before the span or starts after it, along any axis, is
- * passed by: a cheaper test in integers that settles most boxes before
- * passes_box.  A NaN leaves the span whole.  The span is returned packed
- * for box_beside_span: hi_a in byte a of *span_hi, lo_a in byte 3 + a of
- * *span_lo. */
-static inline void cull_span(cull_frame *f, const fast_grid *g, const int i[3], const real p[3], const real d[3],
-                             const real inv_d[3], const real cull_slack[3], real reach, real d_max, real t_min,
-                             real upper, uint64_t *span_lo, uint64_t *span_hi)
-{
-    const real top = FAST_GRID_BOX_STEPS;
-    real t_in = t_min, t_out = upper, origin[3];
-    for (int a = 0; a < 3; a++) {
-        origin[a] = g->plane[a][i[a]] - g->margin;
-        real base = inv_d[a] != 0 ? (origin[a] - p[a]) * inv_d[a] : 0;
-        f->enter[a] = base - cull_slack[a];
-        f->leave[a] = base + cull_slack[a];
-        real t0 = f->enter[a] + (f->near[a] < 3 ? 0 : top) * f->unit[a];
-        real t1 = f->leave[a] + (f->far[a] < 3 ? 0 : top) * f->unit[a];
-        t_in = t0 > t_in ? t0 : t_in;
-        t_out = t1 < t_out ? t1 : t_out;
-    }
-    const real t_abs = real_abs(t_in) > real_abs(t_out) ? real_abs(t_in) : real_abs(t_out);
-    const real rounding = reach + 16 * REAL_EPSILON * t_abs * d_max;
-    uint64_t packed_lo = 0, packed_hi = 0;
-    for (int a = 0; a < 3; a++) {
-        real per_unit = g->per_unit[a];
-        real q0 = (p[a] + t_in * d[a] - origin[a]) * per_unit, q1 = (p[a] + t_out * d[a] - origin[a]) * per_unit;
-        real widen = 1 + rounding * per_unit;
-        real q_lo = (q0 < q1 ? q0 : q1) - widen, q_hi = (q0 < q1 ? q1 : q0) + widen;
-        int span_a_lo = q_lo > 0 && q_lo < top ? (int)q_lo : q_lo >= top ? FAST_GRID_BOX_STEPS : 0; /* NaN: 0 */
-        int span_a_hi = q_hi < top - 1 && q_hi > 0 ? (int)q_hi + 1 : q_hi <= 0 ? 0 : FAST_GRID_BOX_STEPS; /* NaN: top */
-        packed_lo |= (uint64_t)span_a_lo << (8 * (3 + a));
-        packed_hi |= (uint64_t)span_a_hi << (8 * a);
-    }
-    *span_lo = packed_lo;
-    *span_hi = packed_hi;
-}
-
-/* Whether the box of an entry lies beside the span along some axis: its
- * high side below the span's low end (hi_a < lo_a), or its low side above
- * the span's high end (box lo_a > span hi_a).  All six comparisons at once,
- * bytewise in one 64-bit word ("SIMD within a register"): with x and y
- * bytes of 0 .. 127, byte (x | 128) - y has its top bit set exactly when
- * x >= y, and never borrows from the next byte.  The box's bytes are lo_x,
- * lo_y, lo_z, hi_x, hi_y, hi_z: bytes 0-2 compare span hi >= box lo, bytes
- * 3-5 box hi >= span lo. */
-static inline bool box_beside_span(const uint8_t box[8], uint64_t span_lo, uint64_t span_hi)
-{
-    const uint64_t low3 = 0xFFFFFFull, high3 = 0xFFFFFF000000ull, tops = 0x808080808080ull;
-    /* byte k of the box in byte k of b: compilers make this one load */
-    uint64_t b = (uint64_t)box[0] | (uint64_t)box[1] << 8 | (uint64_t)box[2] << 16 | (uint64_t)box[3] << 24 |
-                 (uint64_t)box[4] << 32 | (uint64_t)box[5] << 40 | (uint64_t)box[6] << 48 | (uint64_t)box[7] << 56;
-    uint64_t x = (b & high3) | span_hi, y = (b & low3) | span_lo;
-    return (((x | tops) - y) & tops) != tops;
-}
+#define SIFT_FROM 8
 
 /* snippet: dda */
 /* The march's state (Amanatides and Woo): the cell the ray is in, the
@@ -258,151 +136,221 @@ static inline bool dda_leap(const fast_grid *g, dda *m, int side, const real p[3
 }
 /* end snippet */
 
-bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit, fast_grid_counts *counts)
-{
-    search s = {.list = g->list, .r = r, .t_min = t_min, .best_t = t_max, .upper = t_max, .best = -1};
-    uint64_t cells = 0, culled = 0;
-    for (long u = 0; u < g->n_unbinned; u++)
-        test_surface(&s, g->unbinned[u]);
-    if (g->n_cells == 0)
-        goto done;
-
-    /* snippet: enter */
-    /* Where the ray enters the grid's box: the slabs lo_a <= p_a + t d_a <= hi_a
-     * of the three axes, within (t_min, t_max).  A component d_a of +0 or -0
-     * (or so small that 1/d_a overflows) never crosses a boundary of its
-     * axis: the ray stays in one slab, or misses the box.
-     * Rounding moves computed crossings by up to a few REAL_EPSILON times the
-     * coordinates involved; `slack` bounds that in t per axis, and the march
-     * errs towards visiting a cell too many, never one too few. */
-    const real p[3] = {r.p.x, r.p.y, r.p.z}, d[3] = {r.d.x, r.d.y, r.d.z};
-    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, hi[3] = {g->hi.x, g->hi.y, g->hi.z};
-    const real reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
-    real inv_d[3], slack[3], t0 = t_min, t1 = t_max;
+/* What the march needs of the ray, made once per ray and shared by both
+ * levels of grid (a sub-grid has its parent's scale, so the same rounding
+ * bounds). */
+typedef struct {
+    real p[3], d[3];
+    real inv_d[3];      /* 1 / d_a; 0 where d_a is +0, -0 or so small that 1 / d_a overflows */
+    bool parallel[3];   /* those axes: the ray never crosses a boundary of theirs */
+    real slack[3];      /* the rounding of a computed crossing of axis a, in t; 0 where inv_d_a = 0 */
+    real cull_slack[3]; /* the same, infinite where inv_d_a = 0 (culling then lets every box pass) */
     int near[3], far[3];
+    real reach, d_max;
+    long octant;        /* the octant of d, as g->empty counts it (an axis the ray never crosses may take either) */
+} ray_frame;
+
+/* snippet: enter */
+/* Rounding moves computed crossings by up to a few REAL_EPSILON times the
+ * coordinates involved; `slack` bounds that in t per axis, and the march
+ * errs towards visiting a cell too many, never one too few.  A component
+ * d_a of +0 or -0 (or so small that 1/d_a overflows) never crosses a
+ * boundary of its axis: the ray stays in one slab, or misses the box. */
+static inline void frame_of(ray_frame *f, const fast_grid *g, ray r)
+{
+    const real p[3] = {r.p.x, r.p.y, r.p.z}, d[3] = {r.d.x, r.d.y, r.d.z};
+    f->reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
+    f->d_max = vec3_max_abs(r.d);
     for (int a = 0; a < 3; a++) {
-        inv_d[a] = 1 / d[a];
-        near[a] = d[a] < 0 ? 3 + a : a;
-        far[a] = d[a] < 0 ? a : 3 + a;
-        if (!isfinite(inv_d[a])) { /* d_a = +0 or -0, or tiny */
-            inv_d[a] = slack[a] = 0;
-            if (!(p[a] >= lo[a] && p[a] <= hi[a]))
-                goto done;
+        f->p[a] = p[a];
+        f->d[a] = d[a];
+        f->inv_d[a] = 1 / d[a];
+        f->near[a] = d[a] < 0 ? 3 + a : a;
+        f->far[a] = d[a] < 0 ? a : 3 + a;
+        f->parallel[a] = !isfinite(f->inv_d[a]); /* d_a = +0 or -0, or tiny */
+        if (f->parallel[a])
+            f->inv_d[a] = 0;
+        f->slack[a] = f->reach * real_abs(f->inv_d[a]);
+        f->cull_slack[a] = f->inv_d[a] != 0 ? f->slack[a] : REAL_INFINITY;
+    }
+    f->octant = (f->inv_d[0] < 0) | (f->inv_d[1] < 0) << 1 | (f->inv_d[2] < 0) << 2;
+}
+
+/* Where the ray enters the grid's box: the slabs lo_a <= p_a + t d_a <= hi_a
+ * of the three axes, within (t_min, upper), and the first cell: the one
+ * holding p + t0 d, moved back along the ray by the rounding of that point,
+ * and clamped to the grid.  False when the ray misses the box there. */
+static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, real upper, dda *m)
+{
+    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, hi[3] = {g->hi.x, g->hi.y, g->hi.z};
+    real t0 = t_min, t1 = upper;
+    for (int a = 0; a < 3; a++) {
+        if (f->parallel[a]) {
+            if (!(f->p[a] >= lo[a] && f->p[a] <= hi[a]))
+                return false;
             continue;
         }
-        slack[a] = reach * real_abs(inv_d[a]);
-        real near = (lo[a] - p[a]) * inv_d[a], far = (hi[a] - p[a]) * inv_d[a];
+        real near = (lo[a] - f->p[a]) * f->inv_d[a], far = (hi[a] - f->p[a]) * f->inv_d[a];
         if (near > far) {
             real swap = near;
             near = far;
             far = swap;
         }
-        near -= slack[a];
-        far += slack[a];
+        near -= f->slack[a];
+        far += f->slack[a];
         t0 = near > t0 ? near : t0; /* fmax and fmin, inline; a NaN is passed over as they do */
         t1 = far < t1 ? far : t1;
     }
     if (!(t0 <= t1)) /* misses the box, or the window ends before it */
-        goto done;
-
-    /* The first cell: the one holding p + t0 d, moved back along the ray by
-     * the rounding of that point, and clamped to the grid. */
-    dda m;
-    const real d_max = vec3_max_abs(r.d);
-    const real back = reach + 16 * REAL_EPSILON * real_abs(t0) * d_max;
-    const real inv_cell[3] = {g->inv_cell.x, g->inv_cell.y, g->inv_cell.z};
+        return false;
+    const real back = f->reach + 16 * REAL_EPSILON * real_abs(t0) * f->d_max;
     for (int a = 0; a < 3; a++) {
-        m.step[a] = inv_d[a] > 0 ? 1 : inv_d[a] < 0 ? -1 : 0;
-        real x = inv_d[a] != 0 ? p[a] + t0 * d[a] : p[a];
-        m.i[a] = first_cell(g, a, (x - lo[a] - (real)m.step[a] * back) * inv_cell[a]);
-        m.next[a] = m.step[a] ? crossing(g, a, m.i[a] + (m.step[a] > 0), p, inv_d) : REAL_INFINITY;
+        m->step[a] = f->inv_d[a] > 0 ? 1 : f->inv_d[a] < 0 ? -1 : 0;
+        real x = f->inv_d[a] != 0 ? f->p[a] + t0 * f->d[a] : f->p[a];
+        m->i[a] = first_cell(g, a, (x - lo[a] - (real)m->step[a] * back) * g->inv_cell_a[a]);
+        m->next[a] = m->step[a] ? crossing(g, a, m->i[a] + (m->step[a] > 0), f->p, f->inv_d) : REAL_INFINITY;
     }
-    m.cell = m.i[0] + (long)g->n[0] * (m.i[1] + (long)g->n[1] * m.i[2]);
-    /* the octant of d, as g->empty counts it (an axis the ray never crosses may take either) */
-    const long octant = (m.step[0] < 0) | (m.step[1] < 0) << 1 | (m.step[2] < 0) << 2;
-    /* end snippet */
+    m->cell = m->i[0] + (long)g->n[0] * (m->i[1] + (long)g->n[1] * m->i[2]);
+    return true;
+}
+/* end snippet */
 
-    /* snippet: march */
+/* What one ray's march keeps besides the search: the mailbox, the counts. */
+typedef struct {
     uint32_t mailbox[MAILBOX];
-    for (int b = 0; b < MAILBOX; b++)
-        mailbox[b] = UINT32_MAX;
-    /* culling: the frame of a cell (the cell widened by the margin) along
-     * axis a is crossed at base_a = (its low side - p_a) / d_a, and a step
-     * of it adds unit_a; on an axis the ray is parallel to, both are 0 and
-     * an infinite slack lets every box pass */
-    cull_frame f = {.unit = {0}}; /* the rest is set before use */
-    real cull_slack[3];
-    for (int a = 0; a < 3; a++) {
-        f.unit[a] = g->frame_step[a] * inv_d[a];
-        f.near[a] = near[a];
-        f.far[a] = far[a];
-        cull_slack[a] = inv_d[a] != 0 ? slack[a] : REAL_INFINITY;
+    uint64_t cells, culled;
+} march_state;
+
+static void march(const fast_grid *g, search *s, const ray_frame *rf, march_state *ms);
+
+/* One entry of the cell: skipped when its surface was tested already along
+ * the ray, culled when the ray passes by its box in the cell, else tested. */
+static inline void consider(const fast_grid_entry *entry, const cull_frame *f, bool cull, bool use_mailbox,
+                            search *s, march_state *ms)
+{
+    const uint32_t k = entry->surface;
+    if (use_mailbox && ms->mailbox[k % MAILBOX] == k)
+        return; /* tested already along this ray */
+    if (cull && !passes_box(entry->box, f, s->t_min, s->upper)) {
+        ms->culled++;
+        return; /* the ray passes by its box in this cell */
     }
+    if (use_mailbox)
+        ms->mailbox[k % MAILBOX] = k;
+    test_surface(s, k);
+}
+
+/* snippet: cell */
+/* Every surface of cell m->cell, each tested over the whole window
+ * (t_min, best): a hit beyond this cell is kept too, and counts once the
+ * march reaches its cell.  A cell of SIFT_FROM entries or more goes in
+ * batches of up to BATCH entries: first the entries whose boxes are not
+ * beside the ray's span, gathered without branches (which entries pass is
+ * different in every cell: a branch on it is often guessed wrong); then
+ * each of those.  A cell of fewer entries takes them one by one, and makes
+ * the cull frame only at the first not tested yet (a floor's triangles are
+ * listed in every cell under it and tested once).  A cell with a grid of
+ * its own (two levels) lists that grid alone: the ray marches through it. */
+static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, search *s, const ray_frame *rf,
+                              march_state *ms)
+{
+    const uint32_t first = g->start[m->cell], last = g->start[m->cell + 1];
+    if (first == last)
+        return;
     const fast_grid_entry *const refs = g->refs;
-    const bool cull = g->cull;
-    const bool use_mailbox = g->mailbox;
-    for (;;) {
-        /* Every surface of the cell, each tested over the whole window
-         * (t_min, best): a hit beyond this cell is kept too, and counts once
-         * the march reaches its cell. */
-        cells++;
-        const uint32_t first = g->start[m.cell], last = g->start[m.cell + 1];
-        uint64_t span_lo = 0, span_hi = 0;
-        if (cull && first < last)
-            cull_span(&f, g, m.i, p, d, inv_d, cull_slack, reach, d_max, t_min, s.upper, &span_lo, &span_hi);
-        /* In batches of up to BATCH entries: first the entries whose boxes
-         * are not beside the ray's span, gathered without branches (which
-         * entries pass is different in every cell: a branch on it is often
-         * guessed wrong); then, of those, each one not tested
-         * yet whose box the ray passes through is tested. */
-        for (uint32_t e = first; e < last;) {
-            const uint32_t end = last - e > BATCH ? e + BATCH : last, batch = end - e;
-            const fast_grid_entry *near_ray[BATCH];
-            uint32_t n_near = 0;
-            for (; e < end; e++) {
-                near_ray[n_near] = &refs[e];
-                n_near += !cull | !box_beside_span(refs[e].box, span_lo, span_hi);
+    if (refs[first].surface >= FAST_GRID_SUB) {
+        march(&g->subs[refs[first].surface - FAST_GRID_SUB], s, rf, ms);
+        return;
+    }
+    const bool cull = g->cull, use_mailbox = g->mailbox;
+    if (!cull || last - first < SIFT_FROM) {
+        bool framed = !cull;
+        for (uint32_t e = first; e < last; e++) {
+            const uint32_t k = refs[e].surface;
+            if (use_mailbox && ms->mailbox[k % MAILBOX] == k)
+                continue;
+            if (!framed) {
+                cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->cull_slack);
+                framed = true;
             }
-            culled += batch - n_near;
-            for (uint32_t j = 0; j < n_near; j++) {
-                const uint32_t k = near_ray[j]->surface;
-                if (use_mailbox && mailbox[k % MAILBOX] == k)
-                    continue; /* tested already along this ray */
-                if (cull && !passes_box(near_ray[j]->box, &f, t_min, s.upper)) {
-                    culled++;
-                    continue; /* the ray passes by its box in this cell */
-                }
-                if (use_mailbox)
-                    mailbox[k % MAILBOX] = k;
-                test_surface(&s, k);
-            }
+            consider(&refs[e], f, cull, use_mailbox, s, ms);
         }
+        return;
+    }
+    uint64_t span_lo, span_hi;
+    cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->cull_slack);
+    cull_span(f, g, m->i, rf->p, rf->d, rf->reach, rf->d_max, s->t_min, s->upper, &span_lo, &span_hi);
+    for (uint32_t e = first; e < last;) {
+        const uint32_t end = last - e > BATCH ? e + BATCH : last, batch = end - e;
+        const fast_grid_entry *near_ray[BATCH];
+        uint32_t n_near = 0;
+        for (; e < end; e++) {
+            near_ray[n_near] = &refs[e];
+            n_near += !box_beside_span(refs[e].box, span_lo, span_hi);
+        }
+        ms->culled += batch - n_near;
+        for (uint32_t j = 0; j < n_near; j++)
+            consider(near_ray[j], f, cull, use_mailbox, s, ms);
+    }
+}
+/* end snippet */
+
+/* snippet: march */
+/* The march through grid g (the top grid, or a cell's own), from where the
+ * ray enters its box within the window to where it leaves it or the search
+ * is settled. */
+static void march(const fast_grid *g, search *s, const ray_frame *rf, march_state *ms)
+{
+    dda m;
+    if (g->n_cells == 0 || !enter(g, rf, s->t_min, s->upper, &m))
+        return;
+    cull_frame f;
+    if (g->cull)
+        cull_start(&f, g, rf->near, rf->far, rf->inv_d);
+    for (;;) {
+        ms->cells++;
+        visit_cell(g, &m, &f, s, rf, ms);
         /* The cell ends where the ray crosses its nearest boundary.  A hit no
          * farther than that is the closest: every surface before it along the
          * ray lies in this cell or an earlier one, all tested.  A hit beyond
          * it may yet lose to a surface of a later cell: march on. */
         int a = nearest_axis(&m);
-        if (s.best_t <= m.next[a] - slack[a])
-            break;
-        if (g->empty && g->empty[8 * m.cell + octant] >= 2) { /* a cube of empty cells ahead: leap over it */
-            if (!dda_leap(g, &m, g->empty[8 * m.cell + octant], p, d, inv_d, reach, d_max))
-                break;
+        if (s->best_t <= m.next[a] - rf->slack[a])
+            return;
+        if (g->empty && g->empty[8 * m.cell + rf->octant] >= 2) { /* a cube of empty cells ahead: leap over it */
+            if (!dda_leap(g, &m, g->empty[8 * m.cell + rf->octant], rf->p, rf->d, rf->inv_d, rf->reach, rf->d_max))
+                return;
             continue;
         }
-        if (!dda_step(g, &m, a, p, inv_d))
-            break;
+        if (!dda_step(g, &m, a, rf->p, rf->inv_d))
+            return;
     }
-    /* end snippet */
+}
+/* end snippet */
 
-done:
+bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit, fast_grid_counts *counts)
+{
+    search s;
+    search_start(&s, g->list, r, t_min, t_max);
+    for (long u = 0; u < g->n_unbinned; u++)
+        test_surface(&s, g->unbinned[u]);
+    march_state ms;
+    ms.cells = ms.culled = 0;
+    if (g->n_cells) {
+        for (int b = 0; b < MAILBOX; b++)
+            ms.mailbox[b] = UINT32_MAX;
+        ray_frame rf;
+        frame_of(&rf, g, r);
+        march(g, &s, &rf, &ms);
+    }
     if (counts) {
-        counts->cells += cells;
+        counts->cells += ms.cells;
         counts->tests += s.tests;
-        counts->culled += culled;
+        counts->culled += ms.culled;
     }
     if (s.best < 0)
         return false;
-    *hit = s.hit;
+    *hit = search_record(&s);
     return true;
 }
 

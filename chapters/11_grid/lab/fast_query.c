@@ -7,7 +7,7 @@
 
 #include "04_many_shapes/closest_hit.h"
 
-fast_knobs fast_settings;
+fast_knobs fast_settings = {.split = FAST_GRID_DEFAULT_SPLIT};
 _Thread_local query_tally query_tally_here;
 
 static double now(void)
@@ -66,7 +66,8 @@ int lab_query_build(const surface_list *list, const scene *desc, hit_query *q, c
                                  .max_cells = grid_settings.max_cells,
                                  .mailbox = fast_settings.mailbox == 0,
                                  .leap = fast_settings.leap == 0,
-                                 .cull = fast_settings.cull == 0};
+                                 .cull = fast_settings.cull == 0,
+                                 .split = fast_settings.split};
         status = fast_grid_build(&lq->fast, list, opt, why, sizeof why);
     } else if (lq->accel == LAB_ACCEL_GRID) {
         grid_options opt = {.density = (double)grid_settings.density, .max_cells = grid_settings.max_cells};

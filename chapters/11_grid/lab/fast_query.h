@@ -19,6 +19,7 @@ typedef struct {
     int mailbox; /* --mailbox, --leap, --cull: 0 on, 1 off (the index of on|off) */
     int leap;
     int cull;
+    int split;   /* --split: a cell listing more surfaces than this gets a grid of its own (0: one level) */
 } fast_knobs;
 enum { LAB_ACCEL_FAST, LAB_ACCEL_GRID, LAB_ACCEL_LIST };
 extern fast_knobs fast_settings;

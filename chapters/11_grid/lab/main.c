@@ -32,6 +32,8 @@ static const knob lab_knob_rows[] = {
     {"mailbox", KNOB_CHOICE, &fast_settings.mailbox, on_off, "fast grid: skip surfaces already tested along the ray"},
     {"leap", KNOB_CHOICE, &fast_settings.leap, on_off, "fast grid: cross blocks of empty cells in one step"},
     {"cull", KNOB_CHOICE, &fast_settings.cull, on_off, "fast grid: test a surface only when the ray meets its box"},
+    {"split", KNOB_INT, &fast_settings.split, NULL,
+     "fast grid: a cell listing more surfaces than this gets a grid of its own (0: one level)"},
     {"show", KNOB_CHOICE, &show_choice, show_choices, "the image, or each pixel's eye ray's cells visited or tests"},
     {"heat-max", KNOB_INT, &heat_max, NULL, "--show=cells|tests: the count shown white"},
 };
@@ -126,9 +128,10 @@ static void report(const void *prepared, render_stats stats, FILE *out)
     long cells = fast ? lq->fast.n_cells : lq->lesson.n_cells, refs = fast ? lq->fast.n_refs : lq->lesson.n_refs;
     size_t bytes = fast ? fast_grid_memory(&lq->fast) : grid_memory(&lq->lesson);
     fprintf(out,
-            "11_grid: %s grid %dx%dx%d = %ld cells for %d surfaces (%.2f per cell), %.1f MB, built in %.3f s; "
-            "per ray %.2f cells, %.2f intersection tests (%.2f more culled by their boxes); traced in %.3f s\n",
-            fast ? "fast" : "lesson's", n[0], n[1], n[2], cells, list->n,
+            "11_grid: %s grid %dx%dx%d = %ld cells (%ld with grids of their own) for %d surfaces (%.2f per cell), "
+            "%.1f MB, built in %.3f s; per ray %.2f cells, %.2f intersection tests (%.2f more culled by their boxes); "
+            "traced in %.3f s\n",
+            fast ? "fast" : "lesson's", n[0], n[1], n[2], cells, fast ? lq->fast.n_subs : 0L, list->n,
             cells ? (double)refs / (double)cells : 0.0, (double)bytes / 1e6, lq->build_seconds,
             (double)sum.counts.cells / queries, (double)sum.counts.tests / queries,
             (double)sum.counts.culled / queries, stats.seconds);

@@ -1,0 +1,34 @@
+/* fast_build.h - chapter 11's lab: the parts of the fast grid's build that both levels use.
+ *
+ * fast_build.c builds a grid's cells over a box and a set of surfaces;
+ * fast_levels.c gives a crowded cell a grid of its own with the same parts.
+ */
+#ifndef CH11_LAB_FAST_BUILD_H
+#define CH11_LAB_FAST_BUILD_H
+
+#include "11_grid/lab/fast_grid.h"
+
+/* A surface's bounding box: a sphere's centre +- R, a triangle's vertices' extremes. */
+void fast_grid_surface_bounds(const surface *s, vec3 *lo, vec3 *hi);
+
+/* Cells along each axis for a box of these extents holding `surfaces`:
+ * about density x surfaces in all, at most max_cells, as cubic as the box allows. */
+void fast_grid_resolution(const double extent[3], long surfaces, double density, long max_cells, int n[3]);
+
+/* The cells of g, whose list, box (lo, hi), n, margin and scale are set:
+ * the cell sizes, the table of planes, each cell's list of the surfaces
+ * `subset` (n of them; NULL: the list's surfaces 0 .. n - 1, those with
+ * finite bounds) and, with `leap`, the empty cubes.  0, or -1 with the
+ * problem in err; what it allocated is then g's, for fast_grid_free. */
+int fast_grid_fill(fast_grid *g, const uint32_t *subset, long n, bool leap, char *err, size_t err_size);
+
+/* Two levels: each cell of g that lists more than opt.split surfaces gets a
+ * grid of its own over its box and those surfaces, and lists that grid
+ * alone (an entry FAST_GRID_SUB + its index in g->subs).  0, or -1 with the
+ * problem in err. */
+int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_size);
+
+/* The memory of g's sub-grids. */
+size_t fast_grid_subs_memory(const fast_grid *g);
+
+#endif

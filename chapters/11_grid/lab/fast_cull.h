@@ -1,0 +1,128 @@
+/* fast_cull.h - chapter 11's lab: culling, the test of a ray against the part of a surface's box in a cell.
+ *
+ * Each entry of a cell's list carries the part of its surface's box inside
+ * the cell, in bytes (fast_build.c's cull_box).  Once per cell the march
+ * computes the span of the ray in the same units (cull_span); a box beside
+ * that span is passed by with one word test (box_beside_span), and the few
+ * left get the slab test (passes_box) before the surface test.
+ */
+#ifndef CH11_LAB_FAST_CULL_H
+#define CH11_LAB_FAST_CULL_H
+
+#include "11_grid/lab/fast_grid.h"
+
+/* snippet: cull */
+/* Whether the ray can meet the part of a surface's box inside the cell,
+ * `box` (cull_box: steps of the cell's frame), at some t in (t_min, upper):
+ * the slabs of the three axes overlap there.  Along axis a the frame's low
+ * side is crossed at base_a and each step adds unit_a, so side q is crossed
+ * at base_a + q unit_a; the side the ray enters by is box[near_a] (box[a]
+ * for d_a > 0, box[3 + a] for d_a < 0) and it leaves by box[far_a].  Each
+ * crossing is widened by the axis's rounding slack: enter[a] = base_a -
+ * slack_a, leave[a] = base_a + slack_a.  A NaN never culls, so that a
+ * surface surface_intersect would report is never culled.  Written out
+ * axis by axis: it runs for every surface of every cell the ray visits. */
+typedef struct {
+    real enter[3], leave[3], unit[3];
+    int near[3], far[3];
+    real near_top[3], far_top[3]; /* 0 or FAST_GRID_BOX_STEPS unit_a: the frame's own sides, near and far */
+} cull_frame;
+
+static inline bool passes_box(const uint8_t box[8], const cull_frame *f, real t_min, real upper)
+{
+    real x0 = f->enter[0] + (real)box[f->near[0]] * f->unit[0], x1 = f->leave[0] + (real)box[f->far[0]] * f->unit[0];
+    real y0 = f->enter[1] + (real)box[f->near[1]] * f->unit[1], y1 = f->leave[1] + (real)box[f->far[1]] * f->unit[1];
+    real z0 = f->enter[2] + (real)box[f->near[2]] * f->unit[2], z1 = f->leave[2] + (real)box[f->far[2]] * f->unit[2];
+    real t_in = x0 > t_min ? x0 : t_min, t_out = x1 < upper ? x1 : upper;
+    t_in = y0 > t_in ? y0 : t_in;
+    t_out = y1 < t_out ? y1 : t_out;
+    t_in = z0 > t_in ? z0 : t_in;
+    t_out = z1 < t_out ? z1 : t_out;
+    return !(t_in > t_out);
+}
+/* end snippet */
+
+/* What the cull frame of every cell of g has for this ray: the steps'
+ * length in t, the sides the ray enters and leaves by.  Once per grid and
+ * ray. */
+static inline void cull_start(cull_frame *f, const fast_grid *g, const int near[3], const int far[3],
+                              const real inv_d[3])
+{
+    for (int a = 0; a < 3; a++) {
+        f->unit[a] = g->frame_step[a] * inv_d[a];
+        f->near[a] = near[a];
+        f->far[a] = far[a];
+        f->near_top[a] = (near[a] < 3 ? 0 : FAST_GRID_BOX_STEPS) * f->unit[a];
+        f->far_top[a] = (far[a] < 3 ? 0 : FAST_GRID_BOX_STEPS) * f->unit[a];
+    }
+}
+
+/* The cull frame of cell i: its base_a, widened by the slack, for passes_box. */
+static inline void cull_cell(cull_frame *f, const fast_grid *g, const int i[3], const real p[3], const real inv_d[3],
+                             const real cull_slack[3])
+{
+    for (int a = 0; a < 3; a++) {
+        real base = inv_d[a] != 0 ? (g->plane[a][i[a]] - g->margin - p[a]) * inv_d[a] : 0;
+        f->enter[a] = base - cull_slack[a];
+        f->leave[a] = base + cull_slack[a];
+    }
+}
+
+/* The span of the ray in cell i, whose frame cull_cell made: along each
+ * axis, the steps of the frame that the ray's points at t in (t_min, upper)
+ * inside the frame cover, widened by one step and by the rounding of those
+ * points, lo_a .. hi_a, clamped to 0 .. FAST_GRID_BOX_STEPS.  A box that
+ * ends before the span or starts after it, along any axis, is passed by: a
+ * cheaper test in integers that settles most boxes before passes_box.  A
+ * NaN leaves the span whole.  The span is returned packed for
+ * box_beside_span: hi_a in byte a of *span_hi, lo_a in byte 3 + a of
+ * *span_lo.  It costs as much as a few passes_box: the march computes it
+ * only for a cell that lists many surfaces. */
+static inline void cull_span(const cull_frame *f, const fast_grid *g, const int i[3], const real p[3], const real d[3],
+                             real reach, real d_max, real t_min, real upper, uint64_t *span_lo, uint64_t *span_hi)
+{
+    const real top = FAST_GRID_BOX_STEPS;
+    real t_in = t_min, t_out = upper, origin[3];
+    for (int a = 0; a < 3; a++) {
+        origin[a] = g->plane[a][i[a]] - g->margin;
+        real t0 = f->enter[a] + f->near_top[a];
+        real t1 = f->leave[a] + f->far_top[a];
+        t_in = t0 > t_in ? t0 : t_in;
+        t_out = t1 < t_out ? t1 : t_out;
+    }
+    const real t_abs = real_abs(t_in) > real_abs(t_out) ? real_abs(t_in) : real_abs(t_out);
+    const real rounding = reach + 16 * REAL_EPSILON * t_abs * d_max;
+    uint64_t packed_lo = 0, packed_hi = 0;
+    for (int a = 0; a < 3; a++) {
+        real per_unit = g->per_unit[a];
+        real q0 = (p[a] + t_in * d[a] - origin[a]) * per_unit, q1 = (p[a] + t_out * d[a] - origin[a]) * per_unit;
+        real widen = 1 + rounding * per_unit;
+        real q_lo = (q0 < q1 ? q0 : q1) - widen, q_hi = (q0 < q1 ? q1 : q0) + widen;
+        int span_a_lo = q_lo > 0 && q_lo < top ? (int)q_lo : q_lo >= top ? FAST_GRID_BOX_STEPS : 0; /* NaN: 0 */
+        int span_a_hi = q_hi < top - 1 && q_hi > 0 ? (int)q_hi + 1 : q_hi <= 0 ? 0 : FAST_GRID_BOX_STEPS; /* NaN: top */
+        packed_lo |= (uint64_t)span_a_lo << (8 * (3 + a));
+        packed_hi |= (uint64_t)span_a_hi << (8 * a);
+    }
+    *span_lo = packed_lo;
+    *span_hi = packed_hi;
+}
+
+/* Whether the box of an entry lies beside the span along some axis: its
+ * high side below the span's low end (hi_a < lo_a), or its low side above
+ * the span's high end (box lo_a > span hi_a).  All six comparisons at once,
+ * bytewise in one 64-bit word ("SIMD within a register"): with x and y
+ * bytes of 0 .. 127, byte (x | 128) - y has its top bit set exactly when
+ * x >= y, and never borrows from the next byte.  The box's bytes are lo_x,
+ * lo_y, lo_z, hi_x, hi_y, hi_z: bytes 0-2 compare span hi >= box lo, bytes
+ * 3-5 box hi >= span lo. */
+static inline bool box_beside_span(const uint8_t box[8], uint64_t span_lo, uint64_t span_hi)
+{
+    const uint64_t low3 = 0xFFFFFFull, high3 = 0xFFFFFF000000ull, tops = 0x808080808080ull;
+    /* byte k of the box in byte k of b: compilers make this one load */
+    uint64_t b = (uint64_t)box[0] | (uint64_t)box[1] << 8 | (uint64_t)box[2] << 16 | (uint64_t)box[3] << 24 |
+                 (uint64_t)box[4] << 32 | (uint64_t)box[5] << 40 | (uint64_t)box[6] << 48 | (uint64_t)box[7] << 56;
+    uint64_t x = (b & high3) | span_hi, y = (b & low3) | span_lo;
+    return (((x | tops) - y) & tops) != tops;
+}
+
+#endif

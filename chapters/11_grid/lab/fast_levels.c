@@ -1,0 +1,175 @@
+/* fast_levels.c - chapter 11's lab: two levels, a grid of its own for each crowded cell.
+ *
+ * One resolution cannot suit a whole scene whose surfaces are of very
+ * different sizes: on the course's wire-box a floor 100 units wide sets the
+ * cells at 4 units, and the wire cube of 2 units with its 152 surfaces sits
+ * in a few cells, every one of whose surfaces each ray through them has to
+ * cull.  Kalojanov, Billeter and Slusallek ("Two-level grids for ray tracing
+ * on GPUs", 2011) give each cell a grid of its own, sized by what it holds;
+ * here only the cells that list more than `split` surfaces get one, the
+ * most crowded first, within a memory budget.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "11_grid/lab/fast_build.h"
+
+/* A cell's own grid may list each of its surfaces in this many of its cells
+ * on average at most; beyond that (surfaces that all cross the whole cell)
+ * the cell keeps its plain list. */
+#define MOST_CELLS_PER_SURFACE 16
+
+/* The grid of cell idx of g over the n surfaces `subset` it lists.  Its box
+ * is the cell's frame (the cell widened by the margin) cut down to the
+ * surfaces' box (widened by the margin): every point where the ray can meet
+ * one of them while it is in the cell.  The same margin and scale as g, so
+ * that the march's rounding bounds are the same at both levels; g's density
+ * and knobs.  0, 1 when the cell is better left as it is, -1 with the
+ * problem in err. */
+static int build_sub(fast_grid *sub, const fast_grid *g, const uint32_t *subset, long n, const int idx[3],
+                     fast_grid_options opt, char *err, size_t err_size)
+{
+    *sub = (fast_grid){.list = g->list, .mailbox = g->mailbox, .cull = g->cull, .margin = g->margin, .scale = g->scale};
+    vec3 lo = vec3_make(REAL_INFINITY, REAL_INFINITY, REAL_INFINITY), hi = vec3_neg(lo);
+    for (long q = 0; q < n; q++) {
+        vec3 slo, shi;
+        fast_grid_surface_bounds(&g->list->items[subset[q]], &slo, &shi);
+        lo = vec3_make(real_fmin(lo.x, slo.x), real_fmin(lo.y, slo.y), real_fmin(lo.z, slo.z));
+        hi = vec3_make(real_fmax(hi.x, shi.x), real_fmax(hi.y, shi.y), real_fmax(hi.z, shi.z));
+    }
+    const real s_lo[3] = {lo.x, lo.y, lo.z}, s_hi[3] = {hi.x, hi.y, hi.z};
+    real box_lo[3], box_hi[3];
+    double extent[3];
+    for (int a = 0; a < 3; a++) {
+        real frame_lo = g->plane[a][idx[a]] - g->margin, frame_hi = g->plane[a][idx[a] + 1] + g->margin;
+        box_lo[a] = real_fmax(s_lo[a] - g->margin, frame_lo);
+        box_hi[a] = real_fmin(s_hi[a] + g->margin, frame_hi);
+        if (!(box_lo[a] < box_hi[a]))
+            return 1;
+        extent[a] = (double)box_hi[a] - (double)box_lo[a];
+    }
+    sub->lo = vec3_make(box_lo[0], box_lo[1], box_lo[2]);
+    sub->hi = vec3_make(box_hi[0], box_hi[1], box_hi[2]);
+    fast_grid_resolution(extent, n, opt.density, opt.max_cells, sub->n);
+    if (fast_grid_fill(sub, subset, n, opt.leap, err, err_size) != 0) {
+        fast_grid_free(sub);
+        return -1;
+    }
+    if (sub->n_refs > MOST_CELLS_PER_SURFACE * n) {
+        fast_grid_free(sub);
+        return 1;
+    }
+    return 0;
+}
+
+/* A cell that lists more than `split` surfaces, and the grid it got (-1: none). */
+typedef struct {
+    long cell;
+    uint32_t count;
+    long sub;
+} crowded_cell;
+
+/* The most crowded first (a tie by cell, so that the build does not depend
+ * on qsort's order), and by cell. */
+static int by_count(const void *x, const void *y)
+{
+    const crowded_cell *a = x, *b = y;
+    return a->count != b->count ? (a->count < b->count) - (a->count > b->count) : (a->cell > b->cell) - (a->cell < b->cell);
+}
+static int by_cell(const void *x, const void *y)
+{
+    const crowded_cell *a = x, *b = y;
+    return (a->cell > b->cell) - (a->cell < b->cell);
+}
+
+int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_size)
+{
+    if (opt.split <= 0 || g->n_cells == 0)
+        return 0;
+    long n_crowded = 0;
+    uint32_t most = 0;
+    for (long c = 0; c < g->n_cells; c++) {
+        uint32_t count = g->start[c + 1] - g->start[c];
+        n_crowded += count > (uint32_t)opt.split;
+        most = count > most ? count : most;
+    }
+    if (n_crowded == 0)
+        return 0;
+    crowded_cell *crowded = malloc((size_t)n_crowded * sizeof *crowded);
+    g->subs = calloc((size_t)n_crowded, sizeof *g->subs);
+    uint32_t *subset = malloc((size_t)most * sizeof *subset);
+    if (!crowded || !g->subs || !subset) {
+        free(crowded);
+        free(subset);
+        snprintf(err, err_size, "grid: out of memory");
+        return -1;
+    }
+    long k = 0;
+    for (long c = 0; c < g->n_cells; c++)
+        if (g->start[c + 1] - g->start[c] > (uint32_t)opt.split)
+            crowded[k++] = (crowded_cell){.cell = c, .count = g->start[c + 1] - g->start[c], .sub = -1};
+    /* The most crowded cells first, while the grids of their own take at
+     * most a quarter of what the grid takes with one level (at least 1 MB):
+     * on a mesh the crowded cells are where thin triangles meet (the poles
+     * of a sphere), and their grids cost much and buy little. */
+    qsort(crowded, (size_t)n_crowded, sizeof *crowded, by_count);
+    size_t budget = fast_grid_memory(g) / 4, spent = 0;
+    budget = budget > (1u << 20) ? budget : (1u << 20);
+    for (k = 0; k < n_crowded && spent < budget; k++) {
+        const long c = crowded[k].cell;
+        for (uint32_t q = 0; q < crowded[k].count; q++)
+            subset[q] = g->refs[g->start[c] + q].surface;
+        const int idx[3] = {(int)(c % g->n[0]), (int)(c / g->n[0] % g->n[1]), (int)(c / g->n[0] / g->n[1])};
+        fast_grid *sub = &g->subs[g->n_subs];
+        int kept = build_sub(sub, g, subset, crowded[k].count, idx, opt, err, err_size);
+        if (kept < 0) {
+            free(crowded);
+            free(subset);
+            return -1;
+        }
+        if (kept == 0 && spent + fast_grid_memory(sub) > budget) {
+            fast_grid_free(sub);
+            break;
+        }
+        if (kept == 0) {
+            spent += fast_grid_memory(sub);
+            crowded[k].sub = g->n_subs++;
+        }
+    }
+    free(subset);
+    /* Each cell's list moves down to where the lists before it end now: a
+     * cell with a grid of its own lists that grid alone. */
+    qsort(crowded, (size_t)n_crowded, sizeof *crowded, by_cell);
+    uint32_t written = 0, from = g->start[0];
+    k = 0;
+    for (long c = 0; c < g->n_cells; c++) {
+        const uint32_t to = g->start[c + 1], count = to - from;
+        g->start[c] = written;
+        while (k < n_crowded && crowded[k].cell < c)
+            k++;
+        if (k < n_crowded && crowded[k].cell == c && crowded[k].sub >= 0) {
+            g->refs[written++] = (fast_grid_entry){.surface = FAST_GRID_SUB + (uint32_t)crowded[k].sub};
+        } else {
+            memmove(&g->refs[written], &g->refs[from], count * sizeof *g->refs);
+            written += count;
+        }
+        from = to;
+    }
+    g->start[g->n_cells] = written;
+    g->n_refs = written;
+    free(crowded);
+    fast_grid_entry *shrunk = realloc(g->refs, (written ? written : 1) * sizeof *g->refs);
+    g->refs = shrunk ? shrunk : g->refs;
+    size_t now = fast_grid_memory(g) + most * sizeof *subset;
+    g->peak_bytes = now > g->peak_bytes ? now : g->peak_bytes;
+    return 0;
+}
+
+size_t fast_grid_subs_memory(const fast_grid *g)
+{
+    size_t bytes = 0;
+    for (long k = 0; k < g->n_subs; k++)
+        bytes += fast_grid_memory(&g->subs[k]);
+    return bytes;
+}
