@@ -72,7 +72,9 @@ comma := ,
 link = $(CC) $(LDFLAGS) $(filter %.o,$1) $(if $(filter %.a,$1),-Wl$(comma)--whole-archive $(filter %.a,$1) -Wl$(comma)--no-whole-archive) $(LDLIBS)
 objs = $(patsubst %.c,$(BUILD)/obj/%.o,$1)
 
-TEST_SUPPORT := tests/suite.c tests/image_compare.c
+TEST_SUPPORT := tests/suite.c tests/answers.c tests/image_compare.c
+# A chapter's checks of inputs drawn at grading time (tests/answers.h), when it has them.
+seeded = $(wildcard tests/seeded/$1.c)
 # Suites of common/ link common/ only; a chapter's suite links its stages.
 COMMON_TESTS := $(sort $(basename $(notdir $(wildcard tests/test_common_*.c))))
 CHAPTER_TESTS := $(foreach c,$(CHAPTERS),$(if $(wildcard tests/test_$c.c),test_$c))
@@ -119,7 +121,7 @@ $(OUT)/$1.png: $(BUILD)/$1/render
 	@mkdir -p $(OUT)
 	$(BUILD)/$1/render -o $$@
 
-$(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
+$(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call seeded,$1)) $(call stages_upto,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
 	$$(call link,$$^) -lcmocka -o $$@
 
@@ -217,6 +219,9 @@ GRADE_FLOAT ?= 1
 # GRADE_NOTES=file is shown above the results (the autograder's file list).
 GRADE_USER ?=
 GRADE_NOTES ?=
+# The whole grading's time (seconds) and each test's memory (MB): tools/grade.
+GRADE_BUDGET ?= 3600
+GRADE_MEMORY ?= 1024
 ifeq ($(filter $(SOURCE),chapters solutions reference),)
 $(error SOURCE must be chapters, reference or solutions, not '$(SOURCE)')
 endif
@@ -234,7 +239,7 @@ REFERENCE_WORDS := $(if $(HANDOUT),the compiled reference libraries reference/do
 grade_links = $1: links $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addprefix chapters/$1/,$(EXERCISES_$1)),no exercise files),the reference)$(if $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))), and the reference of $(strip $(foreach c,$(filter-out $1,$(call upto,$1)),$(if $(EXERCISES_$c),$c))) from $(REFERENCE_WORDS))
 
 define grade_rules
-$(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call grade_stages,$1) $(call objs,$(COMMON_SRC))
+$(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call seeded,$1)) $(call grade_stages,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
 	$$(call link,$$^) -lcmocka -o $$@
 endef
@@ -261,26 +266,50 @@ grade-run: $(BUILD)/tools/grade
 	        echo "$$c: not graded, its reference suite does not build (see $(GRADE_DIR)/reference_$$c.log)"; \
 	        missing="$$missing $$c"; continue; \
 	    fi; \
+	    case $$c in $(foreach c,$(GRADE_CHAPTERS),$c$(rparen) ex="$(EXERCISES_$c)";;) esac; \
 	    rm -f $(GRADE_DIR)/test_$$c $(BUILD)/obj/chapters/$$c/*.o; \
 	    $(MAKE) --no-print-directory -s WERROR= COMPILE_AS=$(GRADE_USER) $(GRADE_DIR)/test_$$c >$(GRADE_DIR)/test_$$c.log 2>&1 || { \
 	        echo "$$c: the files of $(SOURCE)/$$c/ do not compile:"; tail -n 20 $(GRADE_DIR)/test_$$c.log; }; \
-	    float=- float_log=-; \
+	    $(call grade_check,$(GRADE_DIR)/test_$$c,$(if $(HANDOUT),reference/double/lib$$c.a,$(BUILD)/obj/solutions/$$c),$(BUILD),print); \
+	    float=- float_log=- float_ref=-; \
 	    if [ "$(GRADE_FLOAT)" = 1 ]; then \
-	        float=$(FLOAT_GRADE_DIR)/test_$$c float_log=$(FLOAT_GRADE_DIR)/test_$$c.log; \
+	        float=$(FLOAT_GRADE_DIR)/test_$$c float_log=$(FLOAT_GRADE_DIR)/test_$$c.log float_ref=$(BUILD)-float/tests/test_$$c; \
+	        $(MAKE) --no-print-directory -s BUILD=$(BUILD)-float REAL=float $$float_ref >$(FLOAT_GRADE_DIR)/reference_$$c.log 2>&1 || { \
+	            echo "$$c: not graded, its float reference suite does not build (see $(FLOAT_GRADE_DIR)/reference_$$c.log)"; \
+	            missing="$$missing $$c"; continue; }; \
 	        rm -f $$float $(BUILD)-float/obj/chapters/$$c/*.o; \
 	        $(MAKE) --no-print-directory -s BUILD=$(BUILD)-float REAL=float WERROR= COMPILE_AS=$(GRADE_USER) $$float \
 	            >$$float_log 2>&1 || true; \
+	        $(call grade_check,$$float,$(if $(HANDOUT),reference/float/lib$$c.a,$(BUILD)-float/obj/solutions/$$c),$(BUILD)-float,); \
 	    fi; \
-	    set -- "$$@" $$c $(GRADE_DIR)/test_$$c $(BUILD)/tests/test_$$c $(GRADE_DIR)/test_$$c.log $$float $$float_log; \
+	    set -- "$$@" $$c $(GRADE_DIR)/test_$$c $(BUILD)/tests/test_$$c $(GRADE_DIR)/test_$$c.log $$float $$float_log $$float_ref; \
 	done; \
 	$(foreach c,$(GRADE_CHAPTERS),echo "$(call grade_links,$c)" >>$$notes;) \
 	echo "grading $(SOURCE)/ ($(TIMEOUT) s per test$(if $(filter 1,$(GRADE_FLOAT)),; the float build is reported, not scored))"; \
 	cat $$notes; \
-	$(BUILD)/tools/grade --timeout $(TIMEOUT) --json $(GRADE_JSON) --junit $(GRADE_JUNIT) --notes $$notes \
+	$(BUILD)/tools/grade --timeout $(TIMEOUT) --budget $(GRADE_BUDGET) --memory $(GRADE_MEMORY) \
+	    --json $(GRADE_JSON) --junit $(GRADE_JUNIT) --notes $$notes \
 	    $(if $(GRADE_USER),--user $(GRADE_USER)) \
 	    $(if $(filter-out chapters,$(SOURCE)),--require-full) "$$@" || exit 1; \
 	echo "wrote $(GRADE_JSON) (Gradescope) and $(GRADE_JUNIT) (JUnit)"; \
 	if [ -n "$$missing" ]; then echo "not graded:$$missing"; exit 1; fi
+
+rparen := )
+# $(call grade_check,SUITE,REFERENCE,BUILD,print): the student's objects of
+# chapter $$c (files $$ex) checked before their suite is run
+# (tools/check-exercise.sh): a refusal removes SUITE and goes into its log
+# (and, with print, on the terminal); a match of the reference's code is
+# flagged on the terminal (with print) only, for the instructor.
+grade_check = $(if $(filter chapters,$(SOURCE)),if [ -x $1 ]; then \
+	    CC="$(CC)" CPPFLAGS="$(CPPFLAGS) $(if $(findstring float,$3),-DRT_REAL_FLOAT)" \
+	        tools/check-exercise.sh $2 chapters/$$c $3/obj/chapters/$$c $$ex >$1.check || { rm -f $1; \
+	        grep refused $1.check >>$1.log; }; \
+	    $(if $4,cat $1.check;) fi,true)
+
+# The grader: tools/grade.c, the verdict (judge.c) and the scratch folders (scratch.c).
+$(BUILD)/tools/grade: $(addprefix $(BUILD)/obj/tools/,grade.o judge.o scratch.o)
+	@mkdir -p $(@D)
+	$(CC) $^ -lm -o $@
 
 # ---- the student's copy and the autograder ---------------------------------------
 #
@@ -468,5 +497,8 @@ else
 bench-grid:
 	@echo "make bench-grid: the benchmarks (bench/) are not in a student's copy; chapter 11's README has its results" >&2; exit 2
 endif
+
+# Hostile submissions against the autograder (make test-hostile; root only).
+include tests/hostile/hostile.mk
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

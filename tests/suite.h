@@ -11,9 +11,10 @@
  *
  * The binary runs all its tests; `--list` prints "name points" a line and
  * `--only NAME` runs one test, which is how grading isolates each test.
- * `--only NAME --report FD` (tools/grade) also reads a token from FD before
- * the test and writes "TOKEN FAILED" there after it, which code under test
- * cannot fake by printing cmocka's lines or calling exit(0).
+ * `--only NAME --answers FD --seed SEED` (tools/grade) also writes what each
+ * check compares on FD and runs the test's check of inputs drawn from SEED
+ * (answers.h): the grader decides from that, never from what the process
+ * that ran the student's code says.
  *
  * Debian's cmocka 1.1.5 has no assert for doubles with a tolerance:
  * assert_close() prints the expected and actual values and the tolerance.
@@ -28,6 +29,7 @@
 
 #include <cmocka.h>
 
+#include "answers.h"
 #include "vec3.h"
 
 typedef struct {
