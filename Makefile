@@ -337,7 +337,8 @@ handout: handout-libs
 AUTOGRADER ?= $(GRADE_BUILD)/autograder$(if $(CHAPTER),-$(CHAPTER)).zip
 autograder: handout-libs
 	@$(if $(CHAPTER),$(if $(GRADE_CHAPTERS),,echo "make autograder: no chapter '$(CHAPTER)' has a test suite" >&2; exit 2))
-	@tools/autograder.sh $(AUTOGRADER) "$(CHAPTER)" "$(TIMEOUT)" build-handout/reference build-handout-float/reference
+	@tools/autograder.sh $(AUTOGRADER) "$(CHAPTER)" "$(TIMEOUT)" build-handout/reference build-handout-float/reference \
+	    $(if $(filter command line environment,$(origin GRADE_BUDGET)),$(GRADE_BUDGET),1200)
 
 # ---- figures: the lecture figures of each chapter, rendered by its solution --------
 
