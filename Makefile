@@ -414,7 +414,8 @@ test-extremes: renderers
 
 # The double build, the float build and the sanitizer build (with the
 # renders at the extremes and the fuzz corpus replay), then the checks
-# that text, skeletons and figures match their sources.
+# that text, skeletons and figures match their sources, then (as root) the
+# hostile submissions against the autograder.
 test:
 	@rm -f build*/test-results.txt
 	$(MAKE) --no-print-directory test-suites
@@ -423,6 +424,7 @@ test:
 	$(MAKE) --no-print-directory SANITIZE=1 OPT="-O1 -g" BUILD=$(BUILD)-asan test-extremes
 	@tools/sum-results.sh $(BUILD) $(BUILD)-float $(BUILD)-asan
 	$(MAKE) --no-print-directory check
+	$(MAKE) --no-print-directory test-hostile
 
 # ---- bench: the speed/accuracy measurements of docs/measurements.md ----------------
 #
@@ -457,8 +459,9 @@ bench:
 help:
 	@echo "make                 build every chapter and render its built-in scene into out/"
 	@echo "make STUDENT=1       the same from the student's files in chapters/ (into build-student/)"
-	@echo "make test            all suites: double, float (REAL=float) and sanitizer builds, then make check"
+	@echo "make test            all suites: double, float (REAL=float) and sanitizer builds, make check, test-hostile"
 	@echo "make test-extremes   every renderer over tests/extremes/ and the other scenes, failing on NaN"
+	@echo "make test-hostile    hostile submissions against chapter 05's autograder under a fake root (root only)"
 	@echo "make renderers       build every chapter's renderer into $(BUILD)/NN_name/render"
 	@echo "make tests           build the test suites of this build"
 	@echo "make test-suites     run the suites of this build only"

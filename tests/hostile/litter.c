@@ -10,15 +10,20 @@
 
 #include "05_lambert/lambert.h"
 
-static void leave(const char *dir, const char *what)
+/* Says whether dir/rt-litter is there (left by an earlier test). */
+static void look(const char *dir, const char *what)
 {
-    if (!dir)
-        return;
     char path[512];
-    snprintf(path, sizeof path, "%s/rt-litter", dir);
+    snprintf(path, sizeof path, "%s/rt-litter", dir ? dir : "/nonexistent");
     if (access(path, F_OK) == 0)
         fprintf(stderr, "litter: found %s from an earlier test (%s)\n", what, path);
-    snprintf(path, sizeof path, "%s/rt-litter", dir);
+}
+
+/* Leaves dir/rt-litter, 16 MiB. */
+static void leave(const char *dir)
+{
+    char path[512];
+    snprintf(path, sizeof path, "%s/rt-litter", dir ? dir : "/nonexistent");
     FILE *f = fopen(path, "w");
     if (!f)
         return;
@@ -33,17 +38,14 @@ color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)
 {
     (void)k_d, (void)point, (void)n, (void)light;
     static int done;
-    if (!done) {
+    if (!done) { /* look everywhere first: HOME and TMPDIR may be one folder */
         done = 1;
-        leave(getenv("HOME"), "HOME");
-        leave(getenv("TMPDIR"), "TMPDIR");
-        char tmp[64];
-        snprintf(tmp, sizeof tmp, "/tmp/rt-litter-%d", (int)getuid());
-        if (access(tmp, F_OK) == 0)
-            fprintf(stderr, "litter: found /tmp from an earlier test (%s)\n", tmp);
-        FILE *f = fopen(tmp, "w");
-        if (f)
-            fclose(f);
+        look(getenv("HOME"), "HOME");
+        look(getenv("TMPDIR"), "TMPDIR");
+        look("/tmp", "/tmp");
+        leave(getenv("HOME"));
+        leave(getenv("TMPDIR"));
+        leave("/tmp");
     }
     return color_make(0, 0, 0);
 }
