@@ -13,33 +13,8 @@
 
 #include "05_lambert/lambert.h"
 #include "05_lambert/shade_lambert.h"
+#include "seeded.h"
 #include "shading_suite.h"
-#include "suite.h"
-
-static double uniform(unsigned long *rng, double lo, double hi) { return lo + (hi - lo) * suite_uniform(rng); }
-
-static vec3 random_point(unsigned long *rng, double size)
-{
-    double x = uniform(rng, -size, size), y = uniform(rng, -size, size), z = uniform(rng, -size, size);
-    return vec3_make((real)x, (real)y, (real)z);
-}
-
-static color random_color(unsigned long *rng, double lo, double hi)
-{
-    double r = uniform(rng, lo, hi), g = uniform(rng, lo, hi), b = uniform(rng, lo, hi);
-    return color_make((real)r, (real)g, (real)b);
-}
-
-/* A unit vector at angle theta from the unit n, about a random axis. */
-static vec3 at_angle(unsigned long *rng, vec3 n, double theta)
-{
-    vec3 side;
-    do /* a random direction not along n, made perpendicular to it */
-        side = suite_random_unit(rng);
-    while (real_abs(vec3_dot(side, n)) > (real)0.9);
-    side = vec3_normalize(vec3_sub(side, vec3_scale(n, vec3_dot(side, n))));
-    return vec3_normalize(vec3_add(vec3_scale(n, (real)cos(theta)), vec3_scale(side, (real)sin(theta))));
-}
 
 static double tolerance(color k_d, color I, vec3 point, double r)
 {
@@ -50,22 +25,22 @@ static double tolerance(color k_d, color I, vec3 point, double r)
 /* lambert at a light r away along u from a random point, its answer given. */
 static void answer_lambert(unsigned long *rng, vec3 n, vec3 u, double r, const char *what)
 {
-    vec3 point = random_point(rng, 50);
-    color k_d = random_color(rng, 0.05, 1), I = random_color(rng, 0.5, 30);
+    vec3 point = seeded_point(rng, 50);
+    color k_d = seeded_color(rng, 0.05, 1), I = seeded_color(rng, 0.5, 30);
     scene_light light = {.position = vec3_add(point, vec3_scale(u, (real)r)), .intensity = I};
     color L = lambert(k_d, point, n, &light);
     const char *in = describe("lambert(k_d = (%.6g, %.6g, %.6g), point (%.6g, %.6g, %.6g), n = (%.6g, "
                               "%.6g, %.6g), light at (%.6g, %.6g, %.6g), I = (%.6g, %.6g, %.6g)) [%s]",
                               k_d.r, k_d.g, k_d.b, point.x, point.y, point.z, n.x, n.y, n.z, light.position.x,
                               light.position.y, light.position.z, I.r, I.g, I.b, what);
-    suite_answer_vec3(in, vec3_make(L.r, L.g, L.b), tolerance(k_d, I, point, r));
+    suite_answer_vec3(in, seeded_rgb(L), tolerance(k_d, I, point, r));
 }
 
 static void seeded_facing(unsigned long *rng)
 {
     for (int k = 0; k < 6; k++) {
         vec3 n = suite_random_unit(rng);
-        answer_lambert(rng, n, n, uniform(rng, 0.5, 10), "light along n");
+        answer_lambert(rng, n, n, seeded_between(rng, 0.5, 10), "light along n");
     }
 }
 
@@ -73,7 +48,8 @@ static void seeded_cosine(unsigned long *rng)
 {
     for (int k = 0; k < 8; k++) {
         vec3 n = suite_random_unit(rng);
-        answer_lambert(rng, n, at_angle(rng, n, uniform(rng, 0, acos(-1.0))), uniform(rng, 1, 6), "any angle");
+        vec3 u = seeded_at_angle(rng, n, seeded_between(rng, 0, acos(-1.0)));
+        answer_lambert(rng, n, u, seeded_between(rng, 1, 6), "any angle");
     }
 }
 
@@ -81,15 +57,16 @@ static void seeded_inverse_square(unsigned long *rng)
 {
     for (int k = 0; k < 6; k++) {
         vec3 n = suite_random_unit(rng);
-        answer_lambert(rng, n, at_angle(rng, n, uniform(rng, 0, 1.2)), pow(10, uniform(rng, 0, 3)), "far lights");
+        vec3 u = seeded_at_angle(rng, n, seeded_between(rng, 0, 1.2));
+        answer_lambert(rng, n, u, pow(10, seeded_between(rng, 0, 3)), "far lights");
     }
 }
 
 static void seeded_behind(unsigned long *rng)
 {
     for (int k = 0; k < 6; k++) {
-        vec3 n = suite_random_unit(rng), u = at_angle(rng, n, uniform(rng, 1.8, acos(-1.0)));
-        double r = uniform(rng, 0.5, 8);
+        vec3 n = suite_random_unit(rng), u = seeded_at_angle(rng, n, seeded_between(rng, 1.8, acos(-1.0)));
+        double r = seeded_between(rng, 0.5, 8);
         answer_lambert(rng, n, u, r, "light behind");
         answer_lambert(rng, vec3_neg(n), u, r, "light behind, n flipped");
     }
@@ -100,18 +77,19 @@ static void seeded_behind(unsigned long *rng)
 static void seeded_back_of_triangle(unsigned long *rng)
 {
     for (int k = 0; k < 4; k++) {
-        vec3 c = random_point(rng, 40);
+        vec3 c = seeded_point(rng, 40);
         scene desc;
         scene_init(&desc);
         scene_shader grey = scene_default_shader(SHADER_LAMBERTIAN);
-        grey.diffuse_color = random_color(rng, 0.1, 1);
+        grey.diffuse_color = seeded_color(rng, 0.1, 1);
         int s = scene_add_shader(&desc, grey);
         scene_add_surface(&desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = s,
                                                  .v0 = vec3_add(c, vec3_make(-2, -2, 0)),
                                                  .v1 = vec3_add(c, vec3_make(2, -2, 0)),
                                                  .v2 = vec3_add(c, vec3_make(0, 2, 0))});
-        vec3 to_light = vec3_make((real)uniform(rng, -2, 2), (real)uniform(rng, -2, 2), (real)uniform(rng, -5, -1));
-        color I = random_color(rng, 1, 20);
+        double lx = seeded_between(rng, -2, 2), ly = seeded_between(rng, -2, 2), lz = seeded_between(rng, -5, -1);
+        vec3 to_light = vec3_make((real)lx, (real)ly, (real)lz);
+        color I = seeded_color(rng, 1, 20);
         scene_add_light(&desc, (scene_light){.position = vec3_add(c, to_light), .intensity = I});
         ray from_behind = {vec3_add(c, vec3_make(0, 0, -4)), {0, 0, 1}};
         uint64_t rays[RAY_KINDS] = {0};
@@ -120,7 +98,7 @@ static void seeded_back_of_triangle(unsigned long *rng)
         suite_answer_vec3(describe("a triangle at (%.6g, %.6g, %.6g) seen from its back, the light %.6g away on "
                                    "the viewer's side",
                                    c.x, c.y, c.z, r),
-                          vec3_make(L.r, L.g, L.b), tolerance(grey.diffuse_color, I, c, r));
+                          seeded_rgb(L), tolerance(grey.diffuse_color, I, c, r));
         scene_free(&desc);
     }
 }
@@ -129,14 +107,14 @@ static void seeded_back_of_triangle(unsigned long *rng)
 static void seeded_inside_of_sphere(unsigned long *rng)
 {
     for (int k = 0; k < 4; k++) {
-        vec3 c = random_point(rng, 40);
-        real radius = (real)uniform(rng, 1, 5);
+        vec3 c = seeded_point(rng, 40);
+        real radius = (real)seeded_between(rng, 1, 5);
         scene desc;
         scene_init(&desc);
         scene_add_surface(&desc,
                           (scene_surface){.kind = SURFACE_SPHERE, .shader = -1, .center = c, .radius = radius});
-        color I = random_color(rng, 1, 20);
-        vec3 light = vec3_add(c, vec3_scale(suite_random_unit(rng), radius * (real)uniform(rng, 0, 0.5)));
+        color I = seeded_color(rng, 1, 20);
+        vec3 light = vec3_add(c, vec3_scale(suite_random_unit(rng), radius * (real)seeded_between(rng, 0, 0.5)));
         scene_add_light(&desc, (scene_light){.position = light, .intensity = I});
         ray inside = {vec3_add(c, vec3_scale(suite_random_unit(rng), radius * (real)0.3)), suite_random_unit(rng)};
         uint64_t rays[RAY_KINDS] = {0};
@@ -145,7 +123,7 @@ static void seeded_inside_of_sphere(unsigned long *rng)
         suite_answer_vec3(describe("a sphere of radius %.6g at (%.6g, %.6g, %.6g) seen from inside, the light "
                                    "inside",
                                    radius, c.x, c.y, c.z),
-                          vec3_make(L.r, L.g, L.b), tolerance(color_make(1, 1, 1), I, c, r));
+                          seeded_rgb(L), tolerance(color_make(1, 1, 1), I, c, r));
         scene_free(&desc);
     }
 }
