@@ -1,0 +1,22 @@
+/* Chapter 06's checks of inputs drawn at grading time (tests/answers.h):
+ * scenes drawn from the grader's seed rendered with shade_shadows, whose
+ * radiance and shadow rays depend on light_blocked at every shading point
+ * (seeded_scene.h says why the tolerance), against the reference's. */
+#include "06_shadows/shade_shadows.h"
+#include "seeded_scene.h"
+
+static void seeded_shadows(unsigned long *rng)
+{
+    static const spawn_knobs knobs = SPAWN_KNOBS_DEFAULT;
+    for (int n = 0; n < 3; n++) {
+        scene desc;
+        seeded_scene(rng, &desc, (seeded_materials){0, 0, 0});
+        seeded_trace_answers(rng, &desc, shade_shadows, &knobs, describe("shadows, scene %d", n + 1), 8);
+        scene_free(&desc);
+    }
+}
+
+SEEDED_CHECKS(SEEDED(test_occluder_between_beyond_behind, seeded_shadows),
+              SEEDED(test_light_on_a_surface, seeded_shadows),
+              SEEDED(test_shadow_rays_only_when_needed, seeded_shadows),
+              SEEDED(test_no_acne_no_leak, seeded_shadows))
