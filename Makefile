@@ -94,7 +94,7 @@ IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
         handout handout-libs reference-libs \
         figure-renderers figures check-figures snippets check-snippets check-links check fuzz fuzz-build deps-fuzz \
-        test-extremes check-grid-images globe-texture
+        test-extremes check-grid-images globe-texture check-seeded
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -390,6 +390,10 @@ check-links:
 check-snippets:
 	@tools/snippets.sh check $(SNIPPET_TEXTS)
 
+# Every graded test checks inputs drawn at grading time (tests/seeded/).
+check-seeded: $(addprefix $(BUILD)/tests/,$(CHAPTER_TESTS))
+	@tools/check-seeded.sh $^
+
 # Chapter 11 renders the images of chapter 10, byte for byte.
 check-grid-images: $(BUILD)/10_interpolation/render $(BUILD)/11_grid/render
 	@tools/check-grid-images.sh $(BUILD)
@@ -397,7 +401,7 @@ check-grid-images: $(BUILD)/10_interpolation/render $(BUILD)/11_grid/render
 # Text, skeletons and figures agree with their sources; the grid changes no
 # pixel (in the repository; a student's copy has no solutions/ to compare
 # them with).
-check: $(if $(HANDOUT),,check-skeletons check-snippets check-figures check-links check-grid-images)
+check: $(if $(HANDOUT),,check-skeletons check-snippets check-figures check-links check-grid-images check-seeded)
 	@$(if $(HANDOUT),echo "make check: nothing to check in a student's copy (it compares texts, skeletons and figures with solutions/)")
 
 # ---- tests ----------------------------------------------------------------------
@@ -478,7 +482,8 @@ help:
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	@echo "make globe-texture   write chapter 10's scenes/globe.png from globe_texture (sphere_mesh.c)"
 	@echo "make snippets        fill the code blocks of the READMEs from the source"
-	@echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-grid-images"
+	@echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-seeded"
+	@echo "                     (every graded test checks inputs drawn at grading time), check-grid-images"
 	@echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"
 	@echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
 	@echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"

@@ -61,8 +61,9 @@ typedef struct {
 #define SEEDED(test, check) {#test, check}
 /* In tests/seeded/NN_name.c: SEEDED_CHECKS(SEEDED(test_a, seeded_a), ...) */
 #define SEEDED_CHECKS(...) const seeded_check suite_seeded_checks[] = {__VA_ARGS__, {NULL, NULL}};
-/* The seeded check of test `name`, or NULL. */
+/* The seeded check of test `name`, or NULL; all of them (NULL-terminated), or NULL. */
 const seeded_check *seeded_for(const char *name);
+const seeded_check *seeded_all(void);
 
 /* cmocka's checks, each writing its record first. */
 void suite_assert_true(LargestIntegralType holds, const char *expression, const char *file, int line);

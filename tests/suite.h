@@ -9,7 +9,8 @@
  *     };
  *     SUITE_MAIN("01_camera_rays", tests)
  *
- * The binary runs all its tests; `--list` prints "name points" a line and
+ * The binary runs all its tests; `--list` prints "name points" a line,
+ * `--seeded` the tests that check inputs drawn at grading time, and
  * `--only NAME` runs one test, which is how grading isolates each test.
  * `--only NAME --answers FD --seed SEED` (tools/grade) also writes what each
  * check compares on FD and runs the test's check of inputs drawn from SEED

@@ -75,9 +75,9 @@ static void seeded_grid(unsigned long *rng)
 
 SEEDED_CHECKS(SEEDED(test_cell_range, seeded_cell_range), SEEDED(test_dda_cells, seeded_grid),
               SEEDED(test_dda_axis_steps, seeded_grid), SEEDED(test_dda_no_accumulation, seeded_grid),
-              SEEDED(test_stop_rule, seeded_grid), SEEDED(test_random_scenes, seeded_grid),
+              SEEDED(test_empty_cubes, seeded_grid), SEEDED(test_random_scenes, seeded_grid),
               SEEDED(test_zero_components, seeded_grid), SEEDED(test_origins_on_the_grid, seeded_grid),
               SEEDED(test_flat_scenes, seeded_grid), SEEDED(test_huge_among_tiny, seeded_grid),
               SEEDED(test_start_inside_spanning_cells, seeded_grid), SEEDED(test_ties_first_in_list, seeded_grid),
-              SEEDED(test_resolution, seeded_grid), SEEDED(test_march_counts, seeded_grid),
+              SEEDED(test_resolution, seeded_grid), SEEDED(test_mailbox_counts, seeded_grid),
               SEEDED(test_empty_and_single, seeded_grid))
