@@ -242,12 +242,19 @@ static int run(char *const argv[], double timeout, buffer *out, int untrusted, b
     }
     if (pipe(fds) != 0 || (answers && pipe(ans) != 0)) {
         buf_str(out, "grade: pipe failed\n");
+        scratch_remove(folder);
         return -1;
     }
     fflush(NULL);
     pid_t pid = fork();
     if (pid < 0) {
+        for (int k = 0; k < 2; k++) {
+            close(fds[k]);
+            if (answers)
+                close(ans[k]);
+        }
         buf_str(out, "grade: fork failed\n");
+        scratch_remove(folder);
         return -1;
     }
     if (pid == 0) {
@@ -309,14 +316,15 @@ static int run(char *const argv[], double timeout, buffer *out, int untrusted, b
     kill(-pid, SIGKILL); /* anything the test left running */
     if (untrusted && as_user)
         kill_user_processes(); /* also what left the process group */
-    /* Read what is left, without waiting for any stray grandchild. */
+    /* Read what is left, without waiting for any stray grandchild (nor
+     * reading for ever what one that escaped the process group writes). */
     fcntl(fds[0], F_SETFL, O_NONBLOCK);
-    while (open_out && drain(fds[0], out, OUTPUT_LIMIT))
+    for (int k = 0; k < 4096 && open_out && drain(fds[0], out, OUTPUT_LIMIT); k++)
         ;
     close(fds[0]);
     if (answers) {
         fcntl(ans[0], F_SETFL, O_NONBLOCK);
-        while (open_ans && drain(ans[0], answers, ANSWERS_LIMIT))
+        for (int k = 0; k < 8192 && open_ans && drain(ans[0], answers, ANSWERS_LIMIT); k++)
             ;
         close(ans[0]);
     }

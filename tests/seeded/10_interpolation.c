@@ -3,9 +3,10 @@
  * indices of either kind, and nearest and bilinear lookups in a texture of
  * texels, all drawn from the grader's seed, against the reference's
  * answers.  An interpolation is a few roundings of its inputs' size
- * (64 REAL_EPSILON of it); a texel index is exact; a lookup is the texel
- * (exact) or a blend of four texels at weights that carry the rounding of
- * u times the texture's width (64 REAL_EPSILON of the side). */
+ * (64 REAL_EPSILON of it); a texel index is exact; a lookup is the texel,
+ * whose byte / 255 may be rounded otherwise (byte * (1 / 255): 4
+ * REAL_EPSILON), or a blend of four texels at weights that carry the
+ * rounding of u times the texture's width (64 REAL_EPSILON of the side). */
 #include <stdlib.h>
 
 #include "10_interpolation/interpolate.h"
@@ -70,7 +71,7 @@ static void answer_lookups(unsigned long *rng, texture_filter filter)
             suite_answer_vec3(describe("texture_%s(texture %d of %d x %d texels, %s, uv (%.9g, %.9g))",
                                        filter == TEXTURE_NEAREST ? "nearest" : "bilinear", t + 1, tex.image.width,
                                        tex.image.height, tex.kind == TEXTURE_CLAMP ? "clamp" : "repeat", uv.u, uv.v),
-                              seeded_rgb(c), filter == TEXTURE_NEAREST ? 0 : 64 * REAL_EPSILON * side);
+                              seeded_rgb(c), (filter == TEXTURE_NEAREST ? 4 : 64 * side) * REAL_EPSILON);
         }
         free(tex.image.rgb);
     }
