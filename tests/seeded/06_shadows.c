@@ -8,12 +8,7 @@
 static void seeded_shadows(unsigned long *rng)
 {
     static const spawn_knobs knobs = SPAWN_KNOBS_DEFAULT;
-    for (int n = 0; n < 3; n++) {
-        scene desc;
-        seeded_scene(rng, &desc, (seeded_materials){0, 0, 0});
-        seeded_trace_answers(rng, &desc, shade_shadows, &knobs, describe("shadows, scene %d", n + 1), 8);
-        scene_free(&desc);
-    }
+    seeded_scenes(rng, (seeded_materials){0, 0, 0}, shade_shadows, &knobs, "shadows");
 }
 
 SEEDED_CHECKS(SEEDED(test_occluder_between_beyond_behind, seeded_shadows),

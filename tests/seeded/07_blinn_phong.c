@@ -49,12 +49,7 @@ static void seeded_specular(unsigned long *rng)
 static void seeded_lights(unsigned long *rng)
 {
     static const phong_knobs knobs = PHONG_KNOBS_DEFAULT;
-    for (int n = 0; n < 3; n++) {
-        scene desc;
-        seeded_scene(rng, &desc, (seeded_materials){1, 0, 0});
-        seeded_trace_answers(rng, &desc, shade_phong, &knobs, describe("shade_phong, scene %d", n + 1), 8);
-        scene_free(&desc);
-    }
+    seeded_scenes(rng, (seeded_materials){1, 0, 0}, shade_phong, &knobs, "shade_phong");
 }
 
 SEEDED_CHECKS(SEEDED(test_half_vector, seeded_half), SEEDED(test_exponent_behaviour, seeded_specular),

@@ -23,12 +23,7 @@ static void seeded_reflect(unsigned long *rng)
 static void seeded_mirrors(unsigned long *rng)
 {
     static const path_knobs knobs = PATH_KNOBS_DEFAULT;
-    for (int n = 0; n < 3; n++) {
-        scene desc;
-        seeded_scene(rng, &desc, (seeded_materials){1, 1, 0});
-        seeded_trace_answers(rng, &desc, shade_glazed, &knobs, describe("mirrors, scene %d", n + 1), 8);
-        scene_free(&desc);
-    }
+    seeded_scenes(rng, (seeded_materials){1, 1, 0}, shade_glazed, &knobs, "mirrors");
 }
 
 SEEDED_CHECKS(SEEDED(test_reflect_known, seeded_reflect), SEEDED(test_reflect_random, seeded_reflect),

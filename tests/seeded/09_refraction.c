@@ -63,12 +63,7 @@ static void seeded_fresnel(unsigned long *rng)
 static void seeded_glass(unsigned long *rng)
 {
     static const glass_knobs knobs = GLASS_KNOBS_DEFAULT;
-    for (int n = 0; n < 3; n++) {
-        scene desc;
-        seeded_scene(rng, &desc, (seeded_materials){1, 1, 1});
-        seeded_trace_answers(rng, &desc, shade_glass, &knobs, describe("glass, scene %d", n + 1), 8);
-        scene_free(&desc);
-    }
+    seeded_scenes(rng, (seeded_materials){1, 1, 1}, shade_glass, &knobs, "glass");
 }
 
 SEEDED_CHECKS(SEEDED(test_refract_normal_incidence, seeded_refract),

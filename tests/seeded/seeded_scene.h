@@ -86,4 +86,17 @@ static inline void seeded_trace_answers(unsigned long *rng, const scene *desc, s
     shading_release(view);
 }
 
+/* Three scenes drawn from rng with the materials m, each traced by eight
+ * eye rays with shade and knobs (named after `what`). */
+static inline void seeded_scenes(unsigned long *rng, seeded_materials m, shade_fn shade, const void *knobs,
+                                 const char *what)
+{
+    for (int n = 0; n < 3; n++) {
+        scene desc;
+        seeded_scene(rng, &desc, m);
+        seeded_trace_answers(rng, &desc, shade, knobs, describe("%s, scene %d", what, n + 1), 8);
+        scene_free(&desc);
+    }
+}
+
 #endif
