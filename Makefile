@@ -507,7 +507,14 @@ bench-grid:
 	@echo "make bench-grid: the benchmarks (bench/) are not in a student's copy; chapter 11's README has its results" >&2; exit 2
 endif
 
-# Hostile submissions against the autograder (make test-hostile; root only).
+# Hostile submissions against the autograder (make test-hostile; root only);
+# a student's copy has no tests/hostile/.
+ifneq ($(wildcard tests/hostile/hostile.mk),)
 include tests/hostile/hostile.mk
+else
+.PHONY: test-hostile
+test-hostile:
+	@echo "hostile submissions: not in this copy (tests/hostile/ is the repository's)"
+endif
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

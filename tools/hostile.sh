@@ -98,7 +98,9 @@ for c in $cases; do
     cp "$json" "$work/$name.json" 2>/dev/null
     score=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1], encoding="utf-8", errors="strict"))["score"])' \
         "$json" 2>"$work/$name.jsonerr") || score="invalid"
-    notes=""
+    # what the grader said first: a refusal, a failed answer, a limit
+    notes=$(grep -ohE 'refused: it holds [^;]*|grade: (failed|crashed|timed out|not run)[^\\"]*|memory: got [0-9]+ MiB' \
+        "$work/$name.out" "$json" 2>/dev/null | head -n 1 | cut -c 1-70)
     [ "$score" = invalid ] && notes="results.json is not valid UTF-8 JSON: $(tail -n 1 "$work/$name.jsonerr")"
     printf '%-18s %6s %8s %6s  %s\n' "$name" "$score" "$expected" "${took}s" "$notes"
     [ "$score" = "$expected" ] || problem "$name scored $score, expected $expected"

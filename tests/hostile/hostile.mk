@@ -12,4 +12,4 @@ $(BUILD)/hostile/record_05_lambert: $(call objs,tests/test_05_lambert.c $(TEST_S
 	$(call link,$^) -Wl,--wrap=lambert -lcmocka -o $@
 
 test-hostile:
-	@$(if $(HANDOUT),echo "hostile submissions: not in a student's copy (they need solutions/)",tools/hostile.sh)
+	@tools/hostile.sh
