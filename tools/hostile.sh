@@ -28,8 +28,9 @@ work=$(mktemp -d /tmp/rt-hostile-XXXXXX) || exit 1
 user=rtgrade
 had_user=0
 id -u "$user" >/dev/null 2>&1 && had_user=1
+keep=0 # the outputs are kept when an expectation does not hold
 cleanup() {
-    rm -rf "$work"
+    [ "$keep" = 1 ] || rm -rf "$work"
     [ "$had_user" = 1 ] || userdel "$user" >/dev/null 2>&1 || true
 }
 trap cleanup EXIT
@@ -123,7 +124,7 @@ for c in $cases; do
 done
 if [ "$problems" -gt 0 ]; then
     echo "hostile submissions: $problems problems (outputs in $work, kept)"
-    trap - EXIT
+    keep=1
     exit 1
 fi
 echo "hostile submissions: every expectation holds"
