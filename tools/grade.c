@@ -32,9 +32,11 @@
  * files of 64 MB; the whole grading stops starting tests after --budget
  * seconds (3600), and the tests not run fail, said so.
  *
- * --user NAME (as root; the autograder) runs the tests as that user: the
- * suites are copied into a fresh folder under /tmp that the user can run but
- * not change, the environment is emptied but for PATH, HOME, TMPDIR and
+ * --user NAME (as root; the autograder) runs the student's tests as that
+ * user: the student's suites are copied into a fresh folder under /tmp that
+ * the user can run but not change, while the reference's suites run as the
+ * grader, where that user can neither run them (to have them write its
+ * records) nor reach them; the environment is emptied but for PATH, HOME, TMPDIR and
  * LANG, and after every run every process of that user is killed and its
  * files in /tmp, /var/tmp and /dev/shm removed, so nothing it started (even
  * in a session or process group of its own) or left outlives its test.
@@ -192,9 +194,16 @@ static int drain(int fd, buffer *b, size_t limit)
     return n < 0 && errno == EINTR;
 }
 
-/* In the child: the limits, the folder, the user and the environment of an
- * untrusted run, then exec. */
-static void exec_untrusted(char *const argv[], const char *folder)
+/* What a run is: the reference's --list (trusted, as it is); a test of the
+ * reference's suite (no student code: limits and a folder of its own, and
+ * with --user the emptied environment, but not that user, whose processes
+ * then cannot run it or reach it); a test of the student's suite (all that,
+ * and with --user as that user). */
+typedef enum { RUN_TRUSTED, RUN_REFERENCE, RUN_STUDENT } run_kind;
+
+/* In the child: the limits, the folder, the user and the environment of a
+ * test's run, then exec. */
+static void exec_test(char *const argv[], const char *folder, run_kind kind)
 {
     struct rlimit memory = {(rlim_t)memory_mb << 20, (rlim_t)memory_mb << 20};
     struct rlimit file = {(rlim_t)file_mb << 20, (rlim_t)file_mb << 20};
@@ -204,12 +213,17 @@ static void exec_untrusted(char *const argv[], const char *folder)
     snprintf(home, sizeof home, "HOME=%s", folder);
     snprintf(tmpdir, sizeof tmpdir, "TMPDIR=%s", folder);
     if (as_user) {
-        struct rlimit procs = {256, 256};
-        setrlimit(RLIMIT_NPROC, &procs); /* threads count too */
-        if (chdir(folder) != 0 || setgroups(0, NULL) != 0 || setgid(user_gid) != 0 || setuid(user_uid) != 0 ||
-            setuid(0) == 0) {
-            fprintf(stderr, "grade: cannot become the tests' user\n");
+        if (chdir(folder) != 0) {
+            fprintf(stderr, "grade: cannot enter the test's folder\n");
             _exit(127);
+        }
+        if (kind == RUN_STUDENT) {
+            struct rlimit procs = {256, 256};
+            setrlimit(RLIMIT_NPROC, &procs); /* threads count too */
+            if (setgroups(0, NULL) != 0 || setgid(user_gid) != 0 || setuid(user_uid) != 0 || setuid(0) == 0) {
+                fprintf(stderr, "grade: cannot become the tests' user\n");
+                _exit(127);
+            }
         }
         char *env[] = {"PATH=/usr/bin:/bin", home, tmpdir, "LANG=C.UTF-8", NULL};
         execve(argv[0], argv, env);
@@ -229,13 +243,14 @@ static void exec_untrusted(char *const argv[], const char *folder)
  * ANSWERS_FD is a pipe whose records go there.  Returns the wait status, or
  * -1 when it timed out (or could not be started: then the reason is in the
  * output). */
-static int run(char *const argv[], double timeout, buffer *out, int untrusted, buffer *answers)
+static int run(char *const argv[], double timeout, buffer *out, run_kind kind, buffer *answers)
 {
     int fds[2], ans[2] = {-1, -1};
     char folder[128] = "";
-    if (untrusted) {
+    const int student = kind == RUN_STUDENT;
+    if (kind != RUN_TRUSTED) {
         snprintf(folder, sizeof folder, "%s/run-%d", sandbox, ++runs);
-        if (mkdir(folder, 0700) != 0 || (as_user && chown(folder, user_uid, user_gid) != 0)) {
+        if (mkdir(folder, 0700) != 0 || (as_user && student && chown(folder, user_uid, user_gid) != 0)) {
             buf_str(out, "grade: cannot make the test's folder\n");
             return -1;
         }
@@ -273,8 +288,8 @@ static int run(char *const argv[], double timeout, buffer *out, int untrusted, b
         unsetenv("CMOCKA_MESSAGE_OUTPUT"); /* cmocka's plain report */
         unsetenv("CMOCKA_XML_FILE");
         alarm((unsigned)timeout + 2); /* a second guard, should the grader itself die */
-        if (untrusted)
-            exec_untrusted(argv, folder);
+        if (kind != RUN_TRUSTED)
+            exec_test(argv, folder, kind);
         else
             execv(argv[0], argv);
         fprintf(stderr, "grade: cannot run %s: %s\n", argv[0], strerror(errno));
@@ -314,7 +329,7 @@ static int run(char *const argv[], double timeout, buffer *out, int untrusted, b
         waitpid(pid, &status, 0);
     }
     kill(-pid, SIGKILL); /* anything the test left running */
-    if (untrusted && as_user)
+    if (student && as_user)
         kill_user_processes(); /* also what left the process group */
     /* Read what is left, without waiting for any stray grandchild (nor
      * reading for ever what one that escaped the process group writes). */
@@ -328,9 +343,9 @@ static int run(char *const argv[], double timeout, buffer *out, int untrusted, b
             ;
         close(ans[0]);
     }
-    if (untrusted) {
+    if (kind != RUN_TRUSTED) {
         scratch_remove(folder);
-        if (as_user)
+        if (student && as_user)
             scratch_remove_owned(user_uid);
     }
     if (out->truncated)
@@ -422,7 +437,7 @@ static verdict run_test(const char *suite, const char *reference, const char *na
     char note[700] = "";
     char *ref_argv[] = {(char *)reference, "--only", (char *)name, "--answers", fd, "--seed", seed, NULL};
     buffer ref_out = {0}, ref_answers = {0}, answers = {0};
-    int ref_status = run(ref_argv, timeout, &ref_out, 1, &ref_answers);
+    int ref_status = run(ref_argv, timeout, &ref_out, RUN_REFERENCE, &ref_answers);
     judge_verdict before = judge(buf_take(&ref_answers), "", note, sizeof note);
     free(ref_out.s);
     if (before == JUDGE_SKIPPED || before == JUDGE_BROKEN || ref_status < 0) {
@@ -436,7 +451,7 @@ static verdict run_test(const char *suite, const char *reference, const char *na
         return FAILED;
     }
     char *argv[] = {(char *)suite, "--only", (char *)name, "--answers", fd, "--seed", seed, NULL};
-    int status = run(argv, timeout, out, 1, &answers);
+    int status = run(argv, timeout, out, RUN_STUDENT, &answers);
     verdict v = FAILED;
     if (answers.truncated)
         snprintf(note, sizeof note, "more than %d bytes of records", ANSWERS_LIMIT);
@@ -459,12 +474,10 @@ static verdict run_test(const char *suite, const char *reference, const char *na
 /* A file's text, "" when it is missing or empty. */
 static char *log_text(const char *path) { return strcmp(path, "-") == 0 ? xstrdup("") : read_file(path); }
 
-/* The files of one chapter (seven words of the command line): the suites
- * to run are copies in the sandbox with --user; the reference's listing
- * comes from the original. */
+/* The files of one chapter (seven words of the command line); with --user
+ * the student's suites are run from copies in the sandbox. */
 typedef struct {
     const char *chapter, *suite, *reference, *buildlog, *float_suite, *float_log, *float_reference;
-    const char *run_reference, *run_float_reference;
 } chapter_files;
 
 static int grade_chapter(const chapter_files *c, double timeout)
@@ -472,7 +485,7 @@ static int grade_chapter(const chapter_files *c, double timeout)
     const char *chapter = c->chapter, *suite = c->suite, *reference = c->reference, *float_suite = c->float_suite;
     buffer listing = {0};
     char *list_argv[] = {(char *)reference, "--list", NULL};
-    int status = run(list_argv, timeout, &listing, 0, NULL);
+    int status = run(list_argv, timeout, &listing, RUN_TRUSTED, NULL);
     if (status < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         fprintf(stderr, "grade: %s --list failed:\n%s", reference, buf_take(&listing));
         return 1;
@@ -512,11 +525,11 @@ static int grade_chapter(const chapter_files *c, double timeout)
             buf_str(&out, "grade: the student's files did not compile:\n");
             buf_str(&out, log);
         } else {
-            v = run_test(suite, c->run_reference, name, timeout, &out);
+            v = run_test(suite, c->reference, name, timeout, &out);
         }
         if (with_float && v != SKIPPED) {
             buffer fout = {0};
-            verdict fv = float_built ? run_test(float_suite, c->run_float_reference, name, timeout, &fout) : FAILED;
+            verdict fv = float_built ? run_test(float_suite, c->float_reference, name, timeout, &fout) : FAILED;
             if (fv != SKIPPED) {
                 float_tests++;
                 float_passed += fv == PASSED;
@@ -830,17 +843,12 @@ int main(int argc, char **argv)
     make_sandbox();
     int copies = 0;
     for (; k < argc; k += 7) {
-        chapter_files c = {argv[k], argv[k + 1], argv[k + 2], argv[k + 3], argv[k + 4], argv[k + 5], argv[k + 6],
-                           argv[k + 2], argv[k + 6]};
-        if (as_user) { /* the user cannot read the originals */
+        chapter_files c = {argv[k], argv[k + 1], argv[k + 2], argv[k + 3], argv[k + 4], argv[k + 5], argv[k + 6]};
+        if (as_user) { /* the user cannot read the originals; the references stay where it cannot run them */
             if (access(c.suite, X_OK) == 0)
                 c.suite = sandbox_copy(c.suite, copies++);
-            c.run_reference = sandbox_copy(c.reference, copies++);
-            if (strcmp(c.float_suite, "-") != 0) {
-                if (access(c.float_suite, X_OK) == 0)
-                    c.float_suite = sandbox_copy(c.float_suite, copies++);
-                c.run_float_reference = sandbox_copy(c.float_reference, copies++);
-            }
+            if (strcmp(c.float_suite, "-") != 0 && access(c.float_suite, X_OK) == 0)
+                c.float_suite = sandbox_copy(c.float_suite, copies++);
         }
         if (grade_chapter(&c, timeout) != 0) {
             remove_sandbox();

@@ -7,7 +7,9 @@
 # run_autograder: the five forging attacks (a constructor that forges the
 # per-test token, lambert finding it on the stack, definitions of cmocka's
 # _fail and _cmocka_run_group_tests, a table of the suite's published inputs,
-# the compiled reference re-emitted as assembly), a symlink tree with a
+# the compiled reference re-emitted as assembly; and one the grader's own
+# design invites: running the reference's suite to write the records), a
+# symlink tree with a
 # newline in a folder's name aimed at the grader's grade.conf, and the
 # resource attacks (memory, files left in HOME and /tmp, bytes that are not
 # UTF-8, a test that never ends), besides the correct solution, a correct
@@ -84,7 +86,7 @@ make_submission() {
 
 # NAME EXPECTED_SCORE: each case and what it must give (the score of 14 points).
 cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
-asm_reference:0 symlink:0 memory:0 litter:0 bad_utf8:0 hang:0"
+asm_reference:0 exec_reference:0 symlink:0 memory:0 litter:0 bad_utf8:0 hang:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
