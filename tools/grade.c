@@ -790,6 +790,17 @@ static void become_ready(const char *user)
     scratch_remove_owned(user_uid);
 }
 
+/* path from the root (it must exist), or the grader stops. */
+static const char *absolute(const char *path)
+{
+    char *full = realpath(path, NULL);
+    if (!full) {
+        fprintf(stderr, "grade: %s: %s\n", path, strerror(errno));
+        exit(1);
+    }
+    return full;
+}
+
 /* A positive number of an option, or -1. */
 static double number(const char *text, double max)
 {
@@ -844,6 +855,9 @@ int main(int argc, char **argv)
     int copies = 0;
     for (; k < argc; k += 7) {
         chapter_files c = {argv[k], argv[k + 1], argv[k + 2], argv[k + 3], argv[k + 4], argv[k + 5], argv[k + 6]};
+        c.reference = absolute(c.reference); /* a run's working folder is its own */
+        if (strcmp(c.float_reference, "-") != 0)
+            c.float_reference = absolute(c.float_reference);
         if (as_user) { /* the user cannot read the originals; the references stay where it cannot run them */
             if (access(c.suite, X_OK) == 0)
                 c.suite = sandbox_copy(c.suite, copies++);
