@@ -83,7 +83,9 @@ CHAPTER_TESTS := $(foreach c,$(CHAPTERS),$(if $(wildcard tests/test_$c.c),test_$
 FUZZ_TARGETS := scene obj options texture
 # Cross-chapter suites (the course's scenes) link every chapter and are not graded.
 CROSS_TESTS := $(if $(wildcard tests/test_scenes.c),test_scenes)
-ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS) $(if $(wildcard fuzz/fuzz.h),test_fuzz_corpus)
+# The grader's verdict (tools/judge.c) has a suite of its own.
+TOOLS_TESTS := $(if $(wildcard tests/test_tools_judge.c),test_tools_judge)
+ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS) $(if $(wildcard fuzz/fuzz.h),test_fuzz_corpus) $(TOOLS_TESTS)
 
 RENDERERS := $(foreach c,$(CHAPTERS),$(BUILD)/$c/render)
 TEST_BINS := $(addprefix $(BUILD)/tests/,$(ALL_TESTS))
@@ -133,6 +135,10 @@ endef
 $(foreach c,$(CHAPTERS),$(eval $(call chapter_rules,$c)))
 
 $(BUILD)/tests/test_scenes: $(call objs,tests/test_scenes.c $(TEST_SUPPORT) $(call stages_upto,$(lastword $(CHAPTERS))) $(COMMON_SRC))
+	@mkdir -p $(@D)
+	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+
+$(BUILD)/tests/test_tools_judge: $(call objs,tests/test_tools_judge.c $(TEST_SUPPORT) tools/judge.c $(COMMON_SRC))
 	@mkdir -p $(@D)
 	$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 

@@ -82,7 +82,8 @@ judge_verdict judge(const char *reference, const char *student, char *note, size
     if (skipped)
         return JUDGE_SKIPPED;
     if (ended != 1 || eps <= 0) {
-        snprintf(note, note_size, "the reference does not pass this test here (a problem of the grader: tell the course staff)");
+        snprintf(note, note_size,
+                 "the reference does not pass this test here (a problem of the grader: tell the course staff)");
         return JUDGE_BROKEN;
     }
     const char *pr = reference, *ps = student;
@@ -92,11 +93,13 @@ judge_verdict judge(const char *reference, const char *student, char *note, size
         if (!have_r && !have_s)
             break;
         if (!have_s) {
-            snprintf(note, note_size, "the test stopped before its check %d (a failed check, a crash or an exit)", n_checks + 1);
+            snprintf(note, note_size, "the test stopped before its check %d (a failed check, a crash or an exit)",
+                     n_checks + 1);
             return JUDGE_FAILED;
         }
         if (!have_r || strcmp(r.kind, s.kind) != 0 || s.n != arity(s.kind)) {
-            snprintf(note, note_size, "the test's checks went otherwise than the reference's from its check %d on", n_checks + 1);
+            snprintf(note, note_size, "the test's checks went otherwise than the reference's from its check %d on",
+                     n_checks + 1);
             return JUDGE_FAILED;
         }
         const char *kind = r.kind;
@@ -112,7 +115,8 @@ judge_verdict judge(const char *reference, const char *student, char *note, size
         } else if (strcmp(kind, "answer") == 0) {
             ok = within(s.v[0], r.v[0], r.v[1]);
             if (!ok) {
-                snprintf(note, note_size, "%.*s: yours %.17g, the reference's %.17g (within %.3g)", r.what_len > 400 ? 400 : r.what_len, r.what, s.v[0], r.v[0], r.v[1]);
+                snprintf(note, note_size, "%.*s: yours %.17g, the reference's %.17g (within %.3g)",
+                         r.what_len > 400 ? 400 : r.what_len, r.what, s.v[0], r.v[0], r.v[1]);
                 return JUDGE_FAILED;
             }
         } else if (strcmp(kind, "eps") == 0) {
