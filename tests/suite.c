@@ -199,8 +199,8 @@ int suite_main(const char *name, const graded_test *tests, size_t n, int argc, c
     if (seeded) { /* the seeded check: one more test, given its check and the seed */
         static struct seeded_state run;
         run = (struct seeded_state){seeded, seed};
-        plain[count++] = (struct CMUnitTest){.name = "answers to inputs drawn at grading time (the grader judges them)", .test_func = run_seeded,
-                                             .initial_state = &run};
+        plain[count++] = (struct CMUnitTest){.name = "answers to inputs drawn at grading time (the grader judges them)",
+                                             .test_func = run_seeded, .initial_state = &run};
     }
     if (answers >= 0)
         answers_open(answers);
