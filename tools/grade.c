@@ -494,7 +494,7 @@ static int grade_chapter(const chapter_files *c, double timeout)
     int with_float = strcmp(float_suite, "-") != 0;
     int float_built = with_float && access(float_suite, X_OK) == 0;
     char *log = log_text(c->buildlog), *flog = log_text(c->float_log);
-    printf("%s%s\n", chapter, built ? "" : ": the student's files do not compile; every test fails");
+    printf("%s%s\n", chapter, built ? "" : ": the student's files do not compile or were refused; every test fails");
     if (built && *log) { /* warnings: shown, not counted */
         printf("  compiler messages (not counted):\n%s", log);
         buf_str(&summary, "\n");
@@ -522,7 +522,7 @@ static int grade_chapter(const chapter_files *c, double timeout)
         buffer out = {0};
         verdict v = FAILED;
         if (!built) {
-            buf_str(&out, "grade: the student's files did not compile:\n");
+            buf_str(&out, "grade: the student's files did not compile or were refused:\n");
             buf_str(&out, log);
         } else {
             v = run_test(suite, c->reference, name, timeout, &out);
