@@ -37,8 +37,9 @@
  * the user can run but not change, while the reference's suites run as the
  * grader, where that user can neither run them (to have them write its
  * records) nor reach them; the environment is emptied but for PATH, HOME, TMPDIR and
- * LANG, and after every run every process of that user is killed and its
- * files in /tmp, /var/tmp and /dev/shm removed, so nothing it started (even
+ * LANG, and after every run every process of that user is killed (and
+ * reaped: the grader is the subreaper of the tests' orphans) and its files
+ * in /tmp, /var/tmp and /dev/shm removed, so nothing it started (even
  * in a session or process group of its own) or left outlives its test.
  *
  * Writes a score table to stdout, a Gradescope results.json (--json; the
@@ -57,6 +58,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/prctl.h>
 #include <sys/resource.h>
 #include <sys/stat.h>
 #include <sys/types.h>
@@ -175,6 +177,23 @@ static void kill_user_processes(void)
         }
         if (pid > 0)
             waitpid(pid, NULL, 0);
+    }
+}
+
+/* Waits for the test's processes that were left without a parent and came
+ * to the grader (a subreaper, see main), all killed by now: no zombie of
+ * theirs stays behind.  A short while at most. */
+static void reap_orphans(void)
+{
+    const double until = now() + 0.2;
+    while (now() < until) {
+        pid_t pid = waitpid(-1, NULL, WNOHANG);
+        if (pid < 0) /* no child left */
+            return;
+        if (pid == 0) {
+            struct timespec pause = {0, 2 * 1000 * 1000};
+            nanosleep(&pause, NULL);
+        }
     }
 }
 
@@ -329,8 +348,10 @@ static int run(char *const argv[], double timeout, buffer *out, run_kind kind, b
         waitpid(pid, &status, 0);
     }
     kill(-pid, SIGKILL); /* anything the test left running */
-    if (student && as_user)
+    if (student && as_user) {
         kill_user_processes(); /* also what left the process group */
+        reap_orphans();
+    }
     /* Read what is left, without waiting for any stray grandchild (nor
      * reading for ever what one that escaped the process group writes). */
     fcntl(fds[0], F_SETFL, O_NONBLOCK);
@@ -849,8 +870,10 @@ int main(int argc, char **argv)
         buf_str(&summary, text);
         free(text);
     }
-    if (user)
+    if (user) {
         become_ready(user);
+        prctl(PR_SET_CHILD_SUBREAPER, 1); /* the tests' orphans come to the grader, which reaps them */
+    }
     make_sandbox();
     int copies = 0;
     for (; k < argc; k += 7) {
