@@ -14,4 +14,5 @@ static void seeded_shadows(unsigned long *rng)
 SEEDED_CHECKS(SEEDED(test_occluder_between_beyond_behind, seeded_shadows),
               SEEDED(test_light_on_a_surface, seeded_shadows),
               SEEDED(test_shadow_rays_only_when_needed, seeded_shadows),
-              SEEDED(test_no_acne_no_leak, seeded_shadows))
+              SEEDED(test_no_acne_no_leak, seeded_shadows), SEEDED(test_light_behind_the_surface, seeded_shadows),
+              SEEDED(test_shadow_ray_is_the_segment, seeded_shadows))

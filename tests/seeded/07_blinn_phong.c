@@ -1,26 +1,14 @@
 /* Chapter 07's checks of inputs drawn at grading time (tests/answers.h):
- * half vectors and the specular term of a light in both forms, at points,
+ * the specular term of a light in both forms (its half vector inside it), at points,
  * normals, views and lights drawn from the grader's seed, and scenes drawn
  * from it rendered with shade_phong (the loop over the lights; seeded_scene.h
- * says why that tolerance), against the reference's answers.  A half vector
- * is a few roundings of unit vectors: 64 REAL_EPSILON.  The specular term
+ * says why that tolerance), against the reference's answers.  The specular term
  * carries light.pos - point's rounding, (1 + |point| / r) REAL_EPSILON
  * relative, times the exponent p in (n . h)^p: 64 (p + 1) (1 + |point| / r)
  * REAL_EPSILON of k_s I / r^2. */
 #include "07_blinn_phong/phong.h"
 #include "07_blinn_phong/shade_phong.h"
 #include "seeded_scene.h"
-
-static void seeded_half(unsigned long *rng)
-{
-    for (int k = 0; k < 8; k++) {
-        vec3 v = suite_random_unit(rng), l = seeded_at_angle(rng, v, seeded_between(rng, 0, 2.8));
-        vec3 h = half_vector(v, l);
-        suite_answer_vec3(describe("half_vector(v = (%.9g, %.9g, %.9g), l = (%.9g, %.9g, %.9g))", v.x, v.y, v.z,
-                                   l.x, l.y, l.z),
-                          h, 64 * REAL_EPSILON);
-    }
-}
 
 static void seeded_specular(unsigned long *rng)
 {
@@ -52,7 +40,7 @@ static void seeded_lights(unsigned long *rng)
     seeded_scenes(rng, (seeded_materials){1, 0, 0}, shade_phong, &knobs, "shade_phong");
 }
 
-SEEDED_CHECKS(SEEDED(test_half_vector, seeded_half), SEEDED(test_exponent_behaviour, seeded_specular),
+SEEDED_CHECKS(SEEDED(test_half_vector, seeded_specular), SEEDED(test_exponent_behaviour, seeded_specular),
               SEEDED(test_course_and_lecture_forms, seeded_specular),
               SEEDED(test_specular_per_channel, seeded_specular),
               SEEDED(test_two_lights_add, seeded_lights), SEEDED(test_ambient_and_lights_behind, seeded_lights),
