@@ -82,7 +82,9 @@ comma := ,
 link = $(CC) $(LDFLAGS) $(filter %.o,$1) $(if $(filter %.a,$1),-Wl$(comma)--whole-archive $(filter %.a,$1) -Wl$(comma)--no-whole-archive) $(LDLIBS)
 objs = $(patsubst %.c,$(BUILD)/obj/%.o,$1)
 
-TEST_SUPPORT := tests/suite.c tests/image_compare.c
+TEST_SUPPORT := tests/suite.c tests/answers.c tests/image_compare.c
+# A chapter's checks of inputs drawn at grading time (tests/answers.h), when it has them.
+seeded = $(wildcard tests/seeded/$1.c)
 # Suites of common/ link common/ only; a chapter's suite links its stages.
 COMMON_TESTS := $(sort $(basename $(notdir $(wildcard tests/test_common_*.c))))
 CHAPTER_TESTS := $(foreach c,$(CHAPTERS),$(if $(wildcard tests/test_$c.c),test_$c))
@@ -91,7 +93,9 @@ CHAPTER_TESTS := $(foreach c,$(CHAPTERS),$(if $(wildcard tests/test_$c.c),test_$
 FUZZ_TARGETS := scene obj options texture
 # Cross-chapter suites (the course's scenes) link every chapter and are not graded.
 CROSS_TESTS := $(if $(wildcard tests/test_scenes.c),test_scenes)
-ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS) $(if $(wildcard fuzz/fuzz.h),test_fuzz_corpus)
+# The grader's verdict (tools/judge.c) has a suite of its own.
+TOOLS_TESTS := $(if $(wildcard tests/test_tools_judge.c),test_tools_judge)
+ALL_TESTS := $(COMMON_TESTS) $(CHAPTER_TESTS) $(CROSS_TESTS) $(if $(wildcard fuzz/fuzz.h),test_fuzz_corpus) $(TOOLS_TESTS)
 
 # Labs: chapters/NN_name/lab/ holds what measures or proves the lesson beside
 # it (counts, tables, sweeps, heat maps, the fast grid).  A lab is its own
@@ -117,7 +121,7 @@ IMAGES := $(foreach c,$(CHAPTERS),$(OUT)/$c.png)
 .PHONY: all renderers tests test test-suites deps help clean skeletons check-skeletons grade grade-run autograder \
         handout handout-libs reference-libs \
         figure-renderers figures check-figures snippets check-snippets outputs check-outputs check-lessons check-links check fuzz fuzz-build deps-fuzz \
-        test-extremes check-grid-images globe-texture
+        test-extremes check-grid-images globe-texture check-seeded
 all: renderers $(if $(filter 1,$(SANITIZE)),,$(IMAGES))
 renderers: $(RENDERERS)
 tests: $(TEST_BINS)
@@ -144,7 +148,7 @@ $(OUT)/$1.png: $(BUILD)/$1/render
 	@mkdir -p $(OUT)
 	$(Q)$(BUILD)/$1/render -o $$@
 
-$(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call stages_upto,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
+$(BUILD)/tests/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call seeded,$1)) $(call stages_upto,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
 	$$(QLINK)$$(call link,$$^) -lcmocka -o $$@
 
@@ -164,6 +168,10 @@ endef
 $(foreach c,$(CHAPTERS),$(eval $(call chapter_rules,$c)))
 
 $(BUILD)/tests/test_scenes: $(call objs,tests/test_scenes.c $(TEST_SUPPORT) $(call stages_upto,$(lastword $(CHAPTERS))) $(COMMON_SRC))
+	@mkdir -p $(@D)
+	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
+
+$(BUILD)/tests/test_tools_judge: $(call objs,tests/test_tools_judge.c $(TEST_SUPPORT) tools/judge.c $(COMMON_SRC))
 	@mkdir -p $(@D)
 	$(QLINK)$(CC) $(LDFLAGS) $^ $(LDLIBS) -lcmocka -o $@
 
@@ -260,6 +268,9 @@ GRADE_FLOAT ?= 1
 # GRADE_NOTES=file is shown above the results (the autograder's file list).
 GRADE_USER ?=
 GRADE_NOTES ?=
+# The whole grading's time (seconds) and each test's memory (MB): tools/grade.
+GRADE_BUDGET ?= 3600
+GRADE_MEMORY ?= 1024
 ifeq ($(filter $(SOURCE),chapters solutions reference),)
 $(error SOURCE must be chapters, reference or solutions, not '$(SOURCE)')
 endif
@@ -279,7 +290,7 @@ grade_from_reference = $(strip $(foreach c,$(if $(filter chapters,$(SOURCE)),$(f
 grade_links = $1: $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addprefix chapters/$1/,$(EXERCISES_$1)),no exercise files of its own)$(if $(call grade_from_reference,$1),$(comma) with ))$(if $(call grade_from_reference,$1),chapter$(if $(word 2,$(call grade_from_reference,$1)),s) $(call grade_from_reference,$1) from the reference ($(REFERENCE_WORDS)))
 
 define grade_rules
-$(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT)) $(call grade_stages,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
+$(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call seeded,$1)) $(call grade_stages,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
 	$$(QLINK)$$(call link,$$^) -lcmocka -o $$@
 endef
@@ -306,26 +317,50 @@ grade-run: $(BUILD)/tools/grade
 	        echo "$$c: not graded, its reference suite does not build (see $(GRADE_DIR)/reference_$$c.log)"; \
 	        missing="$$missing $$c"; continue; \
 	    fi; \
+	    case $$c in $(foreach c,$(GRADE_CHAPTERS),$c$(rparen) ex="$(EXERCISES_$c)";;) esac; \
 	    rm -f $(GRADE_DIR)/test_$$c $(BUILD)/obj/chapters/$$c/*.o; \
 	    $(MAKE) --no-print-directory -s WERROR= COMPILE_AS=$(GRADE_USER) $(GRADE_DIR)/test_$$c >$(GRADE_DIR)/test_$$c.log 2>&1 || { \
 	        echo "$$c: the files of $(SOURCE)/$$c/ do not compile:"; tail -n 20 $(GRADE_DIR)/test_$$c.log; }; \
-	    float=- float_log=-; \
+	    $(call grade_check,$(GRADE_DIR)/test_$$c,$(if $(HANDOUT),reference/double/lib$$c.a,$(BUILD)/obj/solutions/$$c),$(BUILD),print); \
+	    float=- float_log=- float_ref=-; \
 	    if [ "$(GRADE_FLOAT)" = 1 ]; then \
-	        float=$(FLOAT_GRADE_DIR)/test_$$c float_log=$(FLOAT_GRADE_DIR)/test_$$c.log; \
+	        float=$(FLOAT_GRADE_DIR)/test_$$c float_log=$(FLOAT_GRADE_DIR)/test_$$c.log float_ref=$(BUILD)-float/tests/test_$$c; \
+	        $(MAKE) --no-print-directory -s BUILD=$(BUILD)-float REAL=float $$float_ref >$(FLOAT_GRADE_DIR)/reference_$$c.log 2>&1 || { \
+	            echo "$$c: not graded, its float reference suite does not build (see $(FLOAT_GRADE_DIR)/reference_$$c.log)"; \
+	            missing="$$missing $$c"; continue; }; \
 	        rm -f $$float $(BUILD)-float/obj/chapters/$$c/*.o; \
 	        $(MAKE) --no-print-directory -s BUILD=$(BUILD)-float REAL=float WERROR= COMPILE_AS=$(GRADE_USER) $$float \
 	            >$$float_log 2>&1 || true; \
+	        $(call grade_check,$$float,$(if $(HANDOUT),reference/float/lib$$c.a,$(BUILD)-float/obj/solutions/$$c),$(BUILD)-float,); \
 	    fi; \
-	    set -- "$$@" $$c $(GRADE_DIR)/test_$$c $(BUILD)/tests/test_$$c $(GRADE_DIR)/test_$$c.log $$float $$float_log; \
+	    set -- "$$@" $$c $(GRADE_DIR)/test_$$c $(BUILD)/tests/test_$$c $(GRADE_DIR)/test_$$c.log $$float $$float_log $$float_ref; \
 	done; \
 	$(foreach c,$(GRADE_CHAPTERS),echo "$(call grade_links,$c)" >>$$notes;) \
 	echo "grading $(SOURCE)/ ($(TIMEOUT) s per test$(if $(filter 1,$(GRADE_FLOAT)),; the float build is reported, not scored))"; \
 	cat $$notes; \
-	$(BUILD)/tools/grade --timeout $(TIMEOUT) --json $(GRADE_JSON) --junit $(GRADE_JUNIT) --notes $$notes \
+	$(BUILD)/tools/grade --timeout $(TIMEOUT) --budget $(GRADE_BUDGET) --memory $(GRADE_MEMORY) \
+	    --json $(GRADE_JSON) --junit $(GRADE_JUNIT) --notes $$notes \
 	    $(if $(GRADE_USER),--user $(GRADE_USER)) \
 	    $(if $(filter-out chapters,$(SOURCE)),--require-full) "$$@" || exit 1; \
 	echo "wrote $(GRADE_JSON) (Gradescope) and $(GRADE_JUNIT) (JUnit)"; \
 	if [ -n "$$missing" ]; then echo "not graded:$$missing"; exit 1; fi
+
+rparen := )
+# $(call grade_check,SUITE,REFERENCE,BUILD,print): the student's objects of
+# chapter $$c (files $$ex) checked before their suite is run
+# (tools/check-exercise.sh): a refusal removes SUITE and goes into its log
+# (and, with print, on the terminal); a match of the reference's code is
+# flagged on the terminal (with print) only, for the instructor.
+grade_check = $(if $(filter chapters,$(SOURCE)),if [ -x $1 ]; then \
+	    CC="$(CC)" CPPFLAGS="$(CPPFLAGS) $(if $(findstring float,$3),-DRT_REAL_FLOAT)" \
+	        tools/check-exercise.sh $2 chapters/$$c $3/obj/chapters/$$c $$ex >$1.check || { rm -f $1; \
+	        grep refused $1.check >>$1.log; }; \
+	    $(if $4,cat $1.check;) fi,true)
+
+# The grader: tools/grade.c, the verdict (judge.c) and the scratch folders (scratch.c).
+$(BUILD)/tools/grade: $(addprefix $(BUILD)/obj/tools/,grade.o judge.o scratch.o)
+	@mkdir -p $(@D)
+	$(QLINK)$(CC) $^ -lm -o $@
 
 # ---- the student's copy and the autograder ---------------------------------------
 #
@@ -357,7 +392,8 @@ handout: handout-libs
 AUTOGRADER ?= $(GRADE_BUILD)/autograder$(if $(CHAPTER),-$(CHAPTER)).zip
 autograder: handout-libs
 	@$(if $(CHAPTER),$(if $(GRADE_CHAPTERS),,echo "make autograder: no chapter '$(CHAPTER)' has a test suite" >&2; exit 2))
-	@tools/autograder.sh $(AUTOGRADER) "$(CHAPTER)" "$(TIMEOUT)" build-handout/reference build-handout-float/reference
+	@tools/autograder.sh $(AUTOGRADER) "$(CHAPTER)" "$(TIMEOUT)" build-handout/reference build-handout-float/reference \
+	    $(if $(filter command line environment,$(origin GRADE_BUDGET)),$(GRADE_BUDGET),1200)
 
 # ---- figures: the lecture figures of each chapter, rendered by its solution --------
 
@@ -426,6 +462,10 @@ check-outputs: renderers
 check-lessons:
 	@tools/lesson-lines.sh --check
 
+# Every graded test checks inputs drawn at grading time (tests/seeded/).
+check-seeded: $(addprefix $(BUILD)/tests/,$(CHAPTER_TESTS))
+	@tools/check-seeded.sh $^
+
 # Chapter 11 renders the images of chapter 10, byte for byte.
 check-grid-images: $(BUILD)/10_interpolation/render $(BUILD)/11_grid/render $(BUILD)/11_grid/lab
 	@tools/check-grid-images.sh $(BUILD)
@@ -433,7 +473,7 @@ check-grid-images: $(BUILD)/10_interpolation/render $(BUILD)/11_grid/render $(BU
 # Text, skeletons and figures agree with their sources; the grid changes no
 # pixel (in the repository; a student's copy has no solutions/ to compare
 # them with).
-check: $(if $(HANDOUT),,check-skeletons check-snippets check-outputs check-lessons check-figures check-links check-grid-images)
+check: $(if $(HANDOUT),,check-skeletons check-snippets check-outputs check-lessons check-figures check-links check-grid-images check-seeded)
 	@$(if $(HANDOUT),echo "make check: nothing to check in a student's copy (it compares texts, skeletons and figures with solutions/)")
 
 # ---- tests ----------------------------------------------------------------------
@@ -456,7 +496,9 @@ test-make: $(foreach c,$(filter 04_% 07_% 11_%,$(CHAPTERS)),$(BUILD)/$c/render)
 
 # The double build, the float build and the sanitizer build (with the
 # renders at the extremes and the fuzz corpus replay), then the build's own
-# checks and the checks that text, skeletons and figures match their sources.
+# checks and the checks that text, skeletons and figures match their sources,
+# the book in Chromium, then (as root) the hostile submissions against the
+# autograder.
 test:
 	@rm -f build*/test-results.txt
 	$(Q)$(MAKE) --no-print-directory test-suites
@@ -467,6 +509,7 @@ test:
 	$(Q)$(MAKE) --no-print-directory test-make
 	$(Q)$(MAKE) --no-print-directory check
 	$(Q)$(MAKE) --no-print-directory test-book
+	$(Q)$(MAKE) --no-print-directory test-hostile
 
 # ---- bench: the speed/accuracy measurements of docs/measurements.md ----------------
 #
@@ -507,10 +550,11 @@ help:
 	$(REPO_ONLY)echo "make STUDENT=1       the same from the student's files in chapters/ (into build-student/)"
 	$(COPY_ONLY)echo "                     (here from your files in chapters/, into build-student/ and out-student/)"
 	$(COPY_ONLY)echo "make STUDENT=0       the reference renderers (from reference/) into build/, their images into out/"
-	$(REPO_ONLY)echo "make test            all suites: double, float (REAL=float) and sanitizer builds, then make check"
+	$(REPO_ONLY)echo "make test            all suites: double, float (REAL=float) and sanitizer builds, make check, test-hostile"
 	$(COPY_ONLY)echo "make test            all suites on all your files: double, float (REAL=float) and sanitizer builds"
 	@echo "make test-make       the build's own behaviour: output, image folders, packages, the student's copy"
 	@echo "make test-extremes   every renderer over tests/extremes/ and the other scenes, failing on NaN"
+	@echo "make test-hostile    hostile submissions against chapter 05's autograder under a fake root (root only)"
 	@echo "make renderers       build every chapter's renderer into $(BUILD)/NN_name/render"
 	@echo "make tests           build the test suites of this build"
 	@echo "make test-suites     run the suites of this build only"
@@ -529,7 +573,8 @@ help:
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	$(REPO_ONLY)echo "make globe-texture   write chapter 10's scenes/globe.png from globe_texture (sphere_mesh.c)"
 	$(REPO_ONLY)echo "make snippets        fill the code blocks of the READMEs from the source"
-	$(REPO_ONLY)echo "make check           check-skeletons, -snippets, -outputs, -lessons (docs/design.md), -figures, -links, -grid-images"
+	$(REPO_ONLY)echo "make check           check-skeletons, -snippets, -outputs, -lessons (docs/design.md), -figures, -links, -grid-images,"
+	$(REPO_ONLY)echo "                     -seeded (every graded test checks inputs drawn at grading time)"
 	$(REPO_ONLY)echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"
 	$(REPO_ONLY)echo "make bench           measure every knob's cost and benefit, POV-Ray, growth, threads: writes"
 	$(REPO_ONLY)echo "                     docs/measurements.md and docs/figures/bench_*.png (not part of make test)"
@@ -556,6 +601,16 @@ else
 .PHONY: bench-grid
 bench-grid:
 	@echo "make bench-grid: the benchmarks (bench/) are not in a student's copy; chapter 11's README has its results" >&2; exit 2
+endif
+
+# Hostile submissions against the autograder (make test-hostile; root only);
+# a student's copy has no tests/hostile/.
+ifneq ($(wildcard tests/hostile/hostile.mk),)
+include tests/hostile/hostile.mk
+else
+.PHONY: test-hostile
+test-hostile:
+	@echo "hostile submissions: not in this copy (tests/hostile/ is the repository's)"
 endif
 
 -include $(shell find $(BUILD) -name '*.d' 2>/dev/null)

@@ -9,11 +9,13 @@
  *     };
  *     SUITE_MAIN("01_camera_rays", tests)
  *
- * The binary runs all its tests; `--list` prints "name points" a line and
+ * The binary runs all its tests; `--list` prints "name points" a line,
+ * `--seeded` the tests that check inputs drawn at grading time, and
  * `--only NAME` runs one test, which is how grading isolates each test.
- * `--only NAME --report FD` (tools/grade) also reads a token from FD before
- * the test and writes "TOKEN FAILED" there after it, which code under test
- * cannot fake by printing cmocka's lines or calling exit(0).
+ * `--only NAME --answers FD --seed SEED` (tools/grade) also writes what each
+ * check compares on FD and runs the test's check of inputs drawn from SEED
+ * (answers.h): the grader decides from that, never from what the process
+ * that ran the student's code says.
  *
  * Debian's cmocka 1.1.5 has no assert for doubles with a tolerance:
  * assert_close() prints the expected and actual values and the tolerance.
@@ -28,6 +30,7 @@
 
 #include <cmocka.h>
 
+#include "answers.h"
 #include "vec3.h"
 
 typedef struct {

@@ -1,11 +1,12 @@
 #!/bin/bash
-# autograder.sh ZIP CHAPTER TIMEOUT DOUBLE_LIBS FLOAT_LIBS - a Gradescope autograder.
+# autograder.sh ZIP CHAPTER TIMEOUT DOUBLE_LIBS FLOAT_LIBS [BUDGET] - a Gradescope autograder.
 #
 # The zip holds, at its root (Gradescope unpacks it into /autograder/source),
 # a student's copy of the project (tools/handout.sh: no solution source, the
 # compiled reference libraries from DOUBLE_LIBS and FLOAT_LIBS), Gradescope's
 # setup.sh and run_autograder, and grade.conf (CHAPTER, 01 or 01_camera_rays,
-# empty for every chapter, and TIMEOUT, seconds per test).
+# empty for every chapter, TIMEOUT, seconds per test, and BUDGET, seconds for
+# the whole grading, 1200 unless given).
 #
 # setup.sh (once, as root, on Gradescope's Ubuntu 22.04 image) installs the
 # Debian packages, creates the unprivileged user the tests run as, closes
@@ -22,6 +23,7 @@ zip=${1:?usage: autograder.sh ZIP CHAPTER TIMEOUT DOUBLE_LIBS FLOAT_LIBS}
 chapter=$2
 timeout=${3:-10}
 double_libs=${4:?} float_libs=${5:?}
+budget=${6:-1200}
 
 if ! command -v zip >/dev/null 2>&1; then
     if [ "$(id -u)" = 0 ]; then
@@ -41,7 +43,7 @@ fi
 stage=$(mktemp -d) || exit 1
 trap 'rm -rf "$stage"' EXIT
 tools/handout.sh "$stage/zip" "$double_libs" "$float_libs" >/dev/null || exit 1
-printf 'CHAPTER=%s\nTIMEOUT=%s\n' "$chapter" "$timeout" >"$stage/zip/grade.conf"
+printf 'CHAPTER=%s\nTIMEOUT=%s\nBUDGET=%s\n' "$chapter" "$timeout" "$budget" >"$stage/zip/grade.conf"
 
 cat >"$stage/zip/setup.sh" <<'SETUP'
 #!/bin/bash
@@ -87,7 +89,8 @@ rm -f "$root/results/results.json"
 notes=build-grade/submission.txt
 mkdir -p build-grade
 tools/take-submission.sh "$root/submission" pristine "$CHAPTER" >"$notes"
-make --no-print-directory grade CHAPTER="$CHAPTER" TIMEOUT="$TIMEOUT" GRADE_USER="$user" GRADE_NOTES="$notes" \
+make --no-print-directory grade CHAPTER="$CHAPTER" TIMEOUT="$TIMEOUT" GRADE_BUDGET="$BUDGET" GRADE_USER="$user" \
+    GRADE_NOTES="$notes" \
     GRADE_JSON="$root/results/results.json" GRADE_JUNIT=build-grade/junit.xml
 if [ ! -s "$root/results/results.json" ]; then
     printf '{"score": 0, "output": "The grader could not run; please tell the course staff.", "tests": []}\n' \

@@ -4,8 +4,8 @@
 # DEST gets the project without solutions/: Makefile, README.md (the
 # repository's first paragraph, a section for the student, the copy's layout
 # and the repository's sections that hold for it), common/, chapters/ (the
-# skeletons), tests/, tools/, docs/ (without the instructor's guide and
-# CONTRIBUTING.md, and without the links to them), and reference/double/ and
+# skeletons), tests/ (without tests/hostile/), tools/, docs/ (without the
+# instructor's guide and CONTRIBUTING.md, and without the links to them), and reference/double/ and
 # reference/float/, the compiled reference of each chapter's exercise files
 # (libNN_name.a from DOUBLE_LIBS and FLOAT_LIBS, which `make handout` builds).
 # The Makefile of the copy finds them: grading chapter N links the student's
@@ -48,6 +48,7 @@ if [ -e "$dest" ] && [ -n "$(ls -A "$dest")" ]; then
 fi
 mkdir -p "$dest/reference/double" "$dest/reference/float" || exit 1
 cp -R Makefile common chapters tests tools docs "$dest/" || exit 1
+rm -rf "$dest/tests/hostile" # the attacks on the autograder hold a correct chapter 05
 [ -e .gitignore ] && cp .gitignore "$dest/"
 cp "$double_libs"/lib*.a "$dest/reference/double/" || exit 1
 cp "$float_libs"/lib*.a "$dest/reference/float/" || exit 1

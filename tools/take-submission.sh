@@ -9,8 +9,12 @@
 #   its name, FILE.c, anywhere (when no other chapter has a file of that name);
 #   its name as a browser or a file manager changes it on a second upload or
 #   a copy: "FILE (1).c", "FILE-1.c", "FILE_1.c", "FILE copy.c", "FILE copy 2.c".
-# Only regular files are taken (never a link), and nothing but these files:
-# a submission cannot replace a test, a header or common/.  Prints one line
+# Only regular files are taken, and nothing but these files: a submission
+# cannot replace a test, a header or common/.  A link, a folder reached
+# through one, anything but a regular file, a name holding a control
+# character (a newline: names are listed one a line) and a file over 1 MB
+# are never taken, each said so; a file is taken only when its real path
+# lies inside the submission.  Prints one line
 # per file (used, renamed, or missing: the skeleton is graded) and the
 # submitted files that were not used; the grader shows these lines above the
 # results.  The exercise files of a chapter are those with a solution, or in
@@ -34,9 +38,34 @@ exercises() { # "NN_name FILE.c" lines
 
 list=$(exercises)
 used=$(mktemp)
-trap 'rm -f "$used"' EXIT
-# The submission's regular files, by path below it.
-files=$(cd "$submission" 2>/dev/null && find . -type f -size -1024k | sed 's|^\./||' | sort)
+notes=$(mktemp)
+trap 'rm -f "$used" "$notes"' EXIT
+limit=1048576 # bytes: a larger file is not taken
+real_submission=$(realpath -e "$submission" 2>/dev/null) || real_submission=/nonexistent
+# shown NAME: the name with every control character as '?', for the notes.
+shown() { printf '%s' "$1" | tr '\000-\037\177' '?'; }
+# The submission's regular files, by path below it, one a line: names with a
+# control character, links and other kinds, and large files go to the notes.
+files=$(cd "$submission" 2>/dev/null && find . -mindepth 1 -print0 | sort -z |
+    while IFS= read -r -d '' path; do
+        path=${path#./}
+        if [[ $path == *[[:cntrl:]]* ]]; then
+            echo "$(shown "$path") (a name with a control character: never taken)" >>"$notes"
+        elif [ -L "$path" ]; then
+            echo "$path (a link: never taken)" >>"$notes"
+        elif [ -d "$path" ]; then
+            :
+        elif [ ! -f "$path" ]; then
+            echo "$path (not a regular file: never taken)" >>"$notes"
+        elif [ "$(stat -c %s -- "$path")" -gt "$limit" ]; then
+            echo "$path (over 1 MB: never taken)" >>"$notes"
+        else
+            case $(realpath -e -- "$path" 2>/dev/null) in
+            "$real_submission"/*) printf '%s\n' "$path" ;;
+            *) echo "$path (outside the submission: never taken)" >>"$notes" ;;
+            esac
+        fi
+    done)
 
 echo "Files taken from your submission:"
 while read -r c f; do
@@ -63,7 +92,9 @@ while read -r c f; do
         fi
     fi
     if [ -n "$found" ]; then
-        cp "$submission/$found" "chapters/$c/$f" || exit 1
+        # a regular file, not a link, inside the submission (checked again)
+        [ -f "$submission/$found" ] && [ ! -L "$submission/$found" ] || exit 1
+        head -c "$limit" -- "$submission/$found" >"chapters/$c/$f" || exit 1
         echo "$found" >>"$used"
         echo "  chapters/$c/$f: your $found$how"
     else
@@ -71,8 +102,7 @@ while read -r c f; do
     fi
 done <<<"$list"
 unused=$(printf '%s\n' "$files" | grep -vxF -f "$used" | grep . | head -n 20)
-links=$(cd "$submission" 2>/dev/null && find . -type l | sed 's|^\./||' | sort | head -n 20)
-[ -n "$links" ] && unused=$(printf '%s\n%s\n' "$unused" "$(printf '%s\n' "$links" | sed 's/$/ (a link: never taken)/')" | grep .)
+[ -s "$notes" ] && unused=$(printf '%s\n%s\n' "$unused" "$(head -n 20 "$notes")" | grep .)
 if [ -n "$unused" ]; then
     echo "Not used (only the graded chapter's exercise files are):"
     printf '%s\n' "$unused" | sed 's/^/  /'

@@ -1,0 +1,81 @@
+#!/bin/bash
+# check-exercise.sh REFERENCE SOURCE_DIR OBJECT_DIR FILE.c... - what a student's exercise objects may hold.
+#
+# Before a graded suite links a student's exercise files (chapters/NN_name/
+# FILE.c, compiled into OBJECT_DIR/FILE.o), each object may define only the
+# functions the reference's object of that file defines (REFERENCE: a
+# folder of objects, or a library reference/REAL/libNN_name.a, member
+# FILE.o), and static helpers; nothing else:
+#   - no other global symbol (a definition of cmocka's _fail, of a libc or
+#     project function, a global variable), and no indirect function (ifunc,
+#     whose resolver would run before main);
+#   - no constructor or destructor (.init_array, .fini_array, .ctors,
+#     .dtors, .preinit_array, .init, .fini sections);
+#   - no assembly (asm, __asm__ after preprocessing, which also rules out
+#     .incbin): the source is preprocessed with $CC $CPPFLAGS.
+# A refusal is one line on stdout naming the file and what was found, and
+# the exit status is 1.  An exercise function whose instructions are the
+# reference's, one for one, is flagged on stdout ("matches the compiled
+# reference"; it is graded as usual: the instructor decides).
+set -u
+reference=${1:?usage: check-exercise.sh REFERENCE SOURCE_DIR OBJECT_DIR FILE.c...}
+sources=${2:?} objects=${3:?}
+case $reference in /*) ;; *) reference=$(pwd)/$reference ;; esac
+shift 3
+tmp=$(mktemp -d) || exit 1
+trap 'rm -rf "$tmp"' EXIT
+status=0
+
+# reference_object FILE.o: the reference's object of that file, in $tmp.
+reference_object() {
+    if [ -d "$reference" ]; then
+        echo "$reference/$1"
+    else
+        (cd "$tmp" && ar p "$reference" "$1" >"ref-$1") && echo "$tmp/ref-$1"
+    fi
+}
+# The instructions of function $2 in object $1, without addresses, bytes or relocation targets.
+instructions() {
+    objdump -d --no-show-raw-insn --disassemble="$2" "$1" 2>/dev/null |
+        awk -F'\t' '/^ *[0-9a-f]+:\t/ { sub(/ *[#<].*/, "", $2); print $2 }'
+}
+
+for file in "$@"; do
+    src=$sources/$file obj=$objects/${file%.c}.o
+    ref=$(reference_object "${file%.c}.o") || { echo "$src: no reference object to check it against" >&2; exit 1; }
+    allowed=$(nm -g --defined-only "$ref" | awk '{ print $3 }' | sort -u)
+    defined=$(nm -g --defined-only "$obj" | awk '{ print $2 " " $3 }')
+    problems=""
+    while read -r type name; do
+        [ -n "$name" ] || continue
+        if [ "$type" = i ]; then
+            problems="$problems, an indirect function $name (its resolver runs before main)"
+        elif ! printf '%s\n' "$allowed" | grep -qxF -- "$name"; then
+            problems="$problems, a definition of $name"
+        fi
+    done <<<"$defined"
+    sections=$(objdump -h "$obj" | awk '$2 ~ /^\.(init_array|fini_array|preinit_array|ctors|dtors|init|fini)($|\.)/ { print $2 }' | sort -u | tr '\n' ' ')
+    [ -n "$sections" ] && problems="$problems, a constructor or destructor (section ${sections% })"
+    # Assembly, after preprocessing: the identifiers asm, __asm, __asm__ in
+    # the file's own lines (headers of the C library have theirs), outside
+    # strings and characters.  The file compiled, so what it includes is
+    # there (and was readable by whoever compiled it).
+    if ! timeout -k 5 60 ${CC:-cc} ${CPPFLAGS:-} -E - <"$src" >"$tmp/pre.c" 2>/dev/null; then
+        problems="$problems, something the preprocessor cannot read again"
+    elif awk '/^# [0-9]+ "/ { own = $3 == "\"<stdin>\""; next } own' "$tmp/pre.c" |
+        sed -E 's/"([^"\\]|\\.)*"//g; s/'\''([^'\''\\]|\\.)*'\''//g' | grep -qE '(^|[^A-Za-z0-9_])(__)?asm(__)?($|[^A-Za-z0-9_])'; then
+        problems="$problems, assembly (asm)"
+    fi
+    if [ -n "$problems" ]; then
+        echo "$src: refused: it holds ${problems#, }; an exercise file may define only $(echo $allowed | sed 's/ /, /g') (helpers static), in C"
+        status=1
+        continue
+    fi
+    for f in $allowed; do
+        mine=$(instructions "$obj" "$f")
+        if [ -n "$mine" ] && [ "$mine" = "$(instructions "$ref" "$f")" ]; then
+            echo "$src: $f matches the compiled reference instruction for instruction (flagged for the instructor; graded as usual)"
+        fi
+    done
+done
+exit $status

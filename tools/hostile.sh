@@ -1,0 +1,134 @@
+#!/bin/bash
+# hostile.sh [ZIP] - hostile submissions against chapter 05's autograder under a fake root.
+#
+# Sets up the Gradescope zip (ZIP, or `make autograder CHAPTER=05` built
+# here) as docs/instructor-guide.md says, under a folder of /tmp standing for
+# /autograder, and grades each submission of tests/hostile/ with its
+# run_autograder: the five forging attacks (a constructor that forges the
+# per-test token, lambert finding it on the stack, definitions of cmocka's
+# _fail and _cmocka_run_group_tests, a table of the suite's published inputs,
+# the compiled reference re-emitted as assembly; and one the grader's own
+# design invites: running the reference's suite to write the records), a
+# symlink tree with a
+# newline in a folder's name aimed at the grader's grade.conf, and the
+# resource attacks (memory, files left in HOME and /tmp, bytes that are not
+# UTF-8, a test that never ends), besides the correct solution, a correct
+# one written otherwise and an empty submission.  Prints one line per
+# submission (score, expected, what was checked) and fails naming every
+# expectation that does not hold (HOSTILE_ONLY="table hang" runs only
+# those).  Needs root (a fake root, a user to run the
+# tests as): otherwise it says so in one line and succeeds.
+set -u
+if [ "$(id -u)" != 0 ]; then
+    echo "hostile submissions: skipped (they need root, for the fake /autograder and the grading user)"
+    exit 0
+fi
+repo=$(pwd)
+here=$repo/tests/hostile
+zip=${1:-}
+work=$(mktemp -d /tmp/rt-hostile-XXXXXX) || exit 1
+user=rtgrade
+had_user=0
+id -u "$user" >/dev/null 2>&1 && had_user=1
+keep=0 # the outputs are kept when an expectation does not hold
+cleanup() {
+    [ "$keep" = 1 ] || rm -rf "$work"
+    [ "$had_user" = 1 ] || userdel "$user" >/dev/null 2>&1 || true
+}
+trap cleanup EXIT
+export LC_ALL=C
+
+if [ -z "$zip" ]; then
+    zip=$work/autograder-05.zip
+    make --no-print-directory -s autograder CHAPTER=05 TIMEOUT=3 GRADE_BUDGET=40 AUTOGRADER="$zip" >"$work/zip.log" 2>&1 ||
+        { cat "$work/zip.log"; exit 1; }
+fi
+# The table attack: the reference's answers to every input the suite gives lambert.
+make --no-print-directory -s build/hostile/record_05_lambert >"$work/record.log" 2>&1 || { cat "$work/record.log"; exit 1; }
+(cd "$work" && RT_TABLE=$work/table.inc "$repo/build/hostile/record_05_lambert" >/dev/null 2>&1)
+[ -s "$work/table.inc" ] || { echo "hostile: recording the suite's calls of lambert gave no table" >&2; exit 1; }
+
+root=$work/ag
+mkdir -p "$root/source" "$root/submission"
+(cd "$root/source" && unzip -q "$zip") || exit 1
+secret="grader-secret-$(od -An -N8 -tx1 /dev/urandom | tr -d ' \n')"
+echo "# $secret" >>"$root/source/grade.conf"
+echo "setting up $zip under $root (setup.sh)"
+if ! (cd "$root/source" && AUTOGRADER_ROOT=$root AUTOGRADER_NO_APT=1 bash setup.sh >"$work/setup.log" 2>&1); then
+    tail -n 30 "$work/setup.log"
+    echo "hostile: setup.sh failed" >&2
+    exit 1
+fi
+
+# The submissions: NAME, then how to fill $root/submission.
+reference_lib=$root/source/reference/double/lib05_lambert.a
+make_submission() {
+    local name=$1 sub=$root/submission
+    rm -rf "$sub"
+    mkdir -p "$sub"
+    case $name in
+    correct) cp "$repo/solutions/05_lambert/lambert.c" "$sub/lambert.c" ;;
+    empty) ;;
+    table) awk -v t="$work/table.inc" '$0 == "TABLE" { while ((getline l < t) > 0) print l; next } { print }' \
+        "$here/table.c.in" >"$sub/lambert.c" ;;
+    asm_reference)
+        (cd "$work" && rm -rf ar && mkdir ar && cd ar && ar x "$reference_lib" lambert.o) &&
+            "$here/asm-from-object.sh" "$work/ar/lambert.o" >"$sub/lambert.c" ;;
+    symlink)
+        mkdir -p "$sub/x
+05_lambert" "$sub/05_lambert"
+        cp "$here/alternative.c" "$sub/x
+05_lambert/lambert.c"
+        ln -s "$root/source/grade.conf" "$sub/05_lambert/lambert.c" ;;
+    *) cp "$here/$name.c" "$sub/lambert.c" ;;
+    esac
+}
+
+# NAME EXPECTED_SCORE: each case and what it must give (the score of 14 points).
+cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
+asm_reference:0 exec_reference:0 symlink:0 memory:0 litter:0 bad_utf8:0 hang:0"
+problems=0
+problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
+printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
+for c in $cases; do
+    name=${c%:*} expected=${c#*:}
+    [ -z "${HOSTILE_ONLY:-}" ] || [[ " $HOSTILE_ONLY " == *" $name "* ]] || continue
+    make_submission "$name" || { problem "$name: could not make the submission"; continue; }
+    start=$(date +%s)
+    (cd "$root/source" && AUTOGRADER_ROOT=$root bash run_autograder) >"$work/$name.out" 2>&1
+    took=$(($(date +%s) - start))
+    json=$root/results/results.json
+    cp "$json" "$work/$name.json" 2>/dev/null
+    score=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1], encoding="utf-8", errors="strict"))["score"])' \
+        "$json" 2>"$work/$name.jsonerr") || score="invalid"
+    # what the grader said first: a refusal, a failed answer, a limit
+    notes=$(grep -ohE 'refused: it holds [^;]*|grade: (failed|crashed|timed out|not run)[^\\"]*|memory: got [0-9]+ MiB' \
+        "$work/$name.out" "$json" 2>/dev/null | head -n 1 | cut -c 1-70)
+    [ "$score" = invalid ] && notes="results.json is not valid UTF-8 JSON: $(tail -n 1 "$work/$name.jsonerr")"
+    printf '%-18s %6s %8s %6s  %s\n' "$name" "$score" "$expected" "${took}s" "$notes"
+    [ "$score" = "$expected" ] || problem "$name scored $score, expected $expected"
+    if grep -qF "$secret" "$work/$name.out" "$json" 2>/dev/null; then problem "$name: a line of the grader's grade.conf is in the output"; fi
+    case $name in
+    correct) grep -q "matches the compiled reference" "$work/$name.out" || problem "correct: not flagged as the reference's code" ;;
+    alternative) grep -q "matches the compiled reference" "$work/$name.out" && problem "alternative: flagged as the reference's code" ;;
+    memory)
+        got=$(grep -ho 'memory: got [0-9]* MiB' "$json" | awk '{ print $3 }' | sort -n | tail -n 1)
+        [ -n "$got" ] && [ "$got" -le 1024 ] || problem "memory: the test took ${got:-?} MiB (limit 1024)" ;;
+    litter)
+        grep -q "litter: found" "$json" && problem "litter: a test found files an earlier test left"
+        left=$(find /tmp /var/tmp /dev/shm -xdev -user "$user" 2>/dev/null | head -n 5)
+        [ -z "$left" ] || problem "litter: files of $user left after grading: $left" ;;
+    hang)
+        grep -q "time budget" "$work/$name.out" || problem "hang: the time budget did not stop the grading"
+        [ "$took" -le 90 ] || problem "hang: grading took ${took}s" ;;
+    esac
+    # (a zombie that init has yet to reap runs nothing: not counted)
+    running=$(ps -u "$user" -o stat=,pid=,ppid=,args= 2>/dev/null | awk '$1 !~ /^Z/' | head -n 3)
+    [ -z "$running" ] || problem "$name: processes of $user still run after grading: $running"
+done
+if [ "$problems" -gt 0 ]; then
+    echo "hostile submissions: $problems problems (outputs in $work, kept)"
+    keep=1
+    exit 1
+fi
+echo "hostile submissions: every expectation holds"
