@@ -55,21 +55,40 @@ static void test_refract_normal_incidence(void **state)
     }
 }
 
-/* Equal indices on both sides: T = d at every angle up to 89 degrees. */
+/* Equal indices on both sides: T = d at every angle, up to grazing.  With
+ * r = eta_i / eta_t = 1, cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i) is
+ * cos^2(theta_i) and r cos(theta_i) - cos(theta_t) is 0, so T = d (and
+ * cos(theta_t) = cos(theta_i)) to a rounding or two of values of size 1:
+ * 4 REAL_EPSILON.  The angles go to within 1e-6 rad of grazing, and include
+ * cos(theta_i) = 1.3e-4, where a float |S_i|^2 taken from the vector rounds
+ * to 1 and 1 - |S_i|^2 is lost. */
 static void test_refract_equal_indices(void **state)
 {
     (void)state;
-    for (int k = 0; k < 200; k++) {
+    const real etas[] = {1, (real)1.33, (real)1.5};
+    for (int k = 0; k < 600; k++) {
         vec3 n = suite_random_unit(&rng), t = tangent_of(n);
-        double theta = 89 * suite_uniform(&rng) * pi / 180;
+        double cos_theta = k < 300 ? suite_uniform(&rng) : pow(10, -2 - 4 * suite_uniform(&rng)); /* 1e-2 to 1e-6 */
+        if (k == 300)
+            cos_theta = 1.3e-4;
+        double theta = acos(cos_theta);
         vec3 d = incoming(n, t, theta);
-        vec3 T;
-        real cos_t;
-        assert_true(refract(d, n, 1, 1, &T, &cos_t));
-        /* cos_t = sqrt(1 - |S_i|^2): an error of a few ulps in |S_i|^2 is
-         * divided by 2 cos(theta) >= 0.035 */
-        assert_vec3_close(d, T, TOL(1) / (real)cos(theta));
-        assert_close(cos(theta), cos_t, TOL(1) / (real)cos(theta));
+        real eta = etas[k % 3], cos_i = -vec3_dot(d, n);
+        vec3 T = {0, 0, 0};
+        real cos_t = -1;
+        const char *input = describe("refract at cos(theta_i) = %.3g, eta %g on both sides", cos_theta, (double)eta);
+        if (!refract(d, n, eta, eta, &T, &cos_t))
+            fail_msg("%s\n    expected true (no surface: the ray goes straight on)\n    got      false\n"
+                     "    likely mistake: |S_t|^2 computed from the vector d + cos(theta_i) n rounds to 1 or more near "
+                     "grazing; take cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i), r = eta_i / eta_t, from the "
+                     "cosine",
+                     input);
+        assert_vec3_why(d, T, 4 * REAL_EPSILON, input,
+                        "T = r d + (r cos(theta_i) - cos(theta_t)) n, which is d for r = 1; cos(theta_t) = "
+                        "sqrt(1 - |S_t|^2) with |S_t|^2 from the vector d + cos(theta_i) n loses 1 - |S_t|^2 near "
+                        "grazing: take cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i) from the cosine",
+                        NULL, 0);
+        assert_close(cos_i, cos_t, 4 * REAL_EPSILON * cos_i);
     }
 }
 
