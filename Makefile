@@ -383,6 +383,15 @@ $(BUILD)/tools/globe-png: $(call objs,tools/globe-png.c chapters/10_interpolatio
 globe-texture: $(BUILD)/tools/globe-png
 	$(BUILD)/tools/globe-png chapters/10_interpolation/scenes/globe.png
 
+# chapters/10_interpolation/scenes/closeup.png, the texture of the close-up figure (10_filters.png).
+$(BUILD)/tools/closeup-png: $(BUILD)/obj/tools/closeup-png.o
+	@mkdir -p $(@D)
+	$(QLINK)$(CC) $^ -lstb -lm -o $@
+
+.PHONY: closeup-texture
+closeup-texture: $(BUILD)/tools/closeup-png
+	$(BUILD)/tools/closeup-png chapters/10_interpolation/scenes/closeup.png
+
 figure-renderers:
 	@tools/deps.sh "$(CC)" figures
 	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_BUILD)/tools/panels
