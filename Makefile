@@ -531,6 +531,7 @@ help:
 	$(REPO_ONLY)echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	$(REPO_ONLY)echo "make globe-texture   write chapter 10's scenes/globe.png from globe_texture (sphere_mesh.c)"
+	$(REPO_ONLY)echo "make closeup-texture write chapter 10's scenes/closeup.png (tools/closeup-png.c, for 10_filters.png)"
 	$(REPO_ONLY)echo "make snippets        fill the code blocks of the READMEs from the source"
 	$(REPO_ONLY)echo "make check           check-skeletons, check-snippets, check-figures, check-links, check-grid-images"
 	$(REPO_ONLY)echo "                     (chapter 11's images byte for byte the linear scan's): fail naming what is stale"
