@@ -2,7 +2,8 @@
 # The precision limits of chapter 09 (its lab, lab --limits): total internal
 # reflection decided on the wrong side of the critical angle, R + T = 1, and
 # the refracted direction through a sphere's centre and a slab at every scale,
-# in double and in float.
+# in double and in float; then what --min-weight's cut drops, on a glass sphere
+# against white.
 build=$1
 fbuild=$2
 tmp=${TMPDIR:-/tmp}/bench-09-limits.$$
@@ -28,7 +29,6 @@ echo "| equal indices: first angle with a non-finite T (degrees) | $(nonfinite "
 echo "| through the centre: worst angle (rad) | $(worst "$tmp.d" centre 4) | $(worst "$tmp.f" centre 4) |"
 echo "| slab: worst angle (rad) | $(worst "$tmp.d" slab 5) | $(worst "$tmp.f" slab 5) |"
 echo "| rays lost (centre + slab) | $(($(lost "$tmp.d" centre) + $(lost "$tmp.d" slab))) | $(($(lost "$tmp.f" centre) + $(lost "$tmp.f" slab))) |"
-
 
 # What --min-weight drops: the glass sphere in front of white (chapters/09_refraction/scenes/glass-on-white.xml),
 # which is invisible when nothing is cut off.  Each setting against --min-weight=0 of the same build.

@@ -8,7 +8,7 @@ bool refract(vec3 d, vec3 n, real eta_i, real eta_t, vec3 *T, real *cos_t)
      * false past the critical angle, in a form whose rounding leaves T = d for equal indices at every
      * angle, grazing ones too (README, "The transmitted direction", "In floating point" and "Total
      * internal reflection"; refract.h says what *T and *cos_t hold). */
-    real r = eta_i / eta_t;   /* Snell: sin(theta_t) = r sin(theta_i), S_t = r S_i */
+    real r = eta_i / eta_t;       /* Snell: sin(theta_t) = r sin(theta_i), S_t = r S_i */
     real cos_i = -vec3_dot(d, n); /* |C_i| = cos(theta_i) */
     /* cos^2(theta_t) = 1 - |S_t|^2 = 1 - r^2 (1 - cos^2(theta_i)), from the cosine, not from the vector
      * S_t: grouped so that r = 1 gives exactly cos^2(theta_i) at every angle */
