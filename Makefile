@@ -424,6 +424,15 @@ $(BUILD)/tools/globe-png: $(call objs,tools/globe-png.c chapters/10_interpolatio
 globe-texture: $(BUILD)/tools/globe-png
 	$(BUILD)/tools/globe-png chapters/10_interpolation/scenes/globe.png
 
+# chapters/10_interpolation/scenes/closeup.png, the texture of the close-up figure (10_filters.png).
+$(BUILD)/tools/closeup-png: $(BUILD)/obj/tools/closeup-png.o
+	@mkdir -p $(@D)
+	$(QLINK)$(CC) $^ -lstb -lm -o $@
+
+.PHONY: closeup-texture
+closeup-texture: $(BUILD)/tools/closeup-png
+	$(BUILD)/tools/closeup-png chapters/10_interpolation/scenes/closeup.png
+
 figure-renderers:
 	@tools/deps.sh "$(CC)" figures
 	@$(MAKE) --no-print-directory -s STUDENT=0 SANITIZE=0 REAL=double BUILD=$(FIG_BUILD) $(FIG_BUILD)/tools/panels
@@ -572,6 +581,7 @@ help:
 	$(REPO_ONLY)echo "make skeletons       write chapters/NN_name/*.c from solutions/ by tools/skeleton.awk"
 	@echo "make figures         render the figures of chapters/*/figures.txt into docs/figures/"
 	$(REPO_ONLY)echo "make globe-texture   write chapter 10's scenes/globe.png from globe_texture (sphere_mesh.c)"
+	$(REPO_ONLY)echo "make closeup-texture write chapter 10's scenes/closeup.png (tools/closeup-png.c, for 10_filters.png)"
 	$(REPO_ONLY)echo "make snippets        fill the code blocks of the READMEs from the source"
 	$(REPO_ONLY)echo "make check           check-skeletons, -snippets, -outputs, -lessons (docs/design.md), -figures, -links, -grid-images,"
 	$(REPO_ONLY)echo "                     -seeded (every graded test checks inputs drawn at grading time)"

@@ -14,6 +14,7 @@
 # BENCH_LINEAR_MAX_TRIANGLES (largest for the linear scan, default 100000),
 # BENCH_CUT (seconds after which timings take 3 rounds at most, default 150),
 # RT_CORNELL (the course's data folder, default ../shared/cornell/sp17-ray1/data).
+# BENCH_REPLOT=1 draws the plots and writes the page again from the last run's measurements (seconds).
 set -u
 if [ $# -ne 3 ]; then
     echo "usage: $0 BUILD FLOAT_BUILD TOOLS" >&2
@@ -34,10 +35,6 @@ here=$(dirname "$0")
 # shellcheck source=bench/lib.sh
 . "$here/lib.sh"
 
-rm -rf "$work"
-mkdir -p "$work/img" "$work/page" "$figures" || exit 1
-: >"$work/commands.txt"
-
 mapfile -t chapters < <(for d in chapters/[0-9][0-9]_*/; do basename "$d"; done | sort)
 if [ ${#chapters[@]} -eq 0 ]; then
     echo "bench: no chapters/NN_name/ folders" >&2
@@ -51,6 +48,35 @@ for c in "${chapters[@]}"; do
         [ -x "$b/$c/render" ] || { echo "bench: $b/$c/render is missing (run make bench)" >&2; exit 1; }
     done
 done
+
+# The calibrated sizes, one per chapter and scene, found once (in this shell,
+# not in a $(...) subshell, so that they are kept): calibrate CHAPTER, then
+# builtin_size CHAPTER and stage_size CHAPTER print them.
+declare -A size_builtin size_stage
+calibrate() {
+    [ -n "${size_builtin[$1]:-}" ] || size_builtin[$1]=$(calibrated_size "$build/$1/render")
+    [ -n "${size_stage[$1]:-}" ] || size_stage[$1]=$(calibrated_size "$build/$1/render" "$stage_scene")
+}
+builtin_size() { echo "${size_builtin[$1]}"; }
+stage_size() { echo "${size_stage[$1]}"; }
+
+# BENCH_REPLOT=1: no measuring; the plots and the page are made again from the measurements the last run
+# kept in $work (its state.sh), so that a change to plots.sh or page.sh is seen in seconds.
+if [ "${BENCH_REPLOT:-}" = 1 ]; then
+    [ -f "$work/state.sh" ] || { echo "bench: BENCH_REPLOT=1, but $work/state.sh is missing: run make bench first" >&2; exit 1; }
+    # shellcheck disable=SC1091
+    . "$work/state.sh"
+    note "plots (again, from the measurements of $started)"
+    . "$here/plots.sh"
+    note "page"
+    . "$here/page.sh"
+    note "bench: wrote $page and $(ls "$figures"/bench_*.png 2>/dev/null | wc -l) figures in ${SECONDS} s"
+    exit 0
+fi
+
+rm -rf "$work"
+mkdir -p "$work/img" "$work/page" "$figures" || exit 1
+: >"$work/commands.txt"
 
 started=$(date -u '+%Y-%m-%d %H:%M UTC')
 cpu=$(awk -F': ' '/^model name/ { print $2; exit }' /proc/cpuinfo 2>/dev/null)
@@ -67,22 +93,14 @@ note "bench: ${#chapters[@]} chapters (${chapters[*]}), $reps rounds per timing,
 # setting is timed on one thread at a size calibrated for the default
 # setting; its image is compared with the image of the reference setting.
 
-# The calibrated sizes, one per chapter and scene, found once (in this shell,
-# not in a $(...) subshell, so that they are kept): calibrate CHAPTER, then
-# builtin_size CHAPTER and stage_size CHAPTER print them.
-declare -A size_builtin size_stage
-calibrate() {
-    [ -n "${size_builtin[$1]:-}" ] || size_builtin[$1]=$(calibrated_size "$build/$1/render")
-    [ -n "${size_stage[$1]:-}" ] || size_stage[$1]=$(calibrated_size "$build/$1/render" "$stage_scene")
-}
-builtin_size() { echo "${size_builtin[$1]}"; }
-stage_size() { echo "${size_stage[$1]}"; }
 for c in "${chapters[@]}"; do
     calibrate "$c"
     note "calibrated $c: built-in scene ${size_builtin[$c]}, scene of all stages ${size_stage[$c]} (about $target s on 1 thread)"
 done
 
-knob_rows=$work/knob_rows.tsv # id chapter knob value default? ref? b_time b_min b_max b_ratio b_share b_max s_... stage_chapter
+# id chapter knob value default? ref?, then for each scene (built-in, all stages) time min max ratio rmse psnr
+# mae share largest, then the stage chapter and the help: 26 columns
+knob_rows=$work/knob_rows.tsv
 : >"$knob_rows"
 skipped_knobs=""
 prev_knobs=""
@@ -125,8 +143,8 @@ for c in "${chapters[@]}"; do
                 t=$(field "$g" "--$name=$v" 2) t_min=$(field "$g" "--$name=$v" 3) t_max=$(field "$g" "--$name=$v" 4)
                 t_def=$(field "$g" "--$name=$default" 2)
                 prefix=$([ $where = builtin ] && echo k || echo ks)
-                read -r share maxd < <(diff_of "$work/img/${prefix}_${c}_${name}_$v.png" "$work/img/${prefix}_${c}_${name}_$ref.png")
-                row="$row	$t	$t_min	$t_max	$(ratio "$t" "$t_def")	$share	$maxd"
+                err=$(error_of "$work/img/${prefix}_${c}_${name}_$v.png" "$work/img/${prefix}_${c}_${name}_$ref.png")
+                row="$row	$t	$t_min	$t_max	$(ratio "$t" "$t_def")	${err// /	}"
             done
             printf '%s\t%s\t%s\n' "$row" "$last" "$help" >>"$knob_rows"
         done
@@ -173,11 +191,11 @@ done
 # its speed against `-OPTION BASE`, its image against IMG_where_REF's.
 common_row() {
     local name=$1 value=$2 option=$3 default=$4 best=$5 measure=$6 img=$7 ref=$8 base=$9 help=${10}
-    local row="all.$name=$value	$latest	$name	$value	$default	$best" where t share maxd
+    local row="all.$name=$value	$latest	$name	$value	$default	$best" where t err
     for where in builtin stage; do
         t=$(field "${measure}_$where" "-$option $value" 2)
-        read -r share maxd < <(diff_of "$work/img/${img}_${where}_$value.png" "$work/img/${img}_${where}_$ref.png")
-        row="$row	$t	$(field "${measure}_$where" "-$option $value" 3)	$(field "${measure}_$where" "-$option $value" 4)	$(ratio "$t" "$(field "${measure}_$where" "-$option $base" 2)")	$share	$maxd"
+        err=$(error_of "$work/img/${img}_${where}_$value.png" "$work/img/${img}_${where}_$ref.png")
+        row="$row	$t	$(field "${measure}_$where" "-$option $value" 3)	$(field "${measure}_$where" "-$option $value" 4)	$(ratio "$t" "$(field "${measure}_$where" "-$option $base" 2)")	${err// /	}"
     done
     printf '%s\t%s\t%s\n' "$row" "$latest" "$help" >>"$common_rows"
 }
@@ -202,10 +220,12 @@ precision() { # id label chapter scene-or-empty size
     measure "precision_$id" "$reps"
     local td tf
     td=$(field "precision_$id" double 2) tf=$(field "precision_$id" float 2)
-    read -r share maxd < <(diff_of "$work/img/p_${id}_double.png" "$work/img/p_${id}_float.png")
-    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$id" "$label" "$size" "$td" \
+    local err
+    err=$(error_of "$work/img/p_${id}_double.png" "$work/img/p_${id}_float.png")
+    # id label size double range float range ratio rmse psnr mae share largest
+    printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$id" "$label" "$size" "$td" \
         "$(field "precision_$id" double 3)-$(field "precision_$id" double 4)" "$tf" \
-        "$(field "precision_$id" float 3)-$(field "precision_$id" float 4)" "$(ratio "$tf" "$td")" "$share" "$maxd" \
+        "$(field "precision_$id" float 3)-$(field "precision_$id" float 4)" "$(ratio "$tf" "$td")" "${err// /	}" \
         >>"$precision_rows"
 }
 for c in "${chapters[@]}"; do
@@ -257,15 +277,20 @@ EOF
             size=$(min_side=8 calibrated_size "$build/$c/render" "$work/growth/sphere_$n.xml")
             setting "$c" "$work/growth/img_${c}_$n.png" "$build/$c/render" -j 1 -s "$size" "$work/growth/sphere_$n.xml"
         done
-        measure "growth_$n" "$([ "$n" -ge 1000000 ] && echo 3 || echo "$reps")"
+        # Repeated until each point's quartiles are within 10 % of its median (at most 15 runs): one
+        # noisy point sets a fitted slope.
+        measure_steady "growth_$n" "$([ "$n" -ge 1000000 ] && echo 3 || echo "$reps")" 15 0.1
         for c in "${growth_chapters[@]}"; do
             tm=$(field "growth_$n" "$c" 2) rays=$(field "growth_$n" "$c" 5)
             # not run (the linear scan above $linear_max triangles) or failed: no row
             if [ -z "$tm" ] || [ "$tm" = "-" ] || [ -z "$rays" ] || [ "$rays" = "-" ] || [ "$rays" = 0 ]; then continue; fi
             # Microseconds per ray: three significant digits, no exponent.
             us() { awk -v t="$1" -v r="$rays" 'BEGIN { x = 1e6 * t / r; d = x >= 100 ? 0 : x >= 10 ? 1 : 2; printf "%.*f", d, x }'; }
-            printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$c" "$t" "$tm" "$rays" "$(us "$tm")" \
-                "$(us "$(field "growth_$n" "$c" 3)")" "$(us "$(field "growth_$n" "$c" 4)")" >>"$growth_rows"
+            # chapter triangles median rays us us_min us_max us_q1 us_q3 runs
+            printf '%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\t%s\n' "$c" "$t" "$tm" "$rays" "$(us "$tm")" \
+                "$(us "$(field "growth_$n" "$c" 3)")" "$(us "$(field "growth_$n" "$c" 4)")" \
+                "$(us "$(field "growth_$n" "$c" 8)")" "$(us "$(field "growth_$n" "$c" 9)")" \
+                "$(field "growth_$n" "$c" 10)" >>"$growth_rows"
         done
         rm -f "$work/growth/sphere_$n.obj"
     done
@@ -326,6 +351,11 @@ if grep -qs '^bench-grid:' Makefile bench/grid/*.mk; then
 fi
 
 load_after=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
+
+# What the plots and the page need, kept for BENCH_REPLOT=1.
+declare -p chapters latest reps target started cpu cores compiler load_before load_after reduced_at skipped_knobs \
+    growth_chapters max_triangles linear_max size_builtin size_stage chapter_side knob_rows common_rows \
+    precision_rows growth_rows strip_list grid_log pov_rows pov_version pov_note slow >"$work/state.sh" 2>/dev/null
 
 # ---- plots and the page -----------------------------------------------------------------
 

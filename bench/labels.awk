@@ -2,7 +2,8 @@
 # (bench/plots.sh, knob_plot).
 #
 # Input: the plot's data, "X Y LABEL DEFAULT SCENE" (X > 0; LABEL "" for none), and
-# the axes as variables: xmin, xmax, logx (1: log scale), ymin, ymax.
+# the axes as variables: xmin, xmax, logx (1: log scale), ymin, ymax, logy; key=0 when the key is not
+# in the plot's top right corner; char_w, a character's width as a share of the plot's (0.0095).
 # Output, one line per label: "LX LY \"TEXT\" X Y SCENE MOVED": the label's
 # left end at (LX, LY) for the point (X, Y); MOVED 1 when it had to go further
 # from its point than its usual place (the plot then draws a leader line).
@@ -15,9 +16,9 @@
 # right, and so on; a place is free when its box meets no point, no label
 # placed before it and not the key (top right).
 function u_of(x) { return logx ? (log(x) - log(xmin)) / (log(xmax) - log(xmin)) : (x - xmin) / (xmax - xmin) }
-function v_of(y) { return (y - ymin) / (ymax - ymin) }
+function v_of(y) { return logy ? (log(y) - log(ymin)) / (log(ymax) - log(ymin)) : (y - ymin) / (ymax - ymin) }
 function x_of(u) { return logx ? exp(log(xmin) + u * (log(xmax) - log(xmin))) : xmin + u * (xmax - xmin) }
-function y_of(v) { return ymin + v * (ymax - ymin) }
+function y_of(v) { return logy ? exp(log(ymin) + v * (log(ymax) - log(ymin))) : ymin + v * (ymax - ymin) }
 function free(l, r, b, t,    k) {
     if (l < 0 || r > 1 || b < 0 || t > 1)
         return 0
@@ -27,9 +28,11 @@ function free(l, r, b, t,    k) {
     return 1
 }
 BEGIN {
-    char_w = 0.0095; line_h = 0.045; gap = 0.012
-    # the key, top right
-    n_box = 1; box_l[1] = 0.26; box_r[1] = 1; box_b[1] = 0.77; box_t[1] = 1
+    if (char_w == "") char_w = 0.0095
+    line_h = 0.045; gap = 0.012
+    # the key, top right, unless key=0 (the plot has it elsewhere)
+    n_box = 0
+    if (key != "0") { n_box = 1; box_l[1] = 0.26; box_r[1] = 1; box_b[1] = 0.77; box_t[1] = 1 }
 }
 { # every point, labelled or not, keeps labels off it
     n_box++; box_l[n_box] = u_of($1) - 0.015; box_r[n_box] = u_of($1) + 0.01

@@ -42,9 +42,11 @@ setting() {
 
 # measure GROUP ROUNDS: times the settings; writes $work/GROUP.tsv with one
 # line per setting:
-#   LABEL  MEDIAN_S  MIN_S  MAX_S  RAYS  IMAGE  STATUS
-# (STATUS ok, or the first line the renderer printed when it failed), and
-# adds every command line to $work/commands.txt.  One progress line per setting.
+#   LABEL  MEDIAN_S  MIN_S  MAX_S  RAYS  IMAGE  STATUS  Q1_S  Q3_S  RUNS
+# (STATUS ok, or the first line the renderer printed when it failed; Q1 and Q3
+# the quartiles of the runs' times), and adds every command line to
+# $work/commands.txt.  One progress line per setting.  With MEASURE_MORE=1 the
+# rounds add to the group's earlier ones (measure_steady).
 # A setting that takes more than ten times $target in the first round runs
 # only once (its min and max are then its one time).
 # Past $budget_cut seconds (default 150) every measurement takes at most 3
@@ -60,11 +62,12 @@ measure() {
             note "more than ${budget_cut:-300} s: 3 rounds per timing from here on"
         fi
     fi
-    local times=$work/$group.times
-    : >"$times"
+    local times=$work/$group.times more=${MEASURE_MORE:-}
+    [ -n "$more" ] || : >"$times"
     local failed=()
     for ((k = 0; k < n; k++)); do
         failed[k]=""
+        [ -n "$more" ] && continue
         case "${S_CMD[k]}" in
             *@OUT@*) printf '%s\n' "${S_CMD[k]//@OUT@/OUT.png}" >>"$work/commands.txt" ;;
             *) printf '%s -o OUT.png\n' "${S_CMD[k]}" >>"$work/commands.txt" ;;
@@ -105,17 +108,31 @@ measure() {
                 $1 == k { split($2, f, " "); t[++n] = f[1]; rays = f[2] }
                 END {
                     for (i = 2; i <= n; i++) { x = t[i]; for (j = i - 1; j >= 1 && t[j] > x; j--) t[j + 1] = t[j]; t[j + 1] = x }
-                    med = n % 2 ? t[(n + 1) / 2] : (t[n / 2] + t[n / 2 + 1]) / 2
-                    printf "%s\t%.4f\t%.4f\t%.4f\t%d\t%s\tok", label, med, t[1], t[n], rays, img
-                }' "$times")
-            note "$group ${S_LABEL[k]}: $(printf '%s' "$line" | awk -F'\t' '{ printf "%.3f s (%.3f-%.3f), %d runs, %d rays", $2, $3, $4, '"$([ -n "${once[k]:-}" ] && echo 1 || echo "$rounds")"', $5 }')"
+                    printf "%s\t%.4f\t%.4f\t%.4f\t%d\t%s\tok\t%.4f\t%.4f\t%d", label, q(0.5), t[1], t[n], rays, img, q(0.25), q(0.75), n
+                }
+                function q(p,    x, i) { x = 1 + p * (n - 1); i = int(x); return i >= n ? t[n] : t[i] + (x - i) * (t[i + 1] - t[i]) }' "$times")
+            note "$group ${S_LABEL[k]}: $(printf '%s' "$line" | awk -F'\t' '{ printf "%.3f s (%.3f-%.3f, quartiles %.3f-%.3f), %d runs, %d rays", $2, $3, $4, $8, $9, $10, $5 }')"
         fi
         printf '%s\n' "$line" >>"$work/$group.tsv"
     done
 }
 
+# measure_steady GROUP ROUNDS MAX_ROUNDS SPREAD: measure GROUP, then two more
+# rounds at a time while a setting has run fewer than 5 times, or its quartiles
+# lie further apart than SPREAD times its median (a burst of other work on the
+# shared machine), and fewer than MAX_ROUNDS times.  Its median then rests on
+# the quiet runs.
+measure_steady() {
+    local group=$1 rounds=$2 max=$3 spread=$4
+    measure "$group" "$rounds"
+    while awk -F'\t' -v s="$spread" -v m="$max" '$7 == "ok" && $10 < m && $2 > 0 && ($10 < 5 || ($9 - $8) > s * $2) { f = 1 }
+                                            END { exit !f }' "$work/$group.tsv"; do
+        MEASURE_MORE=1 measure "$group" 2
+    done
+}
+
 # field GROUP LABEL COLUMN: one column (2 median, 3 min, 4 max, 5 rays,
-# 6 image, 7 status) of a measured setting.
+# 6 image, 7 status, 8 and 9 the quartiles, 10 the runs) of a measured setting.
 field() { awk -F'\t' -v l="$2" -v c="$3" '$1 == l { print $c; exit }' "$work/$1.tsv"; }
 
 # diff_of A.png B.png: "SHARE_% MAXDIFF" (imgcmp), or "- -" when either is missing.
@@ -124,6 +141,17 @@ diff_of() {
         "$tools/imgcmp" "$1" "$2" | awk '{ print $1, $2 }'
     else
         echo "- -"
+    fi
+}
+
+# error_of A.png B.png: "RMSE PSNR MAE SHARE_% MAXDIFF" (imgcmp: the error in levels of 0-255, the
+# PSNR in dB, then the share of differing pixels and the largest difference), or "- - - - -" when
+# either is missing.
+error_of() {
+    if [ -f "$1" ] && [ -f "$2" ]; then
+        "$tools/imgcmp" "$1" "$2" | awk '{ print $6, $7, $5, $1, $2 }'
+    else
+        echo "- - - - -"
     fi
 }
 

@@ -3,6 +3,7 @@
 md=$work/measurements.md
 fmt_t() { awk -v t="$1" 'BEGIN { if (t == "-" || t == "") print "-"; else printf "%.3f", t }'; }
 fmt_range() { echo "$1" | awk -F'-' '{ if ($1 == "" || $2 == "") print "-"; else printf "%.3f-%.3f", $1, $2 }'; }
+fmt_err() { echo "$1, $2"; } # RMSE, PSNR as imgcmp prints them ("-, -" when missing)
 fmt_share() { awk -v s="$1" 'BEGIN { if (s == "-" || s == "") print "-"; else if (s + 0 == 0) print "0"; else if (s < 0.01) printf "%.4f", s; else printf "%.2f", s }'; }
 
 {
@@ -36,8 +37,12 @@ render loop of its summary line: without start-up, scene parsing or PNG writing)
 said otherwise, at an image size chosen so that the default setting takes about $target s (the size is
 given); a setting ten times slower than that ran once (its fastest and slowest are the same).  An
 image's **error** is measured against the image of the most accurate setting (the
-*reference*, from bench/knobs.conf): the share of pixels in which any channel differs, and the largest
-difference of a channel, in display levels of 0 to 255.
+*reference*, from bench/knobs.conf) as rendering papers measure it, over every channel of every pixel in
+display levels of 0 to 255: the root-mean-square error (RMSE) with its peak signal-to-noise ratio
+(PSNR = 20 log10(255 / RMSE) dB; "inf" for the same image) and the mean absolute error (MAE); then, as
+extra columns, the share of pixels in which any channel differs at all, and the largest difference of a
+channel.  The share counts a pixel off by 1 level as much as one off by 100: it makes 4 samples per pixel
+look no better than 1, where the RMSE shows the gain.
 
 ## 1. The knob table
 
@@ -46,10 +51,10 @@ appears, on that chapter's built-in scene, and in the latest chapter that has it
 stages (section 6), where every later stage runs too.  **Bold**: the default setting; *ref*: the
 reference setting.  "x default" is the time relative to the default setting.
 
-| line | knob | setting | built-in scene: size | time (s), min-max | x default | pixels differing (%) | largest difference | scene of all stages: chapter, size | time (s), min-max | x default | pixels differing (%) | largest difference |
-|---|---|---|---|---|---|---|---|---|---|---|---|---|
+| line | knob | setting | built-in scene: size | time (s), min-max | x default | RMSE, PSNR (dB) | MAE | pixels differing (%) | largest difference | scene of all stages: chapter, size | time (s), min-max | x default | RMSE, PSNR (dB) | MAE | pixels differing (%) | largest difference |
+|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|
 EOF
-awk -F'\t' '{ print }' "$knob_rows" "$common_rows" | while IFS=$'\t' read -r id c name v isdef isref bt btmin btmax br bs bm st stmin stmax sr ss sm last help; do
+awk -F'\t' '{ print }' "$knob_rows" "$common_rows" | while IFS=$'\t' read -r id c name v isdef isref bt btmin btmax br brmse bpsnr bmae bs bm st stmin stmax sr srmse spsnr smae ss sm last help; do
     setting=$v
     [ "$isdef" = 1 ] && setting="**$v**"
     [ "$isref" = 1 ] && setting="$setting (*ref*)"
@@ -60,13 +65,12 @@ awk -F'\t' '{ print }' "$knob_rows" "$common_rows" | while IFS=$'\t' read -r id 
     [ "$name" = samples ] || [ "$name" = threads ] || name="--$name"
     [ "$name" = samples ] && name="-n (samples)"
     [ "$name" = threads ] && name="-j (threads)"
-    echo "| \`$id\` | $name | $setting | $bsize | $(fmt_t "$bt") ($(fmt_t "$btmin")-$(fmt_t "$btmax")) | $br | $(fmt_share "$bs") | $bm | $(num "$last"), $ssize | $(fmt_t "$st") ($(fmt_t "$stmin")-$(fmt_t "$stmax")) | $sr | $(fmt_share "$ss") | $sm |"
+    echo "| \`$id\` | $name | $setting | $bsize | $(fmt_t "$bt") ($(fmt_t "$btmin")-$(fmt_t "$btmax")) | $br | $(fmt_err "$brmse" "$bpsnr") | $bmae | $(fmt_share "$bs") | $bm | $(num "$last"), $ssize | $(fmt_t "$st") ($(fmt_t "$stmin")-$(fmt_t "$stmax")) | $sr | $(fmt_err "$srmse" "$spsnr") | $smae | $(fmt_share "$ss") | $sm |"
 done
-awk -F'\t' -v latest="$(num "$latest")" '$1 == latest || $1 == "stages" {
-    split($7, r, "-")
-    share = ($9 == "-" ? "-" : $9 + 0 == 0 ? "0" : $9 + 0 < 0.01 ? sprintf("%.4f", $9) : sprintf("%.2f", $9))
-    printf "| `precision.%s` | REAL (build) | float (double: **ref**) | %s | %.3f (%.3f-%.3f) | %s | %s | %s | | | | | |\n",
-        $1, ($1 == "stages" ? "scene of all stages, " $3 : $3), $6, r[1], r[2], $8, share, $10 }' "$precision_rows"
+while IFS=$'\t' read -r id label size td tdr tf tfr r rmse psnr mae share maxd; do
+    [ "$id" = "$(num "$latest")" ] || [ "$id" = stages ] || continue
+    echo "| \`precision.$id\` | REAL (build) | float (double: **ref**) | $([ "$id" = stages ] && echo "scene of all stages, ")$size | $(fmt_t "$tf") ($(fmt_range "$tfr")) | $r | $(fmt_err "$rmse" "$psnr") | $mae | $(fmt_share "$share") | $maxd | | | | | | | |"
+done <"$precision_rows"
 cat <<EOF
 
 Threads: "x default" is against the default, all $cores cores, and the image must not change at all
@@ -89,9 +93,11 @@ cat <<EOF
 
 ## 2. Cost against error
 
-One plot per chapter that adds knobs: each point a setting (its time relative to the default, against
-the share of its pixels that differ from the reference setting), on the chapter's built-in scene (blue
-dots) and on the scene of all stages (red triangles); the default has a square around it.  Where no
+One plot per chapter that adds knobs, one panel per knob: each point a setting (its time relative to the
+default, against its RMSE from the reference setting, on a log scale whose bottom line holds the settings
+that give the reference image exactly), on the chapter's built-in scene (blue dots) and on the scene of all
+stages (red triangles), the settings of a knob joined in the order of their values; the default has a
+square around it.  Where no
 setting changes a single pixel (knobs of speed alone), the plot shows each setting's time as bars.
 EOF
 for f in "$figures"/bench_knobs_[0-9]*.png "$figures/bench_knobs_all.png"; do
@@ -109,17 +115,19 @@ cat <<EOF
 A sphere tessellated into $(awk -F'\t' 'NR == 1 { lo = $2 } { hi = $2 } END { printf "%s to %s", lo, hi }' "$growth_rows")
 triangles (bench/tessellate.c), seen whole, on one thread: the time per eye ray, for the linear scan (the first chapter that renders meshes; up to $linear_max triangles, to keep within the ten minutes)
 $(case " ${growth_chapters[*]:-} " in *grid*) echo "and the grid" ;; *) echo "(the grid of chapter 11 joins this plot when it exists)" ;; esac).
-The slope is fitted by least squares to log(time) against log(triangles) from about 1000 triangles up: 1 is
-linear growth.
+Each point is run until its quartiles lie within 10 % of its median (at most 15 runs): on the shared
+machine a burst of other work can double one run, and one such point sets the slope.  The slope is fitted
+by least squares to log(median time) against log(triangles) from about 1000 triangles up: 1 is linear
+growth.
 
-| line | chapter | triangles | time per ray (us), min-max | rays | fitted slope |
-|---|---|---|---|---|---|
+| line | chapter | triangles | time per ray (us), min-max | quartiles | runs | rays | fitted slope |
+|---|---|---|---|---|---|---|---|
 EOF
-while IFS=$'\t' read -r c t tm rays tpr tmin tmax; do
+while IFS=$'\t' read -r c t tm rays tpr tmin tmax tq1 tq3 runs; do
     slope=$(awk -F'\t' -v c="$c" '$1 == c && $3 != "-" { printf "%.2f", $3 }' "$growth_fits")
-    echo "| \`growth.$(num "$c").$t\` | $(num "$c") | $t | $tpr ($tmin-$tmax) | $rays | ${slope:--} |"
+    echo "| \`growth.$(num "$c").$t\` | $(num "$c") | $t | $tpr ($tmin-$tmax) | $tq1-$tq3 | $runs | $rays | ${slope:--} |"
 done <"$growth_rows"
-[ -s "$growth_rows" ] || echo "| | no chapter renders meshes yet | | | | |"
+[ -s "$growth_rows" ] || echo "| | no chapter renders meshes yet | | | | | | |"
 cat <<EOF
 
 ![Time per ray against triangles](figures/bench_growth.png)
@@ -168,11 +176,11 @@ Every chapter's built-in scene and the scene of all stages, rendered by the doub
 and the float build (\`make REAL=float\`), side by side on one thread.  Pixels differing: of the float
 image against the double one.
 
-| line | scene | size | double: time (s), min-max | float: time (s), min-max | float / double | pixels differing (%) | largest difference |
-|---|---|---|---|---|---|---|---|
+| line | scene | size | double: time (s), min-max | float: time (s), min-max | float / double | RMSE, PSNR (dB) | MAE | pixels differing (%) | largest difference |
+|---|---|---|---|---|---|---|---|---|---|
 EOF
-while IFS=$'\t' read -r id label size td tdr tf tfr r share maxd; do
-    echo "| \`precision.$id\` | $label | $size | $(fmt_t "$td") ($(fmt_range "$tdr")) | $(fmt_t "$tf") ($(fmt_range "$tfr")) | $r | $(fmt_share "$share") | $maxd |"
+while IFS=$'\t' read -r id label size td tdr tf tfr r rmse psnr mae share maxd; do
+    echo "| \`precision.$id\` | $label | $size | $(fmt_t "$td") ($(fmt_range "$tdr")) | $(fmt_t "$tf") ($(fmt_range "$tfr")) | $r | $(fmt_err "$rmse" "$psnr") | $mae | $(fmt_share "$share") | $maxd |"
 done <"$precision_rows"
 
 cat <<EOF
@@ -226,6 +234,10 @@ lights, rendered by every chapter's renderer at its own stage (320 x 240, 1 samp
 grows as chapters land; each renderer says what it ignores:
 
 ![One scene through all stages](figures/bench_stages.png)
+
+The same in two rows, for a slide (docs/figures/bench_stages_2rows.png):
+
+![One scene through all stages, two rows](figures/bench_stages_2rows.png)
 
 EOF
 while IFS=$'\t' read -r c img ignores; do

@@ -15,7 +15,13 @@
  *     S_t = (eta_i / eta_t) S_i      cos(theta_t) = sqrt(1 - |S_t|^2)
  *     C_t = -cos(theta_t) n          T = C_t + S_t
  *
- * When |S_t|^2 > 1 there is no such direction: past the critical angle
+ * computed, with r = eta_i / eta_t, from the cosine rather than from the
+ * vector S_t, and grouped by d and n, so that r = 1 gives T = d exactly:
+ *
+ *     cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i)
+ *     T = r d + (r cos(theta_i) - cos(theta_t)) n
+ *
+ * When |S_t|^2 > 1 (cos^2(theta_t) < 0) there is no such direction: past the critical angle
  * theta_c = asin(eta_t / eta_i), possible only on the way out of the denser
  * medium (eta_i > eta_t), no light is transmitted and all of it is reflected
  * ("total internal reflection").  At theta_c itself, |S_t| = 1 and T runs

@@ -5,17 +5,19 @@
 bool refract(vec3 d, vec3 n, real eta_i, real eta_t, vec3 *T, real *cos_t)
 {
     /* EXERCISE refract: the transmitted direction of d through the surface from eta_i into eta_t, or
-     * false past the critical angle (README, "The transmitted direction" and "Total internal
-     * reflection"; refract.h says what *T and *cos_t hold). */
-    real cos_i = -vec3_dot(d, n);
-    vec3 C_i = vec3_scale(n, cos_i);           /* |C_i| = cos(theta_i), out of the surface */
-    vec3 S_i = vec3_add(d, C_i);               /* |S_i| = sin(theta_i), along the surface */
-    vec3 S_t = vec3_scale(S_i, eta_i / eta_t); /* Snell: sin(theta_t) = (eta_i / eta_t) sin(theta_i) */
-    real sin2_t = vec3_length_squared(S_t);
-    if (sin2_t > 1) /* past the critical angle: total internal reflection */
+     * false past the critical angle, in a form whose rounding leaves T = d for equal indices at every
+     * angle, grazing ones too (README, "The transmitted direction", "In floating point" and "Total
+     * internal reflection"; refract.h says what *T and *cos_t hold). */
+    real r = eta_i / eta_t;       /* Snell: sin(theta_t) = r sin(theta_i), S_t = r S_i */
+    real cos_i = -vec3_dot(d, n); /* |C_i| = cos(theta_i) */
+    /* cos^2(theta_t) = 1 - |S_t|^2 = 1 - r^2 (1 - cos^2(theta_i)), from the cosine, not from the vector
+     * S_t: grouped so that r = 1 gives exactly cos^2(theta_i) at every angle */
+    real cos2_t = (1 - r * r) + r * r * (cos_i * cos_i);
+    if (cos2_t < 0) /* |S_t|^2 > 1, past the critical angle: total internal reflection */
         return false;
-    *cos_t = real_sqrt(1 - sin2_t);
-    *T = vec3_sub(S_t, vec3_scale(n, *cos_t)); /* T = C_t + S_t, C_t = -cos(theta_t) n */
+    *cos_t = real_sqrt(cos2_t);
+    /* T = C_t + S_t = -cos(theta_t) n + r (d + cos(theta_i) n), grouped by d and n: r = 1 gives T = d */
+    *T = vec3_add(vec3_scale(d, r), vec3_scale(n, r * cos_i - *cos_t));
     return true;
     /* STUB
     (void)n;

@@ -15,19 +15,21 @@ set xrange [0:90]
 set yrange [0:1.02]
 set xtics 10
 set ytics 0.1
-set key at 80, 0.95 right top box opaque
+# the keys go where no curve is: right of the critical angle and above the curve into glass here, top
+# left in the close-up, so that the steep rise near the critical angle stays in view
+set key at 44, 0.95 left top box opaque samplen 2
 set label 1 sprintf("critical angle %.1f°", theta_c) at theta_c + 1, 0.55 tc rgb "#555555"
-set title "0° to 90°"
-plot data using 1:2 with lines lw 2 lc rgb "#1f5fa8" title "into glass (1 → 1.5), exact", \
-     data using 1:3 with lines lw 2 dt 2 lc rgb "#1f5fa8" title "into glass, Schlick", \
-     data using 1:4 with lines lw 2 lc rgb "#c0392b" title "out of glass (1.5 → 1), exact", \
-     data using 1:5 with lines lw 2 dt 2 lc rgb "#c0392b" title "out of glass, Schlick in cos {/Symbol q}_t", \
-     data using 1:6 with lines lw 2 dt 4 lc rgb "#27ae60" title "out of glass, Schlick in cos {/Symbol q}_i"
+set title "0° to 90° (in: into glass; out: out of glass)"
+plot data using 1:2 with lines lw 2 lc rgb "#1f5fa8" title "in (1 → 1.5), exact", \
+     data using 1:3 with lines lw 2 dt 2 lc rgb "#1f5fa8" title "in, Schlick", \
+     data using 1:4 with lines lw 2 lc rgb "#c0392b" title "out (1.5 → 1), exact", \
+     data using 1:5 with lines lw 2 dt 2 lc rgb "#c0392b" title "out, Schlick in cos {/Symbol q}_t", \
+     data using 1:6 with lines lw 2 dt 4 lc rgb "#27ae60" title "out, Schlick in cos {/Symbol q}_i"
 set title "out of glass, near the critical angle"
 set xrange [30:45]
 set xtics 2
 unset label 1
-set key at 44.5, 0.5 right top box opaque
+set key at 30.3, 0.97 left top box opaque
 plot data using 1:4 with lines lw 2 lc rgb "#c0392b" title "exact", \
      data using 1:5 with lines lw 2 dt 2 lc rgb "#c0392b" title "Schlick in cos {/Symbol q}_t", \
      data using 1:6 with lines lw 2 dt 4 lc rgb "#27ae60" title "Schlick in cos {/Symbol q}_i (jumps)"
