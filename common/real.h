@@ -24,6 +24,7 @@ typedef float real;
 #define real_fmax fmaxf
 #define real_fmin fminf
 #define real_copysign copysignf
+#define real_next_up(x) nextafterf((x), INFINITY) /* the next float above x */
 #else
 typedef double real;
 #define REAL_EPSILON DBL_EPSILON
@@ -37,6 +38,7 @@ typedef double real;
 #define real_fmax fmax
 #define real_fmin fmin
 #define real_copysign copysign
+#define real_next_up(x) nextafter((x), INFINITY) /* the next double above x */
 #endif
 
 #define REAL_INFINITY ((real)INFINITY)

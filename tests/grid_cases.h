@@ -611,4 +611,23 @@ static void test_builtin_scenes_as_chapter_10(void **state)
 }
 
 
+/* A row of cells: tiny spheres at the corners of the box [0, 10] x [0, 1] x
+ * [0, 1] fix the grid's box (surfaces 0-7), and with `sliver` a long thin
+ * triangle along x at y = 0.3 in the plane z = 0.5 (surface 8), which a ray
+ * along x at y = 0.6 passes in every cell without hitting it. */
+static inline void row_of_cells(surface_list *list, triangle_test test, bool sliver)
+{
+    surface_list_init(list, SPHERE_ROBUST, test);
+    for (int k = 0; k < 8; k++)
+        surface_list_add_sphere(list,
+                                (sphere){{(real)(10 * (k & 1)), (real)((k >> 1) & 1), (real)((k >> 2) & 1)},
+                                         (real)0.001},
+                                0, k);
+    if (sliver)
+        surface_list_add_triangle(list,
+                                  (triangle){{(real)0.2, (real)0.3, (real)0.5}, {(real)9.8, (real)0.3, (real)0.5},
+                                             {(real)9.8, (real)0.35, (real)0.5}},
+                                  0, 8);
+}
+
 #endif

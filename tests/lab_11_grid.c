@@ -52,17 +52,7 @@ static void test_mailbox_counts(void **state)
 {
     (void)state;
     surface_list list;
-    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
-    /* tiny spheres at the corners of the box [0, 10] x [0, 1] x [0, 1] */
-    for (int k = 0; k < 8; k++)
-        surface_list_add_sphere(&list,
-                                (sphere){{(real)(10 * (k & 1)), (real)((k >> 1) & 1), (real)((k >> 2) & 1)},
-                                         (real)0.001},
-                                0, k);
-    /* a sliver along x at y = 0.3, in the plane z = 0.5 */
-    surface_list_add_triangle(&list, (triangle){{(real)0.2, (real)0.3, (real)0.5}, {(real)9.8, (real)0.3, (real)0.5},
-                                                {(real)9.8, (real)0.35, (real)0.5}},
-                              0, 8);
+    row_of_cells(&list, TRIANGLE_CRAMER, true);
     for (int m = 0; m < 2; m++) {
         fast_grid g;
         fast_grid_options opt = {.density = 1.25, .max_cells = 1000, .mailbox = m == 0};

@@ -88,17 +88,7 @@ static void test_march_counts(void **state)
 {
     (void)state;
     surface_list list;
-    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
-    /* tiny spheres at the corners of the box [0, 10] x [0, 1] x [0, 1] */
-    for (int k = 0; k < 8; k++)
-        surface_list_add_sphere(&list,
-                                (sphere){{(real)(10 * (k & 1)), (real)((k >> 1) & 1), (real)((k >> 2) & 1)},
-                                         (real)0.001},
-                                0, k);
-    /* a sliver along x at y = 0.3, in the plane z = 0.5 */
-    surface_list_add_triangle(&list, (triangle){{(real)0.2, (real)0.3, (real)0.5}, {(real)9.8, (real)0.3, (real)0.5},
-                                                {(real)9.8, (real)0.35, (real)0.5}},
-                              0, 8);
+    row_of_cells(&list, TRIANGLE_CRAMER, true);
     grid g;
     build_grid(&g, &list, (grid_options){.density = 1.25, .max_cells = 1000});
     assert_int_equal(10, g.n[0]); /* 9 surfaces x 1.25 ~ 11 cells for a box 10 x 1 x 1 */
@@ -464,12 +454,7 @@ static void test_stop_rule(void **state)
 {
     (void)state;
     surface_list list;
-    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
-    for (int k = 0; k < 8; k++)
-        surface_list_add_sphere(&list,
-                                (sphere){{(real)(10 * (k & 1)), (real)((k >> 1) & 1), (real)((k >> 2) & 1)},
-                                         (real)0.001},
-                                0, k);
+    row_of_cells(&list, TRIANGLE_WATERTIGHT, false);
     surface_list_add_triangle(&list, (triangle){{(real)1.2, 0, 0}, {(real)1.2, 1, 0}, {(real)8.8, (real)0.5, 1}}, 0, 8);
     surface_list_add_sphere(&list, (sphere){{3, (real)0.5, (real)0.5}, (real)0.1}, 0, 9);
     grid g;

@@ -5,12 +5,6 @@
 
 #include "explain.h"
 
-#ifdef RT_REAL_FLOAT
-#define real_next_up(x) nextafterf((x), INFINITY)
-#else
-#define real_next_up(x) nextafter((x), INFINITY)
-#endif
-
 /* The search so far: the best hit, and the window a new hit must fall in. */
 typedef struct {
     const surface_list *list;

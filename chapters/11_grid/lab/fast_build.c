@@ -7,6 +7,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 
+#include "11_grid/grid.h"
+
 fast_grid_options fast_grid_default_options(void)
 {
     return (fast_grid_options){.density = FAST_GRID_DEFAULT_DENSITY,
@@ -38,39 +40,13 @@ void fast_grid_surface_bounds(const surface *s, vec3 *lo, vec3 *hi)
 
 static vec3 widen(vec3 v, real m) { return vec3_make(v.x + m, v.y + m, v.z + m); }
 
-/* The index of the cell holding coordinate x along axis a, as a real:
- * (x - lo_a) / cell_a. */
-static real cell_coordinate(const fast_grid *g, vec3 x, int a) { return (get(x, a) - get(g->lo, a)) * get(g->inv_cell, a); }
-
-/* A real cell index clamped to [lowest, highest] before it becomes an int,
- * so that a far or non-finite coordinate never overflows the conversion. */
-static int clamp_index(real f, int lowest, int highest)
-{
-    if (!(f >= (real)lowest)) /* also NaN */
-        return lowest;
-    if (f >= (real)highest)
-        return highest;
-    return (int)f;
-}
-
-/* snippet: cell_range */
+/* The cells a box overlaps: the lesson's grid_cell_range over a grid with
+ * this one's box, cells and counts (the lesson's exercise). */
 void fast_grid_cell_range(const fast_grid *g, vec3 box_lo, vec3 box_hi, int first[3], int last[3])
 {
-    /* the cells the box [box_lo, box_hi] overlaps, axis by axis.
-     * Along axis a, coordinate x lies at f = (x - lo_a) / cell_a in units of cells from
-     * the grid's low corner (cell_coordinate(g, x, a) computes it): cell i covers
-     * i <= f <= i + 1, so boundaries belong to both cells they separate.  The box covers
-     *     first = ceil(f_lo) - 1   (f_lo = 2.0 touches cell 1; f_lo = 2.3 starts in cell 2)
-     *     last  = floor(f_hi)      (f_hi = 3.0 touches cell 3)
-     * clamped to the grid, 0 .. n_a - 1, with clamp_index (it never overflows an int).
-     * A box wholly outside the grid then has first > last. */
-    for (int a = 0; a < 3; a++) {
-        real f_lo = cell_coordinate(g, box_lo, a), f_hi = cell_coordinate(g, box_hi, a);
-        first[a] = clamp_index(-real_floor(-f_lo) - 1, 0, g->n[a]); /* ceil(f_lo) - 1 */
-        last[a] = clamp_index(real_floor(f_hi), -1, g->n[a] - 1);
-    }
+    const grid frame = {.lo = g->lo, .hi = g->hi, .cell = g->cell, .n = {g->n[0], g->n[1], g->n[2]}};
+    grid_cell_range(&frame, box_lo, box_hi, first, last);
 }
-/* end snippet */
 
 /* Whether a triangle can touch cell (i, j, k), by the separating axis test
  * of Akenine-Moller (2001): the triangle and the box are apart when their
