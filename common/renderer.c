@@ -50,7 +50,7 @@ int renderer_main(const renderer *r, int argc, char **argv)
         return 2;
     }
 
-    void *prepared = r->prepare(&desc, err, sizeof err);
+    void *prepared = r->prepare(r->context, &desc, err, sizeof err);
     if (!prepared) {
         fprintf(stderr, "%s: %s\n", r->name, err);
         scene_free(&desc);

@@ -29,10 +29,11 @@ typedef struct {
 
     /* Fills `desc` (already scene_init'ed) with the built-in scene. */
     int (*builtin)(scene *desc);
-    /* Builds what the stage traces from the description.  Returns NULL with
-     * "file:line: problem" in err when the description cannot be rendered
-     * (a degenerate camera, say). */
-    void *(*prepare)(const scene *desc, char *err, size_t err_size);
+    /* Builds what the stage traces from the description, given `context`.
+     * Returns NULL with "file:line: problem" in err when the description
+     * cannot be rendered (a degenerate camera, say). */
+    void *(*prepare)(const void *context, const scene *desc, char *err, size_t err_size);
+    const void *context; /* what prepare needs of the renderer beyond its knobs (NULL: nothing) */
     sample_fn sample;
     void (*release)(void *prepared);
     /* Chapter 01's pixel_to_image; NULL: render_image_mapped's own. */

@@ -26,18 +26,16 @@ static color sample(const void *scene, real u, real v, uint64_t *rays)
     return show == SHOW_FLOOR ? floor_color(r) : direction_color(r);
 }
 
-static void *prepare(const scene *desc, char *err, size_t err_size)
+static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
+    (void)context;
     camera *cam = malloc(sizeof *cam);
-    if (!cam) {
+    if (cam && camera_from_scene(cam, desc, err, err_size))
+        return cam;
+    if (!cam)
         snprintf(err, err_size, "out of memory");
-        return NULL;
-    }
-    if (!camera_from_scene(cam, desc, err, err_size)) {
-        free(cam);
-        return NULL;
-    }
-    return cam;
+    free(cam);
+    return NULL;
 }
 
 int main(int argc, char **argv)

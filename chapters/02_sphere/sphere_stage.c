@@ -30,8 +30,9 @@ void sphere_stage_release(void *prepared)
     free(st);
 }
 
-void *sphere_stage_prepare(const scene *desc, char *err, size_t err_size)
+void *sphere_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
+    (void)context;
     const char *where = scene_name(desc);
     sphere_stage *st = calloc(1, sizeof *st);
     if (st)

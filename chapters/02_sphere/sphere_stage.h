@@ -19,7 +19,7 @@ typedef struct {
 int sphere_stage_scene(scene *desc);
 
 /* renderer.h's prepare and release for a sphere_stage. */
-void *sphere_stage_prepare(const scene *desc, char *err, size_t err_size);
+void *sphere_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size);
 void sphere_stage_release(void *prepared);
 
 #endif

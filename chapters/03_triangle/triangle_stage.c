@@ -102,8 +102,9 @@ void triangle_stage_release(void *prepared)
     free(s);
 }
 
-void *triangle_stage_prepare(const scene *desc, char *err, size_t err_size)
+void *triangle_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
+    (void)context;
     const char *where = scene_name(desc);
     triangle_stage *s = calloc(1, sizeof *s);
     if (!s) {

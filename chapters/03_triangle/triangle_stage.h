@@ -42,7 +42,7 @@ int triangle_scene_add_icosahedron(scene *desc, vec3 centre, real radius);
 int triangle_scene(scene *desc);
 
 /* renderer.h's prepare, sample and release for a triangle_stage. */
-void *triangle_stage_prepare(const scene *desc, char *err, size_t err_size);
+void *triangle_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size);
 color triangle_stage_sample(const void *prepared, real u, real v, uint64_t *rays);
 void triangle_stage_release(void *prepared);
 

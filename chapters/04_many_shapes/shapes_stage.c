@@ -15,8 +15,9 @@ void shapes_stage_release(void *prepared)
     free(st);
 }
 
-void *shapes_stage_prepare(const scene *desc, char *err, size_t err_size)
+void *shapes_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
+    (void)context;
     shapes_stage *st = malloc(sizeof *st);
     if (!st) {
         snprintf(err, err_size, "%s: out of memory", scene_name(desc));

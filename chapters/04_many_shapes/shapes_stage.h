@@ -18,7 +18,7 @@ typedef struct {
 } shapes_stage;
 
 /* renderer.h's prepare and release for a shapes_stage. */
-void *shapes_stage_prepare(const scene *desc, char *err, size_t err_size);
+void *shapes_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size);
 void shapes_stage_release(void *prepared);
 
 #endif

@@ -66,14 +66,12 @@ color shading_sample(const void *view, real u, real v, uint64_t *rays)
 }
 /* end snippet */
 
-/* ---- the renderer: renderer.h's callbacks take no context, so the stage
- * being run is kept here (and the knobs of chapters 02-03 in shape_knobs.c). */
+/* ---- the renderer: the stage is prepare's context (the knobs of chapters
+ * 02-03 are chosen through shape_knobs.h). */
 
-static const shading_stage *current;
-
-static void *prepare(const scene *desc, char *err, size_t err_size)
+static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
-    return shading_prepare(current, desc, chosen_sphere_formula(), chosen_triangle_test(), err, err_size);
+    return shading_prepare(context, desc, chosen_sphere_formula(), chosen_triangle_test(), err, err_size);
 }
 
 static void release(void *view) { shading_release(view); }
@@ -88,7 +86,6 @@ int shading_main(const shading_stage *stage, int argc, char **argv)
     shape_knob_rows(knobs); /* --sphere and --triangle first */
     for (int k = 0; k < stage->n_knobs; k++)
         knobs[SHAPE_KNOBS + k] = stage->knobs[k];
-    current = stage;
     const renderer r = {
         .name = stage->name,
         .summary = stage->summary,
@@ -100,6 +97,7 @@ int shading_main(const shading_stage *stage, int argc, char **argv)
         .default_height = 512,
         .builtin = stage->builtin ? stage->builtin : shading_scene,
         .prepare = prepare,
+        .context = stage,
         .sample = shading_sample,
         .release = release,
         .pixel_to_image = pixel_to_image, /* chapter 01's: the student's own mapping */

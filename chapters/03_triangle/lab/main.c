@@ -73,7 +73,7 @@ static color sample(const void *prepared, real u, real v, uint64_t *rays)
     return show == SHOW_CRACKS ? crack_sample(prepared, u, v, rays) : triangle_stage_sample(prepared, u, v, rays);
 }
 
-static void *prepare(const scene *desc, char *err, size_t err_size)
+static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
     if (cracks_steps < 0 || cracks_steps > 1 << 16) {
         snprintf(err, err_size, "--cracks=%d: must be from 0 (off) to 65536", cracks_steps);
@@ -83,7 +83,7 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
         snprintf(err, err_size, "--degenerate=%d: must be from 0 (off) to 100000000", degenerate_cases);
         return NULL;
     }
-    triangle_stage *s = triangle_stage_prepare(desc, err, err_size);
+    triangle_stage *s = triangle_stage_prepare(context, desc, err, err_size);
     if (s && cracks_steps > 0)
         count_cracks(s->test);
     if (s && degenerate_cases > 0)

@@ -51,8 +51,6 @@ typedef struct {
     slot *slots;
 } prepared_view;
 
-static shading_stage the_stage;
-
 static void add_tally(query_tally *to, const query_tally *t)
 {
     to->queries += t->queries;
@@ -92,7 +90,7 @@ static void release(void *prepared)
     free(pv);
 }
 
-static void *prepare(const scene *desc, char *err, size_t err_size)
+static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
     prepared_view *pv = calloc(1, sizeof *pv);
     if (!pv || !(pv->slots = calloc(SLOTS, sizeof *pv->slots))) {
@@ -100,7 +98,7 @@ static void *prepare(const scene *desc, char *err, size_t err_size)
         snprintf(err, err_size, "%s: out of memory", scene_name(desc));
         return NULL;
     }
-    pv->view = shading_prepare(&the_stage, desc, chosen_sphere_formula(), chosen_triangle_test(), err, err_size);
+    pv->view = shading_prepare(context, desc, chosen_sphere_formula(), chosen_triangle_test(), err, err_size);
     if (!pv->view) {
         release(pv);
         return NULL;
@@ -141,7 +139,7 @@ static void report(const void *prepared, render_stats stats, FILE *out)
 
 int main(int argc, char **argv)
 {
-    the_stage = grid_stage();
+    shading_stage the_stage = grid_stage();
     the_stage.build_query = lab_query_build;
     knob knobs[MAX_KNOBS];
     shape_knob_rows(knobs); /* --sphere and --triangle first */
@@ -162,6 +160,7 @@ int main(int argc, char **argv)
         .default_height = 512,
         .builtin = the_stage.builtin,
         .prepare = prepare,
+        .context = &the_stage,
         .sample = sample,
         .release = release,
         .report = report,
