@@ -174,7 +174,7 @@ static void expect_range(const grid *g, vec3 lo, vec3 hi, const int *want_first,
         const bool beyond_int = fabs(F) > 2147483647.0 || fabs(L) > 2147483647.0;
         const char *why = beyond_int ? "f_lo or f_hi converted to int before it was clamped: beyond an int's range "
                                        "the conversion is undefined (x86-64 gives INT_MIN); clamp the real value "
-                                       "with clamp_index, then convert"
+                                       "with real_to_index (common/box.h), then convert"
                                      : "first = ceil(f_lo) - 1, last = floor(f_hi), clamped to 0 .. n - 1 (first > "
                                        "last: none)";
         for (size_t k = 0; !beyond_int && k < sizeof mistakes / sizeof mistakes[0]; k++)
