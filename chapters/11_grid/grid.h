@@ -7,6 +7,7 @@
 #define CH11_GRID_H
 
 #include "04_many_shapes/surface.h"
+#include "box.h"
 #include "index_lists.h"
 
 /* snippet: grid */
@@ -21,21 +22,17 @@ typedef struct {
     vec3 cell;                /* the size of one cell along x, y and z */
     int n[3];                 /* cells along x, y and z */
     long n_cells, n_refs;
-    /* Cell c = i + n_x (j + n_y k) lists refs[start[c]] .. refs[start[c + 1] - 1] in increasing
-     * index (common/index_lists.h); "cell" n_cells lists the surfaces without finite bounds. */
-    uint32_t *start, *refs;
+    uint32_t *start, *refs;   /* cell c = i + n_x (j + n_y k) lists refs[start[c]] .. refs[start[c + 1] - 1] */
     real margin;              /* every box is widened by this: more than rounding moves a point */
 } grid;
 /* end snippet */
 
-/* What a march did: added to by grid_intersect_counted. */
 typedef struct {
-    uint64_t cells, tests; /* cells visited, surface_intersect calls */
+    uint64_t cells, tests; /* what marches did: cells visited, surface_intersect calls */
 } grid_counts;
 
 #define GRID_DEFAULT_DENSITY 2.0
 #define GRID_DEFAULT_MAX_CELLS (1L << 24)
-
 static inline grid_options grid_default_options(void) { return (grid_options){GRID_DEFAULT_DENSITY, GRID_DEFAULT_MAX_CELLS}; }
 
 /* The grid of `list` (which must outlive it, unchanged): 0, or -1 with the problem in err. */
@@ -43,18 +40,20 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
 void grid_free(grid *g);
 static inline size_t grid_memory(const grid *g) { return sizeof *g + (g->start ? (size_t)(g->n_cells + 2 + g->n_refs) * 4 : 0); }
 
-/* Cells along each axis: about density x surfaces in all, as cubic as the box of
- * these extents allows, at most max_cells; one on an axis of zero extent. */
+/* Cells along each axis: about density x surfaces in all, as cubic as a box of these
+ * extents allows, at most max_cells; one on an axis of zero extent. */
 void grid_resolution(const double extent[3], long surfaces, double density, long max_cells, int n[3]);
 
-/* The cells first[a] .. last[a] along each axis a that the box overlaps (a
- * boundary counts for both its cells), clamped to the grid: first > last
- * on an axis the box lies wholly outside. */
+/* The cells first[a] .. last[a] along each axis a that the box overlaps (a boundary
+ * counts for both its cells), clamped to the grid: first > last when it lies outside. */
 void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int last[3]);
 
-/* The hit with the smallest t in (t_min, t_max), as surfaces_intersect finds it over g->list;
- * the _counted one adds what the march did to *counts (when not NULL). */
-bool grid_intersect(const grid *g, ray r, real t_min, real t_max, hit_record *hit);
+/* The hit with the smallest t in (t_min, t_max), as surfaces_intersect finds it over
+ * g->list; the counted one adds what the march did to *counts (when not NULL). */
 bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_record *hit, grid_counts *counts);
+static inline bool grid_intersect(const grid *g, ray r, real t_min, real t_max, hit_record *hit)
+{
+    return grid_intersect_counted(g, r, t_min, t_max, hit, NULL);
+}
 
 #endif

@@ -17,17 +17,12 @@ const knob grid_knob_rows[GRID_KNOBS] = {
 
 static const char *const accel_choices[] = {"grid", "list", NULL};
 
-static bool grid_closest_hit(const void *accel, ray r, real t_min, real t_max, hit_record *hit)
+static bool grid_closest_hit(const void *g, ray r, real t_min, real t_max, hit_record *hit)
 {
-    return grid_intersect(accel, r, t_min, t_max, hit);
+    return grid_intersect(g, r, t_min, t_max, hit);
 }
 
-static void grid_release(void *owned)
-{
-    if (owned)
-        grid_free(owned);
-    free(owned);
-}
+static void grid_release(void *g) { grid_free(g), free(g); }
 
 /* snippet: grid_query */
 int grid_query(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)

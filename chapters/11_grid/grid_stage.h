@@ -1,11 +1,5 @@
-/* grid_stage.h - chapter 11: the grid as the closest-hit query of chapter 10's stage.
- *
- * Chapter 11 shades exactly as chapter 10 does and changes one question,
- * "what does this ray hit first?": grid_intersect in place of chapter 04's
- * linear scan, for eye, shadow, reflected and refracted rays alike.  Since
- * the grid returns the linear scan's hit bit for bit, the images are
- * chapter 10's byte for byte, only sooner.
- */
+/* grid_stage.h - chapter 11: the grid as the closest-hit query of chapter 10's stage (README,
+ * "What the renderer shows"): chapter 10's images byte for byte, only sooner. */
 #ifndef CH11_GRID_STAGE_H
 #define CH11_GRID_STAGE_H
 

@@ -5,8 +5,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "box.h"
-
 /* snippet: resolution */
 void grid_resolution(const double extent[3], long surfaces, double density, long max_cells, int n[3])
 {
@@ -56,8 +54,7 @@ void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int 
     }
     /* STUB
     (void)g, (void)box_lo, (void)box_hi;
-    for (int a = 0; a < 3; a++)
-        first[a] = 0, last[a] = -1;
+    first[0] = first[1] = first[2] = 0, last[0] = last[1] = last[2] = -1;
     END EXERCISE */
 }
 /* end snippet */
@@ -69,13 +66,14 @@ static box surface_box(const surface *s)
 }
 
 /* snippet: list_surface */
-/* Surface k goes in every cell its box, widened by the margin, overlaps. */
+/* Surface k goes in every cell its box, widened by the margin, overlaps; without finite bounds, in
+ * the last list, which every ray tests. */
 static void list_surface(void *ctx, long k, index_lists_fill *fill)
 {
     const grid *g = ctx;
     box b = surface_box(&g->list->items[k]);
     if (!box_is_finite(b)) {
-        index_lists_put(fill, g->n_cells); /* tested for every ray */
+        index_lists_put(fill, g->n_cells);
         return;
     }
     b = box_widen(b, g->margin);
@@ -121,8 +119,6 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
 
 void grid_free(grid *g)
 {
-    free(g->start);
-    free(g->refs);
-    g->start = g->refs = NULL;
-    g->n_cells = g->n_refs = 0;
+    free(g->start), free(g->refs);
+    *g = (grid){.list = g->list};
 }

@@ -1,14 +1,13 @@
 /* grid_march.c - chapter 11: the closest hit, cell by cell along the ray. */
 #include "11_grid/grid.h"
 
-#include "box.h"
 #include "explain.h"
 
-/* The search so far: the best hit and its surface (-1 before any), and the window a new hit must fall in. */
+/* The search so far: the best hit (surface -1 and t = t_max before any) and the tests made. */
 typedef struct {
     const surface_list *list;
     ray r;
-    real t_min, best_t; /* best_t is t_max before any hit */
+    real t_min, best_t;
     int best;
     hit_record hit;
     uint64_t tests;
@@ -22,15 +21,13 @@ static void test_surface(search *s, uint32_t k)
     s->tests++;
     if (surface_intersect(&s->list->items[k], s->list, s->r, s->t_min, real_next_up(s->best_t), &candidate) &&
         (candidate.t < s->best_t || (int)k < s->best)) {
-        s->best_t = candidate.t;
-        s->best = (int)k;
-        s->hit = candidate;
-        s->hit.surface = (int)k;
+        s->best_t = candidate.t, s->best = (int)k;
+        s->hit = candidate, s->hit.surface = (int)k;
     }
 }
 /* end snippet */
 
-/* The march's cell i, each axis's step (+1, -1 or 0) and the t of the cell's far boundary along it. */
+/* The march: the cell i, each axis's step (+1, -1 or 0) and the t of the cell's far boundary along it. */
 typedef struct {
     int i[3], step[3];
     real next[3];
@@ -89,64 +86,51 @@ static bool dda_step(const grid *g, dda *m, int a, ray r, const real inv_d[3])
 }
 /* end snippet */
 
-/* Visits the cells r pierces, in order, testing their surfaces into *s until the stop rule ends the march. */
-static uint64_t march(const grid *g, search *s, ray r, real t_min, real t_max)
-{
-    real inv_d[3], slack[3], t0 = t_min, t1 = t_max;
-    const real reach = box_ray_slack((box){g->lo, g->hi}, r, inv_d, slack);
-    if (g->n_cells == 0 || !enter_box(g, r, inv_d, slack, &t0, &t1))
-        return 0;
-    uint64_t cells = 0;
-
-    /* snippet: march */
-    /* The first cell holds p + t0 d, moved back along the ray by the rounding of that point. */
-    dda m;
-    const real back = reach + 16 * REAL_EPSILON * real_abs(t0) * vec3_max_abs(r.d);
-    for (int a = 0; a < 3; a++) {
-        m.step[a] = inv_d[a] > 0 ? 1 : inv_d[a] < 0 ? -1 : 0;
-        real x = m.step[a] ? vec3_axis(r.p, a) + t0 * vec3_axis(r.d, a) : vec3_axis(r.p, a);
-        x -= (real)m.step[a] * back;
-        m.i[a] = real_to_index((x - vec3_axis(g->lo, a)) / vec3_axis(g->cell, a), 0, g->n[a] - 1);
-        m.next[a] = m.step[a] ? crossing(g, a, m.i[a] + (m.step[a] > 0), r, inv_d) : REAL_INFINITY;
-    }
-    for (;;) {
-        /* Every surface of the cell, over the whole window: a hit beyond the cell is kept too. */
-        cells++;
-        long c = m.i[0] + (long)g->n[0] * (m.i[1] + (long)g->n[1] * m.i[2]);
-        EXPLAIN(explain_cell(m.i[0], m.i[1], m.i[2], (long)(g->start[c + 1] - g->start[c])));
-        for (uint32_t e = g->start[c]; e < g->start[c + 1]; e++)
-            test_surface(s, g->refs[e]);
-        /* The cell ends where the ray crosses its nearest boundary. */
-        int a = m.next[0] < m.next[1] ? (m.next[0] < m.next[2] ? 0 : 2) : (m.next[1] < m.next[2] ? 1 : 2);
-        /* EXERCISE stop: the stop rule (README, "When to stop"): end the march once the best hit
-         * lies in this cell, allowing for the boundary's rounding slack; else step to the next cell. */
-        if (s->best_t <= m.next[a] - slack[a])
-            break;
-        /* STUB
-        (void)slack;
-        break;
-        END EXERCISE */
-        if (!dda_step(g, &m, a, r, inv_d))
-            break;
-    }
-    /* end snippet */
-    return cells;
-}
-
 bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_record *hit, grid_counts *counts)
 {
     search s = {.list = g->list, .r = r, .t_min = t_min, .best_t = t_max, .best = -1};
     for (uint32_t e = g->start[g->n_cells]; e < g->start[g->n_cells + 1]; e++) /* the surfaces without bounds */
         test_surface(&s, g->refs[e]);
-    uint64_t cells = march(g, &s, r, t_min, t_max);
+    real inv_d[3], slack[3], t0 = t_min, t1 = t_max;
+    const real reach = box_ray_slack((box){g->lo, g->hi}, r, inv_d, slack);
+    uint64_t cells = 0;
+    if (g->n_cells > 0 && enter_box(g, r, inv_d, slack, &t0, &t1)) {
+        /* snippet: march */
+        /* The first cell holds p + t0 d, moved back along the ray by the rounding of that point. */
+        dda m;
+        const real back = reach + 16 * REAL_EPSILON * real_abs(t0) * vec3_max_abs(r.d);
+        for (int a = 0; a < 3; a++) {
+            m.step[a] = inv_d[a] > 0 ? 1 : inv_d[a] < 0 ? -1 : 0;
+            real x = m.step[a] ? vec3_axis(r.p, a) + t0 * vec3_axis(r.d, a) : vec3_axis(r.p, a);
+            x -= (real)m.step[a] * back;
+            m.i[a] = real_to_index((x - vec3_axis(g->lo, a)) / vec3_axis(g->cell, a), 0, g->n[a] - 1);
+            m.next[a] = m.step[a] ? crossing(g, a, m.i[a] + (m.step[a] > 0), r, inv_d) : REAL_INFINITY;
+        }
+        for (;;) {
+            /* Every surface of the cell, over the whole window: a hit beyond the cell is kept too. */
+            cells++;
+            long c = m.i[0] + (long)g->n[0] * (m.i[1] + (long)g->n[1] * m.i[2]);
+            EXPLAIN(explain_cell(m.i[0], m.i[1], m.i[2], (long)(g->start[c + 1] - g->start[c])));
+            for (uint32_t e = g->start[c]; e < g->start[c + 1]; e++)
+                test_surface(&s, g->refs[e]);
+            /* The cell ends where the ray crosses its nearest boundary. */
+            int a = m.next[0] < m.next[1] ? (m.next[0] < m.next[2] ? 0 : 2) : (m.next[1] < m.next[2] ? 1 : 2);
+            /* EXERCISE stop: the stop rule (README, "When to stop"): end the march once the best hit
+             * lies in this cell, allowing for the boundary's rounding slack; else step to the next cell. */
+            if (s.best_t <= m.next[a] - slack[a])
+                break;
+            /* STUB
+            (void)slack;
+            break;
+            END EXERCISE */
+            if (!dda_step(g, &m, a, r, inv_d))
+                break;
+        }
+        /* end snippet */
+    }
     if (counts)
         counts->cells += cells, counts->tests += s.tests;
     if (s.best >= 0)
         *hit = s.hit;
     return s.best >= 0;
-}
-
-bool grid_intersect(const grid *g, ray r, real t_min, real t_max, hit_record *hit)
-{
-    return grid_intersect_counted(g, r, t_min, t_max, hit, NULL);
 }
