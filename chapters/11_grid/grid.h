@@ -27,9 +27,8 @@ typedef struct {
 } grid;
 /* end snippet */
 
-typedef struct {
-    uint64_t cells, tests; /* what marches did: cells visited, surface_intersect calls */
-} grid_counts;
+/* What marches did: cells visited, surface_intersect calls. */
+typedef struct { uint64_t cells, tests; } grid_counts;
 
 #define GRID_DEFAULT_DENSITY 2.0
 #define GRID_DEFAULT_MAX_CELLS (1L << 24)

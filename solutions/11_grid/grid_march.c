@@ -28,10 +28,7 @@ static void test_surface(search *s, uint32_t k)
 /* end snippet */
 
 /* The march: the cell i, each axis's step (+1, -1 or 0) and the t of the cell's far boundary along it. */
-typedef struct {
-    int i[3], step[3];
-    real next[3];
-} dda;
+typedef struct { int i[3], step[3]; real next[3]; } dda;
 
 /* t where the ray crosses boundary `plane` of axis a, lo_a + plane cell_a. */
 static real crossing(const grid *g, int a, int plane, ray r, const real inv_d[3])
