@@ -1,8 +1,5 @@
-/* grid.h - chapter 11: a uniform grid over the scene, marched by a 3D-DDA (README, "The grid").
- *
- * grid_intersect answers surfaces_intersect's question with its answer: the
- * same surface and bit for bit the same t, the first in the list among equal t.
- */
+/* grid.h - chapter 11: a uniform grid over the scene, marched by a 3D-DDA (README, "The grid"), whose
+ * grid_intersect gives surfaces_intersect's hit bit for bit, the first in the list among equal t. */
 #ifndef CH11_GRID_H
 #define CH11_GRID_H
 
