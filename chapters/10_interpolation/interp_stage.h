@@ -3,7 +3,7 @@
  * Chapter 10's renderer is chapter 05's shading_stage with this chapter's
  * shade function, knobs and features.  The stage is built here, not in
  * render.c, so that chapter 11 renders with exactly this stage and changes
- * one thing, the closest-hit query, `interp_stage(grid_query)`, and so
+ * one thing, the closest-hit query, `interp_stage(..., grid_query)`, and so
  * gives byte-identical images, only faster.
  */
 #ifndef CH10_INTERP_STAGE_H
