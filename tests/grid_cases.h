@@ -590,7 +590,9 @@ static void test_builtin_scenes_as_chapter_10(void **state)
         {"chapters 05-07", shading_scene, 64}, {"chapter 08", mirror_scene, 64}, {"chapter 09", glass_scene, 64},
         {"chapter 10", interp_scene, 64},      {"chapter 11", grid_scene, 40},
     };
-    const shading_stage linear = interp_stage(NULL), gridded = GRID_STAGE();
+    interp_knobs linear_knobs = INTERP_KNOBS_DEFAULT;
+    knob linear_rows[MAX_STAGE_KNOBS];
+    const shading_stage linear = interp_stage(&linear_knobs, linear_rows, NULL), gridded = GRID_STAGE();
     for (size_t s = 0; s < sizeof scenes / sizeof scenes[0]; s++) {
         scene desc;
         scene_init(&desc);

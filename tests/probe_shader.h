@@ -41,7 +41,7 @@ static inline bool probe_took(const tracer *tr, const shading_point *sp, int dep
 }
 
 /* suite_trace with an empty record. */
-static inline color probe_trace(const scene *desc, shade_fn shade, const void *knobs, ray r, uint64_t *rays)
+static inline color probe_trace(const scene *desc, shade_fn shade, const stage_knobs *knobs, ray r, uint64_t *rays)
 {
     probe.n = 0;
     return suite_trace(desc, shade, knobs, r, rays);

@@ -20,11 +20,11 @@
 #include "scene_build.h"
 #include "suite.h"
 
-/* desc prepared for tracing with shade and knobs (release it). */
-static inline shading_view *suite_view(const scene *desc, shade_fn shade, const void *knobs)
+/* desc prepared for tracing with shade and knobs (NULL: none, the defaults) (release it). */
+static inline shading_view *suite_view(const scene *desc, shade_fn shade, const stage_knobs *knobs)
 {
     char err[256] = "";
-    const shading_stage stage = {.name = "test", .shade = shade, .shade_knobs = knobs};
+    const shading_stage stage = {.name = "test", .shade = shade, .shade_knobs = knobs ? *knobs : (stage_knobs){0}};
     shading_view *view = shading_prepare(&stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
     if (!view)
         fail_msg("%s", err);
@@ -33,7 +33,7 @@ static inline shading_view *suite_view(const scene *desc, shade_fn shade, const 
 
 /* The radiance of one eye ray r through desc (from t = 0, depth 0); its rays
  * are counted into rays. */
-static inline color suite_trace(const scene *desc, shade_fn shade, const void *knobs, ray r, uint64_t *rays)
+static inline color suite_trace(const scene *desc, shade_fn shade, const stage_knobs *knobs, ray r, uint64_t *rays)
 {
     shading_view *view = suite_view(desc, shade, knobs);
     color c = trace(&view->tr, r, 0, REAL_INFINITY, 0, rays);
@@ -43,7 +43,7 @@ static inline color suite_trace(const scene *desc, shade_fn shade, const void *k
 
 /* desc rendered into img (initialized here, w x h, free it) at one sample per
  * pixel on two threads. */
-static inline render_stats suite_render(const scene *desc, shade_fn shade, const void *knobs, image *img, int w,
+static inline render_stats suite_render(const scene *desc, shade_fn shade, const stage_knobs *knobs, image *img, int w,
                                         int h)
 {
     shading_view *view = suite_view(desc, shade, knobs);
@@ -95,7 +95,8 @@ static inline color suite_record(const tracer *tr, const shading_point *sp, int 
 /* The shading point *sp the eye ray r meets in desc, as the shade function
  * is given it; the view (its tracer carries knobs) stays alive for the test
  * to shade or cast from that point: release it. */
-static inline shading_view *suite_shading_point(const scene *desc, const void *knobs, ray r, shading_point *sp)
+static inline shading_view *suite_shading_point(const scene *desc, const stage_knobs *knobs, ray r,
+                                                shading_point *sp)
 {
     shading_view *view = suite_view(desc, suite_record, knobs);
     uint64_t rays[RAY_KINDS] = {0};

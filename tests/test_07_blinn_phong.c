@@ -257,7 +257,8 @@ static color shade_spot(const scene *desc, phong_form form, uint64_t *rays, shad
 {
     static phong_knobs knobs;
     knobs = (phong_knobs){.spawn = {.eps = EPS_BOUND}, .form = form};
-    shading_view *view = suite_shading_point(desc, &knobs, (ray){eye, vec3_sub(spot, eye)}, sp);
+    const stage_knobs aimed = {.spawn = &knobs.spawn, .phong = &knobs};
+    shading_view *view = suite_shading_point(desc, &aimed, (ray){eye, vec3_sub(spot, eye)}, sp);
     color c = shade_phong(&view->tr, sp, 0, rays);
     shading_release(view);
     return c;
@@ -388,7 +389,8 @@ static void test_back_face_lights(void **state)
     static phong_knobs knobs = PHONG_KNOBS_DEFAULT;
     const vec3 eye_below = vec3_add(spot, vec3_make(1.125, -7.5, 5.125));
     shading_point sp;
-    shading_view *view = suite_shading_point(&desc, &knobs, (ray){eye_below, vec3_sub(spot, eye_below)}, &sp);
+    const stage_knobs aimed = {.spawn = &knobs.spawn, .phong = &knobs};
+    shading_view *view = suite_shading_point(&desc, &aimed, (ray){eye_below, vec3_sub(spot, eye_below)}, &sp);
     assert_vec3_close(vec3_make(0, 1, 0), sp.hit.normal, TOL(1)); /* geometric: the floor's +y */
     assert_vec3_close(vec3_make(0, -1, 0), sp.n, TOL(1));         /* shading: towards the viewer below */
     uint64_t rays[RAY_KINDS] = {0};
@@ -431,7 +433,8 @@ static void test_shadow_policy_from_knobs(void **state)
         static phong_knobs knobs;
         knobs = (phong_knobs){.spawn = {.eps = p}, .form = PHONG_COURSE};
         shading_point sp;
-        shading_view *view = suite_shading_point(&desc, &knobs, (ray){eye, vec3_sub(spot, eye)}, &sp);
+        const stage_knobs aimed = {.spawn = &knobs.spawn, .phong = &knobs};
+        shading_view *view = suite_shading_point(&desc, &aimed, (ray){eye, vec3_sub(spot, eye)}, &sp);
         assert_vec3_close(vec3_make(0, 1, 0), sp.hit.normal, TOL(1)); /* the floor, not the sphere */
         uint64_t rays[RAY_KINDS] = {0};
         color c = shade_phong(&view->tr, &sp, 0, rays);

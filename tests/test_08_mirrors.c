@@ -88,10 +88,17 @@ static path_knobs knobs_of(int depth, real min_weight)
     return (path_knobs){.phong = PHONG_KNOBS_DEFAULT, .depth = depth, .min_weight = min_weight};
 }
 
+/* The tracer's knobs aimed at *k, as chapter 08's renderer aims them. */
+static stage_knobs aimed_at(const path_knobs *k)
+{
+    return (stage_knobs){.spawn = &k->phong.spawn, .phong = &k->phong, .path = k};
+}
+
 /* Traces one eye ray through desc with the glazed shader (and the probe). */
 static color trace_one(const scene *desc, const path_knobs *knobs, ray r, uint64_t *rays)
 {
-    return probe_trace(desc, probe_shade, knobs, r, rays);
+    const stage_knobs aimed = aimed_at(knobs);
+    return probe_trace(desc, probe_shade, &aimed, r, rays);
 }
 
 /* A count (rays, probe hits, depth) against the expected one, with the
@@ -201,7 +208,8 @@ static void test_mirror_ray_policy_from_knobs(void **state)
         path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
         knobs.phong.spawn.eps = policies[k];
         shading_point sp; /* the mirror's point, as the shade function is given it */
-        shading_release(suite_shading_point(&desc, &knobs, eye_ray, &sp));
+        const stage_knobs aimed = aimed_at(&knobs);
+        shading_release(suite_shading_point(&desc, &aimed, eye_ray, &sp));
         vec3 expected = spawn_ray(&sp, reflect(sp.r.d, sp.n), policies[k]).p;
         uint64_t rays[RAY_KINDS] = {0};
         trace_one(&desc, &knobs, eye_ray, rays);
@@ -252,7 +260,8 @@ static void test_glazed_adds_to_chapter_07(void **state)
         probe_shader = -1;
         color L = trace_one(&desc, &knobs, (ray){eye, vec3_sub(far_point, eye)}, rays);
         /* chapter 07 alone on the same point */
-        color L_07 = suite_trace(&desc, shade_phong, &knobs.phong, (ray){eye, vec3_sub(far_point, eye)}, rays_07);
+        const stage_knobs aimed_07 = {.spawn = &knobs.phong.spawn, .phong = &knobs.phong};
+        color L_07 = suite_trace(&desc, shade_phong, &aimed_07, (ray){eye, vec3_sub(far_point, eye)}, rays_07);
         assert_true(L_07.r > 0.01); /* lit: the light is on the viewer's side */
         const char *input = describe("a glazed Phong plane, k_m = %s, one light, the backColor in the mirror direction",
                                      mirror ? "(0.5, 0.25, 0.125)" : "0");
@@ -334,7 +343,8 @@ static void test_convex_mirror_never_sees_itself(void **state)
         scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = m, .center = c, .radius = s});
         path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
         probe_shader = -1;
-        shading_view *view = suite_view(&desc, probe_shade, &knobs);
+        const stage_knobs aimed = aimed_at(&knobs);
+        shading_view *view = suite_view(&desc, probe_shade, &aimed);
         vec3 eye = vec3_add(c, vec3_scale(vec3_make(1, 2, 2), s)); /* 3 s from the centre */
         vec3 to_c = vec3_normalize(vec3_sub(c, eye));
         vec3 u = vec3_normalize(vec3_cross(to_c, vec3_make(0, 1, 0))), w = vec3_cross(u, to_c);
@@ -369,7 +379,8 @@ static void test_convex_mirror_never_sees_itself(void **state)
 /* Renders desc at w x h with the glazed shader and knobs. */
 static render_stats render_glazed(const scene *desc, const path_knobs *knobs, image *img, int w, int h)
 {
-    return suite_render(desc, shade_glazed, knobs, img, w, h);
+    const stage_knobs aimed = aimed_at(knobs);
+    return suite_render(desc, shade_glazed, &aimed, img, w, h);
 }
 
 /* The furnace: a mirror sphere (k_m = 1, black diffuse) in a uniform

@@ -388,9 +388,17 @@ static glass_knobs knobs_of(int depth, real min_weight)
                          .fresnel = FRESNEL_EXACT};
 }
 
+/* The tracer's knobs aimed at *k, as chapter 09's renderer aims them. */
+static stage_knobs aimed_at(const glass_knobs *k)
+{
+    const path_knobs *path = &k->path;
+    return (stage_knobs){.spawn = &path->phong.spawn, .phong = &path->phong, .path = path, .glass = k};
+}
+
 static color trace_one(const scene *desc, const glass_knobs *knobs, ray r, uint64_t *rays)
 {
-    return probe_trace(desc, probe_shade, knobs, r, rays);
+    const stage_knobs aimed = aimed_at(knobs);
+    return probe_trace(desc, probe_shade, &aimed, r, rays);
 }
 
 static int add_glass(scene *desc, real eta)
@@ -535,7 +543,8 @@ static void test_total_internal_reflection_rays(void **state)
 
 static render_stats render_glass(const scene *desc, const glass_knobs *knobs, image *img, int w, int h)
 {
-    return suite_render(desc, shade_glass, knobs, img, w, h);
+    const stage_knobs aimed = aimed_at(knobs);
+    return suite_render(desc, shade_glass, &aimed, img, w, h);
 }
 
 /* The furnace: a glass sphere (eta 1.5) in a uniform background, no lights:

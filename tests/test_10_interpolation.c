@@ -606,7 +606,9 @@ static void test_mirror_above(void **state)
 static color trace_10(const scene *desc, ray r, uint64_t *rays)
 {
     char err[256] = "";
-    const shading_stage stage = interp_stage(NULL);
+    interp_knobs knobs = INTERP_KNOBS_DEFAULT;
+    knob rows[MAX_STAGE_KNOBS];
+    const shading_stage stage = interp_stage(&knobs, rows, NULL);
     shading_view *view = shading_prepare(&stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
     if (!view)
         fail_msg("%s", err);
@@ -720,7 +722,9 @@ static void test_builtin_scene_smooth_and_flat(void **state)
     scene_init(&desc);
     assert_int_equal(0, interp_scene(&desc));
     char err[256] = "";
-    const shading_stage stage = interp_stage(NULL);
+    interp_knobs knobs = INTERP_KNOBS_DEFAULT;
+    knob rows[MAX_STAGE_KNOBS];
+    const shading_stage stage = interp_stage(&knobs, rows, NULL);
     shading_view *view = shading_prepare(&stage, &desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
     if (!view)
         fail_msg("%s", err);

@@ -67,12 +67,17 @@ static void check_scene(const shading_stage *stage, const char *name)
 
 /* ---- chapter 07: Blinn-Phong, ambient, many lights, shadows --------------------------------------- */
 
-static phong_knobs phong_defaults = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE};
-static const shading_stage stage07 = {.name = "07_blinn_phong", .shade = shade_phong, .shade_knobs = &phong_defaults};
+static const phong_knobs phong_defaults = {.spawn = {.eps = EPS_BOUND}, .form = PHONG_COURSE};
+#define PHONG_AIMED {.spawn = &phong_defaults.spawn, .phong = &phong_defaults}
+static const shading_stage stage07 = {.name = "07_blinn_phong", .shade = shade_phong, .shade_knobs = PHONG_AIMED};
 
-/* The same stage over chapter 11's grid. */
-static const shading_stage stage07_grid = {
-    .name = "07_blinn_phong", .shade = shade_phong, .shade_knobs = &phong_defaults, .build_query = grid_query};
+/* The same stage over chapter 11's grid (its knobs' defaults). */
+static const grid_knobs grid_defaults = GRID_KNOBS_DEFAULT;
+static const shading_stage stage07_grid = {.name = "07_blinn_phong",
+                                           .shade = shade_phong,
+                                           .shade_knobs = PHONG_AIMED,
+                                           .build_query = grid_query,
+                                           .query_knobs = &grid_defaults};
 
 static void test_07_one_sphere(void **state) { (void)state; check_scene(&stage07, "one-sphere"); }
 static void test_07_two_boxes(void **state) { (void)state; check_scene(&stage07, "two-boxes"); }
@@ -92,14 +97,18 @@ static void test_07_bunny2(void **state) { (void)state; check_scene(&stage07_gri
 
 static void check_10(const char *name)
 {
-    const shading_stage stage = interp_stage(NULL);
+    interp_knobs knobs = INTERP_KNOBS_DEFAULT;
+    knob rows[MAX_STAGE_KNOBS];
+    const shading_stage stage = interp_stage(&knobs, rows, NULL);
     check_scene(&stage, name);
 }
 
 /* Chapter 10's stage over chapter 11's grid: chapter 11's renderer. */
 static void check_10_grid(const char *name)
 {
-    const shading_stage stage = grid_stage();
+    grid_knobs knobs = GRID_KNOBS_DEFAULT;
+    knob rows[MAX_STAGE_KNOBS];
+    const shading_stage stage = grid_stage(&knobs, rows);
     check_scene(&stage, name);
 }
 

@@ -11,35 +11,36 @@
 
 enum { SHOW_DIRECTION, SHOW_FLOOR };
 static const char *const show_choices[] = {"direction", "floor", NULL};
-static int show = SHOW_DIRECTION;
 
-static const knob knobs[] = {
-    {"show", KNOB_CHOICE, &show, show_choices, "what to colour each ray by"},
-};
+typedef struct { camera cam; int show; /* --show */ } ray_picture;
 
-static color sample(const void *scene, real u, real v, uint64_t *rays)
+static color sample(const void *prepared, real u, real v, uint64_t *rays)
 {
-    ray r = camera_ray(scene, u, v);
+    const ray_picture *pic = prepared;
+    ray r = camera_ray(&pic->cam, u, v);
     ++*rays;
     if (!(vec3_max_abs(r.d) > 0)) /* an unfinished camera: black, not NaN */
         return color_make(0, 0, 0);
-    return show == SHOW_FLOOR ? floor_color(r) : direction_color(r);
+    return pic->show == SHOW_FLOOR ? floor_color(r) : direction_color(r);
 }
 
 static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
-    (void)context;
-    camera *cam = malloc(sizeof *cam);
-    if (cam && camera_from_scene(cam, desc, err, err_size))
-        return cam;
-    if (!cam)
+    ray_picture *pic = malloc(sizeof *pic);
+    if (pic && camera_from_scene(&pic->cam, desc, err, err_size)) {
+        pic->show = *(const int *)context; /* main's --show */
+        return pic;
+    }
+    if (!pic)
         snprintf(err, err_size, "out of memory");
-    free(cam);
+    free(pic);
     return NULL;
 }
 
 int main(int argc, char **argv)
 {
+    int show = SHOW_DIRECTION;
+    const knob knobs[] = {{"show", KNOB_CHOICE, &show, show_choices, "what to colour each ray by"}};
     const renderer r = {
         .name = "01_camera_rays",
         .summary = "01_camera_rays: the eye rays of a camera, coloured by direction (or where they meet the floor)",
@@ -50,6 +51,7 @@ int main(int argc, char **argv)
         .default_height = 384,
         .builtin = ray_view_scene,
         .prepare = prepare,
+        .context = &show,
         .sample = sample,
         .pixel_to_image = pixel_to_image,
         .release = free,

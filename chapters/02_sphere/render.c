@@ -14,18 +14,11 @@
 
 enum { FORMULA_ROBUST, FORMULA_TEXTBOOK, FORMULA_COMPARE };
 static const char *const formula_choices[] = {"robust", "textbook", "compare", NULL};
-static int formula = FORMULA_ROBUST;
-
-static const knob knobs[] = {
-    {"sphere", KNOB_CHOICE, &formula, formula_choices,
-     "ray-sphere formula; compare: textbook on the left half, robust on the right"},
-};
-
 /* snippet: trace */
 static color sample(const void *scene, real u, real v, uint64_t *rays)
 {
     const sphere_stage *st = scene;
-    sphere_formula f = formula == FORMULA_TEXTBOOK || (formula == FORMULA_COMPARE && u < (real)0.5)
+    sphere_formula f = st->formula == FORMULA_TEXTBOOK || (st->formula == FORMULA_COMPARE && u < (real)0.5)
                            ? SPHERE_TEXTBOOK
                            : SPHERE_ROBUST;
     ray r = camera_ray(&st->cam, u, v);
@@ -42,6 +35,9 @@ static color sample(const void *scene, real u, real v, uint64_t *rays)
 
 int main(int argc, char **argv)
 {
+    int formula = FORMULA_ROBUST;
+    const knob knobs[] = {{"sphere", KNOB_CHOICE, &formula, formula_choices,
+                           "ray-sphere formula; compare: textbook on the left half, robust on the right"}};
     const renderer r = {
         .name = "02_sphere",
         .summary = "02_sphere: white spheres on the background colour (the lecture's \"Image so far\")",
@@ -52,6 +48,7 @@ int main(int argc, char **argv)
         .default_height = 512,
         .builtin = sphere_stage_scene,
         .prepare = sphere_stage_prepare,
+        .context = &formula,
         .sample = sample,
         .pixel_to_image = pixel_to_image,
         .release = sphere_stage_release,

@@ -32,13 +32,11 @@ void sphere_stage_release(void *prepared)
 
 void *sphere_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
-    (void)context;
-    const char *where = scene_name(desc);
     sphere_stage *st = calloc(1, sizeof *st);
     if (st)
         st->spheres = malloc(((size_t)desc->n_surfaces + 1) * sizeof *st->spheres);
     if (!st || !st->spheres) {
-        snprintf(err, err_size, "%s: out of memory", where);
+        snprintf(err, err_size, "%s: out of memory", scene_name(desc));
         sphere_stage_release(st);
         return NULL;
     }
@@ -50,5 +48,6 @@ void *sphere_stage_prepare(const void *context, const scene *desc, char *err, si
         if (desc->surfaces[k].kind == SURFACE_SPHERE)
             st->spheres[st->n_spheres++] = (sphere){desc->surfaces[k].center, desc->surfaces[k].radius};
     st->background = desc->back_color;
+    st->formula = *(const int *)context;
     return st;
 }

@@ -12,6 +12,7 @@ typedef struct {
     sphere *spheres;
     int n_spheres;
     color background;
+    int formula; /* what render.c's --sphere chose: prepare's context, an int */
 } sphere_stage;
 
 /* The lecture's slide: Sphere((0.0, 0.0, 0.0), 1.0), seen from 4 units

@@ -13,6 +13,8 @@
 
 int main(int argc, char **argv)
 {
-    const renderer r = triangle_stage_renderer();
+    int test = TRIANGLE_CRAMER; /* --triangle */
+    knob row;
+    const renderer r = triangle_stage_renderer(&test, &row);
     return renderer_main(&r, argc, argv);
 }

@@ -10,7 +10,6 @@
 #include "scene_build.h"
 
 static const char *const triangle_choices[] = {"cramer", "watertight", NULL}; /* in the order of the enum */
-static int test = TRIANGLE_CRAMER;
 
 knob triangle_knob(int *choice)
 {
@@ -104,7 +103,7 @@ void triangle_stage_release(void *prepared)
 
 void *triangle_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
-    (void)context;
+    const int *test = context; /* --triangle's value, owned by main */
     const char *where = scene_name(desc);
     triangle_stage *s = calloc(1, sizeof *s);
     if (!s) {
@@ -116,7 +115,7 @@ void *triangle_stage_prepare(const void *context, const scene *desc, char *err, 
         return NULL;
     }
     s->back = desc->back_color;
-    s->test = (triangle_test)test;
+    s->test = (triangle_test)*test;
     s->tris = malloc((size_t)(desc->n_surfaces ? desc->n_surfaces : 1) * sizeof *s->tris);
     if (!s->tris) {
         snprintf(err, err_size, "%s: out of memory", where);
@@ -131,20 +130,20 @@ void *triangle_stage_prepare(const void *context, const scene *desc, char *err, 
     return s;
 }
 
-renderer triangle_stage_renderer(void)
+renderer triangle_stage_renderer(int *test, knob *row)
 {
-    static knob row;
-    row = triangle_knob(&test);
+    *row = triangle_knob(test);
     return (renderer){
         .name = "03_triangle",
         .summary = "03_triangle: triangles coloured by their barycentric coordinates",
-        .knobs = &row,
+        .knobs = row,
         .n_knobs = 1,
         .modelled = FEATURE_TRIANGLES,
         .default_width = 512,
         .default_height = 384,
         .builtin = triangle_scene,
         .prepare = triangle_stage_prepare,
+        .context = test,
         .sample = triangle_stage_sample,
         .release = triangle_stage_release,
         .pixel_to_image = pixel_to_image,

@@ -41,13 +41,14 @@ int triangle_scene_add_icosahedron(scene *desc, vec3 centre, real radius);
  * right.  0, or -1 when out of memory. */
 int triangle_scene(scene *desc);
 
-/* renderer.h's prepare, sample and release for a triangle_stage. */
+/* renderer.h's prepare (context: the int --triangle set), sample, release. */
 void *triangle_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size);
 color triangle_stage_sample(const void *prepared, real u, real v, uint64_t *rays);
 void triangle_stage_release(void *prepared);
 
-/* Chapter 03's renderer: the knob, the built-in scene and the functions
- * above, with chapter 01's pixel_to_image. */
-renderer triangle_stage_renderer(void);
+/* Chapter 03's renderer: the knob (its row in *row, aimed at *test, which
+ * the caller owns), the built-in scene and the functions above, with
+ * chapter 01's pixel_to_image. */
+renderer triangle_stage_renderer(int *test, knob *row);
 
 #endif

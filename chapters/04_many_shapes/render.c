@@ -29,8 +29,9 @@ static color sample(const void *prepared, real u, real v, uint64_t *rays)
 
 int main(int argc, char **argv)
 {
+    shape_knobs knobs = SHAPE_KNOBS_DEFAULT;
     knob rows[SHAPE_KNOBS];
-    shape_knob_rows(rows);
+    shape_knob_rows(&knobs, rows);
     const renderer r = {
         .name = "04_many_shapes",
         .summary = "04_many_shapes: every surface of the scene, the closest hit, one flat colour per surface",
@@ -42,6 +43,7 @@ int main(int argc, char **argv)
         .default_height = 512,
         .builtin = shapes_scene,
         .prepare = shapes_stage_prepare,
+        .context = &knobs,
         .sample = sample,
         .release = shapes_stage_release,
         .pixel_to_image = pixel_to_image,

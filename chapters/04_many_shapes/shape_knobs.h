@@ -4,8 +4,7 @@
  * the surface list, and takes the same two knobs for them:
  *   --sphere=robust|textbook     chapter 02's formula (robust by default);
  *   --triangle=cramer|watertight chapter 03's test (TRIANGLE_TEST_DEFAULT).
- * A renderer lists shape_knob_rows among its knobs and, once they are parsed,
- * builds its surface list with the chosen formula and test.
+ * A renderer's main owns their values (a shape_knobs) and lists their rows.
  */
 #ifndef CH04_SHAPE_KNOBS_H
 #define CH04_SHAPE_KNOBS_H
@@ -14,12 +13,16 @@
 #include "04_many_shapes/surface.h"
 #include "options.h"
 
-/* The rows of --sphere and --triangle into rows[0 .. SHAPE_KNOBS - 1]. */
-enum { SHAPE_KNOBS = 2 };
-void shape_knob_rows(knob rows[SHAPE_KNOBS]);
+typedef struct {
+    int sphere, triangle; /* the index of the word chosen; chapter 03's are in triangle_test's order */
+} shape_knobs;
+#define SHAPE_KNOBS_DEFAULT {.sphere = 0, .triangle = TRIANGLE_TEST_DEFAULT}
 
-/* What --sphere and --triangle chose. */
-sphere_formula chosen_sphere_formula(void);
-triangle_test chosen_triangle_test(void);
+/* The rows of --sphere and --triangle, aimed at *k, into rows[0 .. SHAPE_KNOBS - 1];
+ * then what they chose, for the surface list. */
+enum { SHAPE_KNOBS = 2 };
+void shape_knob_rows(shape_knobs *k, knob rows[SHAPE_KNOBS]);
+sphere_formula chosen_sphere_formula(const shape_knobs *k);
+triangle_test chosen_triangle_test(const shape_knobs *k);
 
 #endif

@@ -17,14 +17,14 @@ void shapes_stage_release(void *prepared)
 
 void *shapes_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
-    (void)context;
+    const shape_knobs *knobs = context; /* owned by main */
     shapes_stage *st = malloc(sizeof *st);
     if (!st) {
         snprintf(err, err_size, "%s: out of memory", scene_name(desc));
         return NULL;
     }
     st->desc = desc;
-    surface_list_init(&st->list, chosen_sphere_formula(), chosen_triangle_test());
+    surface_list_init(&st->list, chosen_sphere_formula(knobs), chosen_triangle_test(knobs));
     if (!camera_from_scene(&st->cam, desc, err, err_size)) {
         shapes_stage_release(st);
         return NULL;

@@ -17,7 +17,7 @@ typedef struct {
     const scene *desc;
 } shapes_stage;
 
-/* renderer.h's prepare and release for a shapes_stage. */
+/* renderer.h's prepare (its context: the renderer's shape_knobs) and release for a shapes_stage. */
 void *shapes_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size);
 void shapes_stage_release(void *prepared);
 

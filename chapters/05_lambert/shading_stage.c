@@ -6,18 +6,8 @@
 
 #include "01_camera_rays/pixel.h"
 #include "04_many_shapes/scene_surfaces.h"
-#include "04_many_shapes/shape_knobs.h"
 #include "05_lambert/scenes/shading_scene.h"
 #include "renderer.h"
-
-int hit_query_linear(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
-{
-    (void)desc;
-    (void)err;
-    (void)err_size;
-    *q = (hit_query){.closest_hit = closest_hit_linear, .accel = list};
-    return 0;
-}
 
 void shading_release(shading_view *view)
 {
@@ -38,10 +28,11 @@ shading_view *shading_prepare(const shading_stage *stage, const scene *desc, sph
         return NULL;
     }
     surface_list_init(&view->list, formula, test);
-    build_query_fn build = stage->build_query ? stage->build_query : hit_query_linear;
+    view->query = (hit_query){.closest_hit = closest_hit_linear, .accel = &view->list}; /* chapter 04's scan ... */
+    build_query_fn build = stage->build_query;                                      /* ... or the stage's own */
     if (!camera_from_scene(&view->cam, desc, err, err_size) ||
         surface_list_from_scene(&view->list, desc, err, err_size) != 0 ||
-        build(&view->list, desc, &view->query, err, err_size) != 0) {
+        (build && build(stage->query_knobs, &view->list, desc, &view->query, err, err_size) != 0)) {
         shading_release(view);
         return NULL;
     }
@@ -66,12 +57,13 @@ color shading_sample(const void *view, real u, real v, uint64_t *rays)
 }
 /* end snippet */
 
-/* ---- the renderer: the stage is prepare's context (the knobs of chapters
- * 02-03 are chosen through shape_knobs.h). */
+/* ---- the renderer: the stage, with the values of every knob, is prepare's context. */
 
 static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
-    return shading_prepare(context, desc, chosen_sphere_formula(), chosen_triangle_test(), err, err_size);
+    const shading_stage *stage = context;
+    return shading_prepare(stage, desc, chosen_sphere_formula(&stage->shapes), chosen_triangle_test(&stage->shapes),
+                           err, err_size);
 }
 
 static void release(void *view) { shading_release(view); }
@@ -83,7 +75,9 @@ int shading_main(const shading_stage *stage, int argc, char **argv)
         fprintf(stderr, "%s: too many knobs (%d > %d)\n", stage->name, stage->n_knobs, MAX_STAGE_KNOBS);
         return 2;
     }
-    shape_knob_rows(knobs); /* --sphere and --triangle first */
+    shading_stage st = *stage;
+    st.shapes = (shape_knobs)SHAPE_KNOBS_DEFAULT;
+    shape_knob_rows(&st.shapes, knobs); /* --sphere and --triangle first */
     for (int k = 0; k < stage->n_knobs; k++)
         knobs[SHAPE_KNOBS + k] = stage->knobs[k];
     const renderer r = {
@@ -97,7 +91,7 @@ int shading_main(const shading_stage *stage, int argc, char **argv)
         .default_height = 512,
         .builtin = stage->builtin ? stage->builtin : shading_scene,
         .prepare = prepare,
-        .context = stage,
+        .context = &st,
         .sample = shading_sample,
         .release = release,
         .pixel_to_image = pixel_to_image, /* chapter 01's: the student's own mapping */

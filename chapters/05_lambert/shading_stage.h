@@ -15,6 +15,7 @@
 #include <stdint.h>
 
 #include "01_camera_rays/camera.h"
+#include "04_many_shapes/shape_knobs.h"
 #include "05_lambert/tracer.h"
 #include "options.h"
 #include "scene.h"
@@ -28,14 +29,11 @@ typedef struct {
     void (*release)(void *owned);
 } hit_query;
 
-/* Builds the query over the scene's surface list (which outlives it).
- * Returns 0, or -1 with "path: problem" in err. */
-typedef int (*build_query_fn)(const surface_list *list, const scene *desc, hit_query *q, char *err,
-                              size_t err_size);
+/* Builds the query over the scene's surface list (which outlives it), with
+ * the knobs the stage gives it.  Returns 0, or -1 with "path: problem" in err. */
+typedef int (*build_query_fn)(const void *knobs, const surface_list *list, const scene *desc, hit_query *q,
+                              char *err, size_t err_size);
 /* end snippet */
-
-/* The linear scan of chapter 04 over the list: a build_query_fn. */
-int hit_query_linear(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
 
 /* snippet: shading_stage */
 typedef struct {
@@ -45,8 +43,10 @@ typedef struct {
     int n_knobs;
     unsigned modelled;   /* the scene_features the stage models */
     shade_fn shade;
-    const void *shade_knobs; /* becomes tracer.knobs; the knobs' targets live in it */
-    build_query_fn build_query; /* NULL: hit_query_linear */
+    stage_knobs shade_knobs; /* becomes tracer.knobs: where the knobs' rows are aimed */
+    shape_knobs shapes;      /* --sphere and --triangle: shading_main aims their rows here */
+    build_query_fn build_query; /* NULL: chapter 04's linear scan (closest_hit_linear) */
+    const void *query_knobs;    /* build_query's knobs, of the type it takes (NULL: none) */
     int (*builtin)(scene *desc); /* NULL: the shared built-in scene (shading_scene.h) */
     bool accelerated;            /* build_query makes an acceleration structure (chapter 11) */
 } shading_stage;

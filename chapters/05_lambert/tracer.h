@@ -67,14 +67,22 @@ typedef struct tracer tracer;
  * every ray it casts (++rays[RAY_SHADOW] per shadow ray). */
 typedef color (*shade_fn)(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays);
 
+/* The knobs of the stages from 06 on, each its chapter's struct (NULL: the stage's defaults). */
+typedef struct {
+    const struct spawn_knobs *spawn;   /* 06: --shadow-eps */
+    const struct phong_knobs *phong;   /* 07: --phong */
+    const struct path_knobs *path;     /* 08: --depth, --min-weight */
+    const struct glass_knobs *glass;   /* 09: --fresnel */
+    const struct interp_knobs *interp; /* 10: --normals, --texture-filter, --below-surface */
+} stage_knobs;
+
 /* snippet: tracer */
 struct tracer {
     closest_hit_fn closest_hit; /* the "what does this ray hit first?" query ... */
     const void *accel;          /* ... and what it searches (a surface_list, a grid) */
     const scene *desc;          /* shaders, lights, backColor, ambient */
     shade_fn shade;             /* the stage's shading */
-    const void *knobs;          /* the stage's knobs; each stage's knob struct begins with
-                                 * the one of the stage it builds on (NULL for chapter 05) */
+    stage_knobs knobs;          /* the values of the stages' knobs (none for chapter 05) */
     color weight;               /* the weight of the path its rays continue: the product of the
                                  * coefficients along it (chapter 08); 1 for eye rays */
 };

@@ -10,20 +10,21 @@
 #include "05_lambert/shading_stage.h"
 #include "06_shadows/shade_shadows.h"
 
-static spawn_knobs settings = SPAWN_KNOBS_DEFAULT;
-
 int main(int argc, char **argv)
 {
+    spawn_knobs settings = SPAWN_KNOBS_DEFAULT;
     knob rows[MAX_STAGE_KNOBS];
+    stage_knobs aimed = {0};
+    int n_rows = spawn_knob_rows(&settings, rows, &aimed);
     const shading_stage stage = {
         .name = "06_shadows",
         .summary = "06_shadows: Lambertian shading and shadow rays towards the first light",
         .knobs = rows,
-        .n_knobs = spawn_knob_rows(&settings, rows),
+        .n_knobs = n_rows,
         .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |
                     FEATURE_RGB_NORMALS | FEATURE_LIGHTS | FEATURE_SHADOWS,
         .shade = shade_shadows,
-        .shade_knobs = &settings,
+        .shade_knobs = aimed,
     };
     return shading_main(&stage, argc, argv);
 }

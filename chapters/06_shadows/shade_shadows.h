@@ -23,7 +23,7 @@
 bool light_in_front(const shading_point *sp, const scene_light *light);
 
 /* A shade_fn: the first light's Lambert term where its shadow ray is not
- * blocked; tr->knobs is a spawn_knobs (or NULL: the default policy). */
+ * blocked (tr->knobs.spawn: the policy, or the default one). */
 color shade_shadows(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays);
 
 #endif

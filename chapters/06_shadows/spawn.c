@@ -5,8 +5,9 @@
 
 const char *const eps_policy_names[] = {"none", "fixed", "bound", NULL};
 
-int spawn_knob_rows(spawn_knobs *k, knob *rows)
+int spawn_knob_rows(spawn_knobs *k, knob *rows, stage_knobs *aimed)
 {
+    aimed->spawn = k;
     rows[0] = (knob){"shadow-eps", KNOB_CHOICE, &k->eps, eps_policy_names,
                      "where secondary rays start: none (the blunder), fixed 1e-3, bound (error bound)"};
     return 1;
@@ -14,8 +15,8 @@ int spawn_knob_rows(spawn_knobs *k, knob *rows)
 
 eps_policy tracer_eps(const tracer *tr)
 {
-    static const spawn_knobs defaults = SPAWN_KNOBS_DEFAULT;
-    return (eps_policy)(tr->knobs ? (const spawn_knobs *)tr->knobs : &defaults)->eps;
+    const spawn_knobs defaults = SPAWN_KNOBS_DEFAULT;
+    return (eps_policy)(tr->knobs.spawn ? tr->knobs.spawn : &defaults)->eps;
 }
 
 /* snippet: eps_bound */

@@ -40,8 +40,8 @@ extern const char *const eps_policy_names[];
 #define EPS_BOUND_ULPS 32
 
 /* snippet: spawn_knobs */
-/* The knobs of chapter 06, the first member of every later stage's knobs. */
-typedef struct {
+/* The knobs of chapter 06, a member of every later stage's knobs. */
+typedef struct spawn_knobs {
     int eps; /* an eps_policy: --shadow-eps */
 } spawn_knobs;
 /* end snippet */
@@ -49,12 +49,12 @@ typedef struct {
 /* The defaults, an initializer: the error bound. */
 #define SPAWN_KNOBS_DEFAULT {.eps = EPS_BOUND}
 
-/* The option rows of chapter 06's knobs, aimed at *k, into rows[]; returns
- * how many (every later stage lists them through its own rows function). */
-int spawn_knob_rows(spawn_knobs *k, knob *rows);
+/* The option rows of chapter 06's knobs, aimed at *k, into rows[], and the
+ * tracer's knobs at *k too; returns how many rows (every later stage lists
+ * them through its own rows function). */
+int spawn_knob_rows(spawn_knobs *k, knob *rows, stage_knobs *aimed);
 
-/* The policy of a tracer whose knobs begin with spawn_knobs (chapters 06-11);
- * the default when tr->knobs is NULL. */
+/* The policy of a tracer with chapter 06's knobs; the default without. */
 eps_policy tracer_eps(const tracer *tr);
 
 /* The bound on how far sp's computed point can be from the true surface, in

@@ -11,21 +11,22 @@
 #include "05_lambert/shading_stage.h"
 #include "07_blinn_phong/shade_phong.h"
 
-static phong_knobs settings = PHONG_KNOBS_DEFAULT;
-
 int main(int argc, char **argv)
 {
+    phong_knobs settings = PHONG_KNOBS_DEFAULT;
     knob rows[MAX_STAGE_KNOBS];
+    stage_knobs aimed = {0};
+    int n_rows = phong_knob_rows(&settings, rows, &aimed);
     const shading_stage stage = {
         .name = "07_blinn_phong",
         .summary = "07_blinn_phong: Blinn-Phong shading, ambient light and every light of the scene, with shadows",
         .knobs = rows,
-        .n_knobs = phong_knob_rows(&settings, rows),
+        .n_knobs = n_rows,
         .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |
                     FEATURE_RGB_NORMALS | FEATURE_LIGHTS | FEATURE_SHADOWS | FEATURE_MANY_LIGHTS |
                     FEATURE_PHONG | FEATURE_AMBIENT,
         .shade = shade_phong,
-        .shade_knobs = &settings,
+        .shade_knobs = aimed,
     };
     return shading_main(&stage, argc, argv);
 }

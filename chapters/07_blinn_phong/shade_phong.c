@@ -9,8 +9,8 @@
 
 phong_form tracer_phong_form(const tracer *tr)
 {
-    static const phong_knobs defaults = PHONG_KNOBS_DEFAULT;
-    return (phong_form)(tr->knobs ? (const phong_knobs *)tr->knobs : &defaults)->form;
+    const phong_knobs defaults = PHONG_KNOBS_DEFAULT;
+    return (phong_form)(tr->knobs.phong ? tr->knobs.phong : &defaults)->form;
 }
 
 /* snippet: light_contribution */

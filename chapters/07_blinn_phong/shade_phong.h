@@ -21,8 +21,8 @@
 #include "07_blinn_phong/phong.h"
 
 /* snippet: phong_knobs */
-/* The knobs of chapter 07: chapter 06's first, so that tracer_eps works. */
-typedef struct {
+/* The knobs of chapter 07: chapter 06's, then its own. */
+typedef struct phong_knobs {
     spawn_knobs spawn;
     int form; /* a phong_form: --phong */
 } phong_knobs;
@@ -31,11 +31,11 @@ typedef struct {
 /* The defaults, an initializer: chapter 06's, and the course's form. */
 #define PHONG_KNOBS_DEFAULT {.spawn = SPAWN_KNOBS_DEFAULT, .form = PHONG_COURSE}
 
-/* The option rows of chapters 06-07's knobs, aimed at *k; returns how many. */
-int phong_knob_rows(phong_knobs *k, knob *rows);
+/* The option rows of chapters 06-07's knobs, and the tracer's knobs, aimed
+ * at *k; returns how many rows. */
+int phong_knob_rows(phong_knobs *k, knob *rows, stage_knobs *aimed);
 
-/* The form of a tracer whose knobs begin with phong_knobs (chapters 07-11);
- * the course's when tr->knobs is NULL. */
+/* The form of a tracer with chapter 07's knobs; the course's without. */
 phong_form tracer_phong_form(const tracer *tr);
 
 /* The light one unblocked `light` sends from sp towards the viewer: the

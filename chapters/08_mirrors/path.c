@@ -3,9 +3,10 @@
 
 #include "explain.h"
 
-int path_knob_rows(path_knobs *k, knob *rows)
+int path_knob_rows(path_knobs *k, knob *rows, stage_knobs *aimed)
 {
-    int n = phong_knob_rows(&k->phong, rows); /* chapters 06-07's first */
+    int n = phong_knob_rows(&k->phong, rows, aimed); /* chapters 06-07's first */
+    aimed->path = k;
     rows[n++] = (knob){"depth", KNOB_INT, &k->depth, NULL, "deepest bounce traced (0: eye rays only; at most 256)"};
     rows[n++] = (knob){"min-weight", KNOB_REAL, &k->min_weight, NULL,
                        "no ray whose path weight (product of k_m, R, 1 - R along it) is below this (0: off)"};
@@ -15,7 +16,7 @@ int path_knob_rows(path_knobs *k, knob *rows)
 const path_knobs *tracer_path_knobs(const tracer *tr)
 {
     static const path_knobs defaults = PATH_KNOBS_DEFAULT;
-    return tr->knobs ? (const path_knobs *)tr->knobs : &defaults;
+    return tr->knobs.path ? tr->knobs.path : &defaults;
 }
 
 /* snippet: path_next */

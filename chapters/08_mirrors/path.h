@@ -31,9 +31,9 @@
 #include "07_blinn_phong/shade_phong.h"
 
 /* snippet: path_knobs */
-/* The knobs of chapter 08: chapter 07's first (so tracer_eps and the Phong
- * form still work), then the two that stop the recursion. */
-typedef struct {
+/* The knobs of chapter 08: chapter 07's, then the two that stop the
+ * recursion. */
+typedef struct path_knobs {
     phong_knobs phong;
     int depth;       /* --depth: the deepest bounce that is traced */
     real min_weight; /* --min-weight: the smallest path weight that is traced */
@@ -49,11 +49,11 @@ typedef struct {
 /* --depth beyond this counts as this: the recursion must not exhaust the stack. */
 #define PATH_MAX_DEPTH 256
 
-/* The option rows of chapters 06-08's knobs, aimed at *k; returns how many. */
-int path_knob_rows(path_knobs *k, knob *rows);
+/* The option rows of chapters 06-08's knobs, and the tracer's knobs, aimed
+ * at *k; returns how many rows. */
+int path_knob_rows(path_knobs *k, knob *rows, stage_knobs *aimed);
 
-/* The knobs of a tracer whose knobs begin with path_knobs (chapters 08-11);
- * the defaults when tr->knobs is NULL. */
+/* The knobs of a tracer with chapter 08's knobs; the defaults without. */
 const path_knobs *tracer_path_knobs(const tracer *tr);
 
 /* Whether a ray leaving a point reached at `depth` with coefficient k (k_m, R

@@ -14,21 +14,22 @@
 #include "08_mirrors/scenes/mirror_scene.h"
 #include "08_mirrors/shade_glazed.h"
 
-static path_knobs settings = PATH_KNOBS_DEFAULT;
-
 int main(int argc, char **argv)
 {
+    path_knobs settings = PATH_KNOBS_DEFAULT;
     knob rows[MAX_STAGE_KNOBS];
+    stage_knobs aimed = {0};
+    int n_rows = path_knob_rows(&settings, rows, &aimed);
     const shading_stage stage = {
         .name = "08_mirrors",
         .summary = "08_mirrors: Blinn-Phong shading plus k_m times the radiance traced along the mirror direction",
         .knobs = rows,
-        .n_knobs = path_knob_rows(&settings, rows),
+        .n_knobs = n_rows,
         .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |
                     FEATURE_RGB_NORMALS | FEATURE_LIGHTS | FEATURE_SHADOWS | FEATURE_MANY_LIGHTS |
                     FEATURE_PHONG | FEATURE_AMBIENT | FEATURE_MIRRORS,
         .shade = shade_glazed,
-        .shade_knobs = &settings,
+        .shade_knobs = aimed,
         .builtin = mirror_scene,
     };
     return shading_main(&stage, argc, argv);

@@ -21,8 +21,8 @@
 
 #include "08_mirrors/path.h"
 
-/* A shade_fn: chapter 07's L_a + L_r, plus k_m L_m where k_m is not zero.
- * tr->knobs is a path_knobs (or NULL: the defaults). */
+/* A shade_fn: chapter 07's L_a + L_r, plus k_m L_m where k_m is not zero
+ * (tr->knobs.path: --depth and --min-weight, or their defaults). */
 color shade_glazed(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays);
 
 #endif

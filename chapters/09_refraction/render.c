@@ -14,21 +14,22 @@
 #include "09_refraction/scenes/glass_scene.h"
 #include "09_refraction/shade_glass.h"
 
-static glass_knobs settings = GLASS_KNOBS_DEFAULT;
-
 int main(int argc, char **argv)
 {
+    glass_knobs settings = GLASS_KNOBS_DEFAULT;
     knob rows[MAX_STAGE_KNOBS];
+    stage_knobs aimed = {0};
+    int n_rows = glass_knob_rows(&settings, rows, &aimed);
     const shading_stage stage = {
         .name = "09_refraction",
         .summary = "09_refraction: glass (Snell's law, total internal reflection, Fresnel) over chapter 08's mirrors",
         .knobs = rows,
-        .n_knobs = glass_knob_rows(&settings, rows),
+        .n_knobs = n_rows,
         .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |
                     FEATURE_RGB_NORMALS | FEATURE_LIGHTS | FEATURE_SHADOWS | FEATURE_MANY_LIGHTS |
                     FEATURE_PHONG | FEATURE_AMBIENT | FEATURE_MIRRORS | FEATURE_GLASS,
         .shade = shade_glass,
-        .shade_knobs = &settings,
+        .shade_knobs = aimed,
         .builtin = glass_scene,
     };
     return shading_main(&stage, argc, argv);

@@ -7,9 +7,10 @@
 #include "09_refraction/refract.h"
 #include "explain.h"
 
-int glass_knob_rows(glass_knobs *k, knob *rows)
+int glass_knob_rows(glass_knobs *k, knob *rows, stage_knobs *aimed)
 {
-    int n = path_knob_rows(&k->path, rows); /* chapters 06-08's first */
+    int n = path_knob_rows(&k->path, rows, aimed); /* chapters 06-08's first */
+    aimed->glass = k;
     rows[n++] = (knob){"fresnel", KNOB_CHOICE, &k->fresnel, fresnel_mode_names,
                        "glass reflectance: exact (Fresnel's equations) or schlick (Schlick's approximation)"};
     return n;
@@ -17,8 +18,8 @@ int glass_knob_rows(glass_knobs *k, knob *rows)
 
 fresnel_mode tracer_fresnel(const tracer *tr)
 {
-    static const glass_knobs defaults = GLASS_KNOBS_DEFAULT;
-    return (fresnel_mode)(tr->knobs ? (const glass_knobs *)tr->knobs : &defaults)->fresnel;
+    const glass_knobs defaults = GLASS_KNOBS_DEFAULT;
+    return (fresnel_mode)(tr->knobs.glass ? tr->knobs.glass : &defaults)->fresnel;
 }
 
 /* snippet: glass_at */

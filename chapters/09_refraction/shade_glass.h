@@ -35,8 +35,8 @@
 #include "09_refraction/fresnel.h"
 
 /* snippet: glass_knobs */
-/* The knobs of chapter 09: chapter 08's first, then --fresnel. */
-typedef struct {
+/* The knobs of chapter 09: chapter 08's, then --fresnel. */
+typedef struct glass_knobs {
     path_knobs path;
     int fresnel; /* a fresnel_mode: --fresnel */
 } glass_knobs;
@@ -45,11 +45,11 @@ typedef struct {
 /* The defaults, an initializer: chapter 08's, and Fresnel's exact equations. */
 #define GLASS_KNOBS_DEFAULT {.path = PATH_KNOBS_DEFAULT, .fresnel = FRESNEL_EXACT}
 
-/* The option rows of chapters 06-09's knobs, aimed at *k; returns how many. */
-int glass_knob_rows(glass_knobs *k, knob *rows);
+/* The option rows of chapters 06-09's knobs, and the tracer's knobs, aimed
+ * at *k; returns how many rows. */
+int glass_knob_rows(glass_knobs *k, knob *rows, stage_knobs *aimed);
 
-/* The Fresnel mode of a tracer whose knobs begin with glass_knobs (chapters
- * 09-11); exact when tr->knobs is NULL. */
+/* The Fresnel mode of a tracer with chapter 09's knobs; exact without. */
 fresnel_mode tracer_fresnel(const tracer *tr);
 
 /* What happens to the ray at a glass point: the indices on its two sides,
@@ -72,8 +72,7 @@ glass_event glass_at(const shading_point *sp, real eta, fresnel_mode mode);
 color transmitted_radiance(const tracer *tr, const shading_point *sp, vec3 T, color k, int depth, uint64_t *rays);
 
 /* A shade_fn: R L_reflected + (1 - R) L_transmitted on a Glass shader,
- * chapter 08's shade_glazed on any other.  tr->knobs is a glass_knobs (or
- * NULL: the defaults). */
+ * chapter 08's shade_glazed on any other. */
 color shade_glass(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays);
 
 #endif

@@ -3,13 +3,11 @@
 
 #include "10_interpolation/scenes/interp_scene.h"
 
-interp_knobs interp_settings = INTERP_KNOBS_DEFAULT;
-
-/* The rows of chapters 06-09's knobs and this chapter's, aimed at interp_settings. */
-static int interp_knob_rows(knob *rows)
+/* The rows of chapters 06-09's knobs and this chapter's, and the tracer's knobs, aimed at *k. */
+static int interp_knob_rows(interp_knobs *k, knob *rows, stage_knobs *aimed)
 {
-    interp_knobs *k = &interp_settings;
-    int n = glass_knob_rows(&k->earlier, rows);
+    int n = glass_knob_rows(&k->earlier, rows, aimed);
+    aimed->interp = k;
     rows[n++] = (knob){"normals", KNOB_CHOICE, &k->normals, normal_source_names,
                        "shading normal of a mesh with vn: interpolated, or geometric (the flat faces)"};
     rows[n++] = (knob){"texture-filter", KNOB_CHOICE, &k->filter, texture_filter_names,
@@ -20,20 +18,21 @@ static int interp_knob_rows(knob *rows)
 }
 
 /* snippet: interp_stage */
-shading_stage interp_stage(build_query_fn build)
+shading_stage interp_stage(interp_knobs *k, knob *rows, build_query_fn build)
 {
-    static knob rows[MAX_STAGE_KNOBS];
+    stage_knobs aimed = {0};
+    int n_rows = interp_knob_rows(k, rows, &aimed);
     return (shading_stage){
         .name = "10_interpolation",
         .summary = "10_interpolation: interpolated vertex normals and texture coordinates, textures, over the "
                    "shading of chapters 05-09",
         .knobs = rows,
-        .n_knobs = interp_knob_rows(rows),
+        .n_knobs = n_rows,
         .modelled = FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS |
                     FEATURE_RGB_NORMALS | FEATURE_LIGHTS | FEATURE_SHADOWS | FEATURE_MANY_LIGHTS | FEATURE_PHONG |
                     FEATURE_AMBIENT | FEATURE_MIRRORS | FEATURE_GLASS | FEATURE_TEXTURES | FEATURE_VERTEX_NORMALS,
         .shade = shade_interp,
-        .shade_knobs = &interp_settings,
+        .shade_knobs = aimed,
         .build_query = build, /* NULL: chapter 04's linear scan */
         .builtin = interp_scene,
     };

@@ -12,6 +12,8 @@
 
 int main(int argc, char **argv)
 {
-    const shading_stage stage = interp_stage(NULL);
+    interp_knobs settings = INTERP_KNOBS_DEFAULT;
+    knob rows[MAX_STAGE_KNOBS];
+    const shading_stage stage = interp_stage(&settings, rows, NULL);
     return shading_main(&stage, argc, argv);
 }

@@ -16,7 +16,7 @@ static color shade_earlier(const tracer *tr, const shading_point *sp, int depth,
 static const interp_knobs *knobs_of(const tracer *tr)
 {
     static const interp_knobs defaults = INTERP_KNOBS_DEFAULT;
-    return tr->knobs ? (const interp_knobs *)tr->knobs : &defaults;
+    return tr->knobs.interp ? tr->knobs.interp : &defaults;
 }
 
 /* snippet: face_of_hit */

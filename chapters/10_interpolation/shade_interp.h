@@ -23,8 +23,8 @@
 #include "10_interpolation/texture.h"
 
 /* snippet: interp_knobs */
-/* The knobs of chapter 10: chapter 09's first, then its own two. */
-typedef struct {
+/* The knobs of chapter 10: chapter 09's, then its own three. */
+typedef struct interp_knobs {
     glass_knobs earlier; /* chapters 06-09: --shadow-eps, --phong, --depth, --min-weight, --fresnel */
     int normals;        /* a normal_source: --normals */
     int filter;         /* a texture_filter: --texture-filter */
@@ -57,8 +57,7 @@ const mesh_face *face_of_hit(const scene *desc, const hit_record *hit, const mes
 interp_point interp_at(const tracer *tr, const shading_point *sp);
 
 /* A shade_fn: the shading of chapter 09 with the interpolated normal and the
- * textured diffuse colour.  tr->knobs is an interp_knobs (NULL: the
- * defaults). */
+ * textured diffuse colour (tr->knobs.interp, or the defaults). */
 color shade_interp(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays);
 
 #endif

@@ -5,29 +5,29 @@
 
 #include <stddef.h>
 
-#include "05_lambert/shading_stage.h"
+#include "10_interpolation/interp_stage.h"
 #include "11_grid/grid.h"
 
-/* The knobs' values (the defaults until the command line changes them). */
+/* The knobs of chapter 11: chapter 10's, then the grid's. */
 typedef struct {
-    real density;  /* --grid-density: cells per surface */
-    int max_cells; /* --grid-cells: the cap on the cells */
-    int accel;     /* --accel: GRID_ACCEL_GRID, or chapter 04's linear scan (chapter 10 as it is) */
+    interp_knobs interp; /* chapters 06-10 */
+    real density;        /* --grid-density: cells per surface */
+    int max_cells;       /* --grid-cells: the cap on the cells */
+    int accel;           /* --accel: GRID_ACCEL_GRID, or chapter 04's linear scan (chapter 10 as it is) */
 } grid_knobs;
 enum { GRID_ACCEL_GRID, GRID_ACCEL_LIST };
+#define GRID_KNOBS_DEFAULT \
+    {.interp = INTERP_KNOBS_DEFAULT, .density = (real)GRID_DEFAULT_DENSITY, .max_cells = (int)GRID_DEFAULT_MAX_CELLS}
 
-extern grid_knobs grid_settings;
-
-/* The rows of --grid-density and --grid-cells, for a renderer that lists them. */
-enum { GRID_KNOBS = 2 };
-extern const knob grid_knob_rows[GRID_KNOBS];
-
-/* A build_query_fn: the grid of `list` (grid_settings), or chapter 04's
- * linear scan under --accel=list.  Returns 0, or -1 with "path: problem". */
-int grid_query(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
+/* A build_query_fn whose knobs are a grid_knobs: the grid of `list`, or
+ * chapter 04's linear scan under --accel=list.  Returns 0, or -1 with
+ * "path: problem". */
+int grid_query(const void *knobs, const surface_list *list, const scene *desc, hit_query *q, char *err,
+               size_t err_size);
 
 /* Chapter 11's stage: chapter 10's over grid_query, with this chapter's
- * name, knobs and built-in scene. */
-shading_stage grid_stage(void);
+ * name, knobs (rows in rows[MAX_STAGE_KNOBS], aimed at *k, which the caller
+ * owns) and built-in scene. */
+shading_stage grid_stage(grid_knobs *k, knob *rows);
 
 #endif

@@ -10,7 +10,9 @@
 int main(int argc, char **argv)
 {
     /* snippet: stage */
-    const shading_stage stage = grid_stage(); /* interp_stage(grid_query): chapter 10's stage over the grid */
+    grid_knobs settings = GRID_KNOBS_DEFAULT;
+    knob rows[MAX_STAGE_KNOBS];
+    const shading_stage stage = grid_stage(&settings, rows); /* interp_stage(...): chapter 10's stage over the grid */
     /* end snippet */
     return shading_main(&stage, argc, argv);
 }

@@ -8,7 +8,7 @@
 static void seeded_shadows(unsigned long *rng)
 {
     static const spawn_knobs knobs = SPAWN_KNOBS_DEFAULT;
-    seeded_scenes(rng, (seeded_materials){0, 0, 0}, shade_shadows, &knobs, "shadows");
+    seeded_scenes(rng, (seeded_materials){0, 0, 0}, shade_shadows, &(stage_knobs){.spawn = &knobs}, "shadows");
 }
 
 SEEDED_CHECKS(SEEDED(test_occluder_between_beyond_behind, seeded_shadows),

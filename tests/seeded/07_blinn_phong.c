@@ -37,7 +37,8 @@ static void seeded_specular(unsigned long *rng)
 static void seeded_lights(unsigned long *rng)
 {
     static const phong_knobs knobs = PHONG_KNOBS_DEFAULT;
-    seeded_scenes(rng, (seeded_materials){1, 0, 0}, shade_phong, &knobs, "shade_phong");
+    const stage_knobs aimed = {.spawn = &knobs.spawn, .phong = &knobs};
+    seeded_scenes(rng, (seeded_materials){1, 0, 0}, shade_phong, &aimed, "shade_phong");
 }
 
 SEEDED_CHECKS(SEEDED(test_half_vector, seeded_specular), SEEDED(test_exponent_behaviour, seeded_specular),

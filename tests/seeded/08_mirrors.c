@@ -23,7 +23,8 @@ static void seeded_reflect(unsigned long *rng)
 static void seeded_mirrors(unsigned long *rng)
 {
     static const path_knobs knobs = PATH_KNOBS_DEFAULT;
-    seeded_scenes(rng, (seeded_materials){1, 1, 0}, shade_glazed, &knobs, "mirrors");
+    const stage_knobs aimed = {.spawn = &knobs.phong.spawn, .phong = &knobs.phong, .path = &knobs};
+    seeded_scenes(rng, (seeded_materials){1, 1, 0}, shade_glazed, &aimed, "mirrors");
 }
 
 SEEDED_CHECKS(SEEDED(test_reflect_known, seeded_reflect), SEEDED(test_reflect_random, seeded_reflect),

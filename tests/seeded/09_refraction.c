@@ -63,7 +63,9 @@ static void seeded_fresnel(unsigned long *rng)
 static void seeded_glass(unsigned long *rng)
 {
     static const glass_knobs knobs = GLASS_KNOBS_DEFAULT;
-    seeded_scenes(rng, (seeded_materials){1, 1, 1}, shade_glass, &knobs, "glass");
+    const path_knobs *path = &knobs.path;
+    const stage_knobs aimed = {.spawn = &path->phong.spawn, .phong = &path->phong, .path = path, .glass = &knobs};
+    seeded_scenes(rng, (seeded_materials){1, 1, 1}, shade_glass, &aimed, "glass");
 }
 
 SEEDED_CHECKS(SEEDED(test_refract_normal_incidence, seeded_refract),

@@ -67,7 +67,7 @@ static inline void seeded_scene(unsigned long *rng, scene *desc, seeded_material
 
 /* The radiance of `count` eye rays through desc, traced with shade and
  * knobs, as answers named after `what`; with the rays cast of each kind. */
-static inline void seeded_trace_answers(unsigned long *rng, const scene *desc, shade_fn shade, const void *knobs,
+static inline void seeded_trace_answers(unsigned long *rng, const scene *desc, shade_fn shade, const stage_knobs *knobs,
                                         const char *what, int count)
 {
     shading_view *view = suite_view(desc, shade, knobs);
@@ -88,7 +88,7 @@ static inline void seeded_trace_answers(unsigned long *rng, const scene *desc, s
 
 /* Three scenes drawn from rng with the materials m, each traced by eight
  * eye rays with shade and knobs (named after `what`). */
-static inline void seeded_scenes(unsigned long *rng, seeded_materials m, shade_fn shade, const void *knobs,
+static inline void seeded_scenes(unsigned long *rng, seeded_materials m, shade_fn shade, const stage_knobs *knobs,
                                  const char *what)
 {
     for (int n = 0; n < 3; n++) {

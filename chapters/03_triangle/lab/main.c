@@ -94,7 +94,9 @@ static void *prepare(const void *context, const scene *desc, char *err, size_t e
 int main(int argc, char **argv)
 {
     /* The lesson's renderer, with the lab's knobs, scenes and pictures. */
-    renderer r = triangle_stage_renderer();
+    int test = TRIANGLE_CRAMER; /* the lesson's --triangle */
+    knob row;
+    renderer r = triangle_stage_renderer(&test, &row);
     const knob knobs[] = {
         r.knobs[0], /* the lesson's --triangle */
         {"show", KNOB_CHOICE, &show, show_choices, "what to colour each pixel by"},

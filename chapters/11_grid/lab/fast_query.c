@@ -7,7 +7,6 @@
 
 #include "04_many_shapes/closest_hit.h"
 
-fast_knobs fast_settings = {.split = FAST_GRID_DEFAULT_SPLIT};
 _Thread_local query_tally query_tally_here;
 
 static double now(void)
@@ -49,28 +48,30 @@ static void lab_release(void *owned)
     free(lq);
 }
 
-int lab_query_build(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
+int lab_query_build(const void *knobs, const surface_list *list, const scene *desc, hit_query *q, char *err,
+                    size_t err_size)
 {
+    const fast_knobs *k = knobs;
     lab_query *lq = calloc(1, sizeof *lq);
     if (!lq) {
         snprintf(err, err_size, "%s: out of memory for the grid", scene_name(desc));
         return -1;
     }
-    lq->accel = fast_settings.accel;
+    lq->accel = k->accel;
     lq->list = list;
     char why[256] = "";
     double start = now();
     int status = 0;
     if (lq->accel == LAB_ACCEL_FAST) {
-        fast_grid_options opt = {.density = (double)grid_settings.density,
-                                 .max_cells = grid_settings.max_cells,
-                                 .mailbox = fast_settings.mailbox == 0,
-                                 .leap = fast_settings.leap == 0,
-                                 .cull = fast_settings.cull == 0,
-                                 .split = fast_settings.split};
+        fast_grid_options opt = {.density = (double)k->grid.density,
+                                 .max_cells = k->grid.max_cells,
+                                 .mailbox = k->mailbox == 0,
+                                 .leap = k->leap == 0,
+                                 .cull = k->cull == 0,
+                                 .split = k->split};
         status = fast_grid_build(&lq->fast, list, opt, why, sizeof why);
     } else if (lq->accel == LAB_ACCEL_GRID) {
-        grid_options opt = {.density = (double)grid_settings.density, .max_cells = grid_settings.max_cells};
+        grid_options opt = {.density = (double)k->grid.density, .max_cells = k->grid.max_cells};
         status = grid_build(&lq->lesson, list, opt, why, sizeof why);
     }
     lq->build_seconds = now() - start;

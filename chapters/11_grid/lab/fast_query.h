@@ -13,8 +13,9 @@
 #include "11_grid/grid_stage.h"
 #include "11_grid/lab/fast_grid.h"
 
-/* The lab's knobs beyond the lesson's grid_settings. */
+/* The lab's knobs: the lesson's (its --accel aside), then the fast grid's. */
 typedef struct {
+    grid_knobs grid; /* chapters 06-11: the shading's, --grid-density, --grid-cells */
     int accel;   /* LAB_ACCEL_* */
     int mailbox; /* --mailbox, --leap, --cull: 0 on, 1 off (the index of on|off) */
     int leap;
@@ -22,7 +23,7 @@ typedef struct {
     int split;   /* --split: a cell listing more surfaces than this gets a grid of its own (0: one level) */
 } fast_knobs;
 enum { LAB_ACCEL_FAST, LAB_ACCEL_GRID, LAB_ACCEL_LIST };
-extern fast_knobs fast_settings;
+#define FAST_KNOBS_DEFAULT {.grid = GRID_KNOBS_DEFAULT, .accel = LAB_ACCEL_FAST, .split = FAST_GRID_DEFAULT_SPLIT}
 
 /* What the closest-hit queries of one thread did since the last reset. */
 typedef struct {
@@ -32,7 +33,7 @@ typedef struct {
 } query_tally;
 extern _Thread_local query_tally query_tally_here;
 
-/* The query under fast_settings.accel, built over `list`. */
+/* The query under the knobs' accel, built over `list`. */
 typedef struct {
     int accel;
     const surface_list *list;
@@ -41,7 +42,8 @@ typedef struct {
     double build_seconds;
 } lab_query;
 
-/* A build_query_fn: a lab_query of fast_settings.accel over `list`. */
-int lab_query_build(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
+/* A build_query_fn whose knobs are a fast_knobs: a lab_query of their accel over `list`. */
+int lab_query_build(const void *knobs, const surface_list *list, const scene *desc, hit_query *q, char *err,
+                    size_t err_size);
 
 #endif

@@ -23,20 +23,35 @@ static const char *const on_off[] = {"on", "off", NULL};
 static const char *const accel_choices[] = {"fast", "grid", "list", NULL};
 enum { SHOW_IMAGE, SHOW_CELLS, SHOW_TESTS };
 static const char *const show_choices[] = {"image", "cells", "tests", NULL};
-static int show_choice = SHOW_IMAGE;
-static int heat_max = 64;
 
-static const knob lab_knob_rows[] = {
-    {"accel", KNOB_CHOICE, &fast_settings.accel, accel_choices,
-     "fast grid (the lab's), grid (the lesson's), or chapter 04's linear scan"},
-    {"mailbox", KNOB_CHOICE, &fast_settings.mailbox, on_off, "fast grid: skip surfaces already tested along the ray"},
-    {"leap", KNOB_CHOICE, &fast_settings.leap, on_off, "fast grid: cross blocks of empty cells in one step"},
-    {"cull", KNOB_CHOICE, &fast_settings.cull, on_off, "fast grid: test a surface only when the ray meets its box"},
-    {"split", KNOB_INT, &fast_settings.split, NULL,
-     "fast grid: a cell listing more surfaces than this gets a grid of its own (0: one level)"},
-    {"show", KNOB_CHOICE, &show_choice, show_choices, "the image, or each pixel's eye ray's cells visited or tests"},
-    {"heat-max", KNOB_INT, &heat_max, NULL, "--show=cells|tests: the count shown white"},
-};
+/* What the lab's prepare is given: chapter 11's stage over the lab's query,
+ * and the values of every knob, owned by main. */
+typedef struct {
+    shading_stage stage;
+    fast_knobs knobs;
+    int show, heat_max; /* --show, --heat-max */
+} lab_context;
+
+/* The rows of the lab's own knobs, aimed at *lab; returns how many. */
+static int lab_knob_rows(lab_context *lab, knob *rows)
+{
+    fast_knobs *k = &lab->knobs;
+    const knob lab_rows[] = {
+        {"accel", KNOB_CHOICE, &k->accel, accel_choices,
+         "fast grid (the lab's), grid (the lesson's), or chapter 04's linear scan"},
+        {"mailbox", KNOB_CHOICE, &k->mailbox, on_off, "fast grid: skip surfaces already tested along the ray"},
+        {"leap", KNOB_CHOICE, &k->leap, on_off, "fast grid: cross blocks of empty cells in one step"},
+        {"cull", KNOB_CHOICE, &k->cull, on_off, "fast grid: test a surface only when the ray meets its box"},
+        {"split", KNOB_INT, &k->split, NULL,
+         "fast grid: a cell listing more surfaces than this gets a grid of its own (0: one level)"},
+        {"show", KNOB_CHOICE, &lab->show, show_choices, "the image, or each pixel's eye ray's cells visited or tests"},
+        {"heat-max", KNOB_INT, &lab->heat_max, NULL, "--show=cells|tests: the count shown white"},
+    };
+    int n = (int)(sizeof lab_rows / sizeof lab_rows[0]);
+    for (int r = 0; r < n; r++)
+        rows[r] = lab_rows[r];
+    return n;
+}
 
 /* Per-thread totals, each on its own cache line, so that counting costs no
  * traffic between the cores. */
@@ -49,6 +64,7 @@ typedef struct {
 typedef struct {
     shading_view *view;
     slot *slots;
+    int show, heat_max;
 } prepared_view;
 
 static void add_tally(query_tally *to, const query_tally *t)
@@ -73,11 +89,11 @@ static color sample(const void *prepared, real u, real v, uint64_t *rays)
 #pragma omp critical(lab_tally)
         add_tally(to, &query_tally_here);
     }
-    if (show_choice == SHOW_IMAGE)
+    if (pv->show == SHOW_IMAGE)
         return c;
     /* The eye ray's march: what the structure does for the rays the camera casts. */
     const fast_grid_counts *eye = &query_tally_here.first;
-    return heat_color(show_choice == SHOW_CELLS ? eye->cells : eye->tests, heat_max);
+    return heat_color(pv->show == SHOW_CELLS ? eye->cells : eye->tests, pv->heat_max);
 }
 
 static void release(void *prepared)
@@ -98,7 +114,12 @@ static void *prepare(const void *context, const scene *desc, char *err, size_t e
         snprintf(err, err_size, "%s: out of memory", scene_name(desc));
         return NULL;
     }
-    pv->view = shading_prepare(context, desc, chosen_sphere_formula(), chosen_triangle_test(), err, err_size);
+    const lab_context *lab = context;
+    pv->show = lab->show;
+    pv->heat_max = lab->heat_max;
+    const shape_knobs *shapes = &lab->stage.shapes;
+    pv->view = shading_prepare(&lab->stage, desc, chosen_sphere_formula(shapes), chosen_triangle_test(shapes), err,
+                               err_size);
     if (!pv->view) {
         release(pv);
         return NULL;
@@ -139,28 +160,31 @@ static void report(const void *prepared, render_stats stats, FILE *out)
 
 int main(int argc, char **argv)
 {
-    shading_stage the_stage = grid_stage();
-    the_stage.build_query = lab_query_build;
+    lab_context lab = {.knobs = FAST_KNOBS_DEFAULT, .show = SHOW_IMAGE, .heat_max = 64};
+    knob stage_rows[MAX_STAGE_KNOBS];
+    lab.stage = grid_stage(&lab.knobs.grid, stage_rows);
+    lab.stage.build_query = lab_query_build;
+    lab.stage.query_knobs = &lab.knobs;
+    lab.stage.shapes = (shape_knobs)SHAPE_KNOBS_DEFAULT;
     knob knobs[MAX_KNOBS];
-    shape_knob_rows(knobs); /* --sphere and --triangle first */
+    shape_knob_rows(&lab.stage.shapes, knobs); /* --sphere and --triangle first */
     int n_knobs = SHAPE_KNOBS;
-    for (int k = 0; k < the_stage.n_knobs; k++) /* the lesson's, but its --accel: the lab's has three choices */
-        if (strcmp(the_stage.knobs[k].name, "accel") != 0)
-            knobs[n_knobs++] = the_stage.knobs[k];
-    for (size_t k = 0; k < sizeof lab_knob_rows / sizeof lab_knob_rows[0]; k++)
-        knobs[n_knobs++] = lab_knob_rows[k];
+    for (int k = 0; k < lab.stage.n_knobs; k++) /* the lesson's, but its --accel: the lab's has three choices */
+        if (strcmp(lab.stage.knobs[k].name, "accel") != 0)
+            knobs[n_knobs++] = lab.stage.knobs[k];
+    n_knobs += lab_knob_rows(&lab, knobs + n_knobs);
     const renderer r = {
-        .name = the_stage.name,
+        .name = lab.stage.name,
         .summary = "11_grid lab: chapter 11's renderer through the fast grid, the lesson's or the list, counted",
         .knobs = knobs,
         .n_knobs = n_knobs,
-        .modelled = the_stage.modelled,
+        .modelled = lab.stage.modelled,
         .accelerated = true,
         .default_width = 512,
         .default_height = 512,
-        .builtin = the_stage.builtin,
+        .builtin = lab.stage.builtin,
         .prepare = prepare,
-        .context = &the_stage,
+        .context = &lab,
         .sample = sample,
         .release = release,
         .report = report,
