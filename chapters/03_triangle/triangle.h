@@ -1,24 +1,11 @@
-/* triangle.h - chapter 03: where a ray meets a triangle.
- *
- * The lecture's "Barycentric ray-triangle intersection": every point of the
- * triangle's plane is a + beta (b - a) + gamma (c - a); on the ray it is also
- * p + t d.  Setting them equal gives three linear equations in beta, gamma
- * and t, solved at once by Cramer's rule.
- *
- * Edges are closed: a point with beta >= 0, gamma >= 0, beta + gamma <= 1 is
- * inside, so a point exactly on an edge that two triangles share belongs to
- * both and a ray through it may report either (the closest-hit search of
- * chapter 04 keeps one, with the same t).  The lecture's strict test
- * (beta > 0 ...) would leave every shared edge a hole; closing the edges
- * removes those holes on paper, but rounding can still let a ray slip
- * between two triangles: see TRIANGLE_WATERTIGHT and the chapter's README.
- */
+/* triangle.h - chapter 03: where a ray meets a triangle (README, "The intersection"). */
 #ifndef CH03_TRIANGLE_H
 #define CH03_TRIANGLE_H
 
 #include <stdbool.h>
 
 #include "ray.h"
+#include "watertight.h"
 
 /* snippet: triangle */
 typedef struct {
@@ -38,29 +25,31 @@ typedef struct {
 } triangle_hit;
 /* end snippet */
 
-/* The hit of r with tri in the open window (t_min, t_max); false when none.
- * Both sides of the triangle are hit.  A ray parallel to the triangle's
- * plane (or lying in it), a ray that starts in the plane, and a degenerate
- * triangle (collinear or coincident vertices) are misses, also when rounding
- * makes their determinant not quite zero (degenerate.h); no input makes the
- * result NaN.  *hit is written
- * only on a hit. */
+/* The hit of r with tri in the open window (t_min, t_max), edges closed,
+ * both sides hit; false when none.  Only a crossing that the data decide
+ * counts (common/crossing.h): a degenerate triangle and a ray in or parallel
+ * to its plane are misses, also when rounding leaves their determinant not
+ * quite zero, and no input gives a NaN.  *hit is written only on a hit. */
 bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, triangle_test test, triangle_hit *hit);
 
-/* Cramer's rule alone, as the chapter's exercise writes it: the hit in
- * (t_min, t_max), or false for M = 0, a non-finite M, and a t, beta or
- * gamma that is NaN; *hit is written only on a hit.  Without the check of
- * degenerate.h that triangle_intersect adds, so that the tests can look at
- * the exercise on its own (a renderer calls triangle_intersect). */
+/* Cramer's rule alone, the exercise, without the check of crossing.h: the
+ * hit in (t_min, t_max), or false for M = 0, a non-finite M, and a NaN t,
+ * beta or gamma; *hit is written only on a hit. */
 bool triangle_cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit);
 
-/* The unit geometric normal, normalize((b - a) x (c - a)).  A degenerate
- * triangle has none: the result is then the zero vector. */
+/* The watertight test of tri for a ray whose part watertight_ray_make made. */
+static inline bool watertight_ray_hit(const watertight_ray *wr, const triangle *tri, real t_min, real t_max,
+                                      triangle_hit *hit)
+{
+    return watertight_hit(wr, tri->a, tri->b, tri->c, t_min, t_max, &hit->t, &hit->beta, &hit->gamma);
+}
+
+/* The unit geometric normal, normalize((b - a) x (c - a)); the zero vector
+ * for a degenerate triangle. */
 vec3 triangle_normal(const triangle *tri);
 
 /* snippet: det3 */
-/* The determinant of the 3x3 matrix with columns c0, c1, c2, as the scalar
- * triple product det[c0 c1 c2] = c0 . (c1 x c2). */
+/* det[c0 c1 c2] = c0 . (c1 x c2), the scalar triple product. */
 static inline real det3(vec3 c0, vec3 c1, vec3 c2) { return vec3_dot(c0, vec3_cross(c1, c2)); }
 /* end snippet */
 

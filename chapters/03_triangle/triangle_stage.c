@@ -4,10 +4,9 @@
 #include <stdlib.h>
 
 #include "01_camera_rays/pixel.h"
-#include "03_triangle/scenes/icosahedron.h"
+#include "03_triangle/scenes/triangle_scene.h"
 #include "03_triangle/triangle_explain.h"
 #include "explain.h"
-#include "scene_build.h"
 
 static const char *const triangle_choices[] = {"cramer", "watertight", NULL}; /* in the order of the enum */
 static int test = TRIANGLE_CRAMER;
@@ -17,10 +16,7 @@ knob triangle_knob(int *choice)
     return (knob){"triangle", KNOB_CHOICE, choice, triangle_choices, "ray-triangle test (chapter 03)"};
 }
 
-
-/* The closest hit among all triangles: every hit found becomes the far end
- * of the window for the rest, so at the end the nearest one is left.  (The
- * closest hit over all kinds of shapes is chapter 04's subject.) */
+/* Every hit found becomes the far end of the window for the rest. */
 int triangle_stage_closest(const triangle_stage *s, ray r, triangle_test t, triangle_hit *best)
 {
     int found = -1;
@@ -56,42 +52,6 @@ color triangle_stage_sample(const void *prepared, real u, real v, uint64_t *rays
         return s->back;
     EXPLAIN(explain_closest(k, k, h.t, ray_at(r, h.t)));
     return barycentric_color(h);
-}
-
-static int add_triangle(scene *desc, vec3 v0, vec3 v1, vec3 v2)
-{
-    scene_surface surface = {.kind = SURFACE_TRIANGLE, .shader = -1, .v0 = v0, .v1 = v1, .v2 = v2};
-    return scene_add_surface(desc, surface);
-}
-
-int triangle_scene_add_icosahedron(scene *desc, vec3 centre, real radius)
-{
-    vec3 v[ICOSAHEDRON_VERTICES];
-    triangle faces[ICOSAHEDRON_FACES];
-    icosahedron_vertices(centre, radius, v);
-    icosahedron_triangles(v, faces);
-    for (int f = 0; f < ICOSAHEDRON_FACES; f++)
-        if (add_triangle(desc, faces[f].a, faces[f].b, faces[f].c) < 0)
-            return -1;
-    return 0;
-}
-
-int triangle_scene(scene *desc)
-{
-    desc->has_camera = true;
-    desc->back_color = color_make((real)0.01, (real)0.01, (real)0.015);
-    desc->camera = (scene_camera){
-        .kind = CAMERA_PERSPECTIVE,
-        .view_point = {0, 0, 6},
-        .view_dir = {0, 0, -1},
-        .view_up = {0, 1, 0},
-        .proj_distance = 1,
-        .view_width = 1.2,
-        .view_height = 0.9,
-    };
-    if (add_triangle(desc, vec3_make(-3, -1.6, 0), vec3_make(-0.2, -1.6, 0), vec3_make(-1.6, 1.8, 0)) < 0)
-        return -1;
-    return triangle_scene_add_icosahedron(desc, vec3_make(1.6, 0, -0.5), (real)1.4);
 }
 
 void triangle_stage_release(void *prepared)

@@ -33,14 +33,6 @@ int triangle_stage_closest(const triangle_stage *s, ray r, triangle_test t, tria
 /* (R, G, B) = (alpha, beta, gamma) of a hit. */
 color barycentric_color(triangle_hit h);
 
-/* The 20 faces of the icosahedron (centre, radius) as Triangle surfaces;
- * 0, or -1 when out of memory. */
-int triangle_scene_add_icosahedron(scene *desc, vec3 centre, real radius);
-
-/* The built-in scene: a large triangle on the left, an icosahedron on the
- * right.  0, or -1 when out of memory. */
-int triangle_scene(scene *desc);
-
 /* renderer.h's prepare, sample and release for a triangle_stage. */
 void *triangle_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size);
 color triangle_stage_sample(const void *prepared, real u, real v, uint64_t *rays);
