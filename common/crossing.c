@@ -155,7 +155,8 @@ static bool scaled_edges(vec3 va, vec3 vb, vec3 vc, ray r, double e1[3], double 
 {
     if (!(finite_sum(va) + finite_sum(vb) + finite_sum(vc) + finite_sum(r.p) + finite_sum(r.d) == 0))
         return false;
-    real largest = (real)larger(larger(vec3_max_abs(va), vec3_max_abs(vb)), larger(vec3_max_abs(vc), vec3_max_abs(r.p)));
+    real largest =
+        (real)larger(larger(vec3_max_abs(va), vec3_max_abs(vb)), larger(vec3_max_abs(vc), vec3_max_abs(r.p)));
     int ev = exponent_of(largest), ed = exponent_of(vec3_max_abs(r.d));
     const double sv = power_of_two(ev), sd = power_of_two(ed);
     double a[3], b[3], c[3], p[3];

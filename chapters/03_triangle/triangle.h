@@ -2,8 +2,6 @@
 #ifndef CH03_TRIANGLE_H
 #define CH03_TRIANGLE_H
 
-#include <stdbool.h>
-
 #include "ray.h"
 #include "watertight.h"
 
@@ -15,8 +13,7 @@ typedef struct {
 /* The triangle test knob, --triangle. */
 typedef enum {
     TRIANGLE_CRAMER,     /* the lecture's 3x3 system by Cramer's rule (chapter 03's default) */
-    TRIANGLE_WATERTIGHT, /* Woop, Benthin and Wald (2013): no ray slips between two triangles;
-                          * the default from chapter 04 on */
+    TRIANGLE_WATERTIGHT, /* Woop, Benthin and Wald (2013), no cracks: the default from chapter 04 on */
 } triangle_test;
 
 typedef struct {
@@ -25,27 +22,23 @@ typedef struct {
 } triangle_hit;
 /* end snippet */
 
-/* The hit of r with tri in the open window (t_min, t_max), edges closed,
- * both sides hit; false when none.  Only a crossing that the data decide
- * counts (common/crossing.h): a degenerate triangle and a ray in or parallel
- * to its plane are misses, also when rounding leaves their determinant not
- * quite zero, and no input gives a NaN.  *hit is written only on a hit. */
+/* The hit of r with tri in (t_min, t_max), edges closed, both sides; false when none or
+ * when the data do not decide the crossing (crossing.h: a degenerate triangle, a ray in
+ * or along its plane).  Never NaN; *hit is written only on a hit. */
 bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, triangle_test test, triangle_hit *hit);
 
-/* Cramer's rule alone, the exercise, without the check of crossing.h: the
- * hit in (t_min, t_max), or false for M = 0, a non-finite M, and a NaN t,
- * beta or gamma; *hit is written only on a hit. */
+/* Cramer's rule alone (the exercise), without that check: false for M = 0,
+ * a non-finite M and a NaN t, beta or gamma. */
 bool triangle_cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit);
 
-/* The watertight test of tri for a ray whose part watertight_ray_make made. */
+/* The watertight test of tri (watertight.h) for a ray watertight_ray_make made. */
 static inline bool watertight_ray_hit(const watertight_ray *wr, const triangle *tri, real t_min, real t_max,
                                       triangle_hit *hit)
 {
     return watertight_hit(wr, tri->a, tri->b, tri->c, t_min, t_max, &hit->t, &hit->beta, &hit->gamma);
 }
 
-/* The unit geometric normal, normalize((b - a) x (c - a)); the zero vector
- * for a degenerate triangle. */
+/* normalize((b - a) x (c - a)), the zero vector for a degenerate triangle. */
 vec3 triangle_normal(const triangle *tri);
 
 /* snippet: det3 */

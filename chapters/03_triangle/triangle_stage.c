@@ -1,4 +1,4 @@
-/* triangle_stage.c - chapter 03: what its renderer traces, and its built-in scene. */
+/* triangle_stage.c - chapter 03: what its renderer traces, and how --explain reports a test. */
 #include "03_triangle/triangle_stage.h"
 
 #include <stdlib.h>
@@ -14,6 +14,18 @@ static int test = TRIANGLE_CRAMER;
 knob triangle_knob(int *choice)
 {
     return (knob){"triangle", KNOB_CHOICE, choice, triangle_choices, "ray-triangle test (chapter 03)"};
+}
+
+void triangle_explain(const triangle *tri, ray r, real t_min, real t_max, triangle_test kind, bool found,
+                      const triangle_hit *hit)
+{
+    if (found) {
+        explain_triangle(true, hit->t, hit->beta, hit->gamma, t_min, t_max, true, hit->t);
+        return;
+    }
+    triangle_hit line;
+    bool line_hits = triangle_intersect(tri, r, -REAL_INFINITY, REAL_INFINITY, kind, &line);
+    explain_triangle(false, 0, 0, 0, t_min, t_max, line_hits, line_hits ? line.t : 0);
 }
 
 /* Every hit found becomes the far end of the window for the rest. */
@@ -54,21 +66,12 @@ color triangle_stage_sample(const void *prepared, real u, real v, uint64_t *rays
     return barycentric_color(h);
 }
 
-void triangle_stage_release(void *prepared)
-{
-    triangle_stage *s = prepared;
-    if (s)
-        free(s->tris);
-    free(s);
-}
-
 void *triangle_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
     (void)context;
-    const char *where = scene_name(desc);
-    triangle_stage *s = calloc(1, sizeof *s);
+    triangle_stage *s = calloc(1, sizeof *s + (size_t)desc->n_surfaces * sizeof s->tris[0]);
     if (!s) {
-        snprintf(err, err_size, "%s: out of memory", where);
+        snprintf(err, err_size, "%s: out of memory", scene_name(desc));
         return NULL;
     }
     if (!camera_from_scene(&s->cam, desc, err, err_size)) {
@@ -77,17 +80,9 @@ void *triangle_stage_prepare(const void *context, const scene *desc, char *err, 
     }
     s->back = desc->back_color;
     s->test = (triangle_test)test;
-    s->tris = malloc((size_t)(desc->n_surfaces ? desc->n_surfaces : 1) * sizeof *s->tris);
-    if (!s->tris) {
-        snprintf(err, err_size, "%s: out of memory", where);
-        triangle_stage_release(s);
-        return NULL;
-    }
-    for (int k = 0; k < desc->n_surfaces; k++) {
-        const scene_surface *surface = &desc->surfaces[k];
-        if (surface->kind == SURFACE_TRIANGLE)
-            s->tris[s->n++] = (triangle){surface->v0, surface->v1, surface->v2};
-    }
+    for (int k = 0; k < desc->n_surfaces; k++)
+        if (desc->surfaces[k].kind == SURFACE_TRIANGLE)
+            s->tris[s->n++] = (triangle){desc->surfaces[k].v0, desc->surfaces[k].v1, desc->surfaces[k].v2};
     return s;
 }
 
@@ -106,7 +101,7 @@ renderer triangle_stage_renderer(void)
         .builtin = triangle_scene,
         .prepare = triangle_stage_prepare,
         .sample = triangle_stage_sample,
-        .release = triangle_stage_release,
+        .release = free,
         .pixel_to_image = pixel_to_image,
     };
 }

@@ -3,9 +3,7 @@
 
 #include "crossing.h"
 
-/* p + t d = a + beta (b - a) + gamma (c - a), collected by unknown:
- * [a - b   a - c   d] [beta gamma t]^T = a - p. */
-static inline bool cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
+bool triangle_cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
 {
     /* EXERCISE cramer: the hit of the ray with the triangle in the window (t_min, t_max), edges
      * included, by Cramer's rule with det3 (README, "The intersection: three equations, three unknowns"
@@ -28,11 +26,7 @@ static inline bool cramer(const triangle *tri, ray r, real t_min, real t_max, tr
     *hit = (triangle_hit){.t = t, .beta = beta, .gamma = gamma};
     return true;
     /* STUB
-    (void)tri;
-    (void)r;
-    (void)t_min;
-    (void)t_max;
-    (void)hit;
+    (void)tri, (void)r, (void)t_min, (void)t_max, (void)hit;
     return false;
     END EXERCISE */
 }
@@ -55,17 +49,12 @@ bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, tria
     }
     /* Only a hit whose crossing the data decide counts (crossing.h). */
     triangle_hit h;
-    if (!cramer(tri, r, t_min, t_max, &h) || !triangle_crossing_certain(tri->a, tri->b, tri->c, r))
+    if (!triangle_cramer(tri, r, t_min, t_max, &h) || !triangle_crossing_certain(tri->a, tri->b, tri->c, r))
         return false;
     *hit = h;
     return true;
 }
 /* end snippet */
-
-bool triangle_cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
-{
-    return cramer(tri, r, t_min, t_max, hit);
-}
 
 vec3 triangle_normal(const triangle *tri)
 {
@@ -73,6 +62,5 @@ vec3 triangle_normal(const triangle *tri)
     real largest = vec3_max_abs(n);
     if (!(largest > 0 && isfinite(largest)))
         return vec3_make(0, 0, 0); /* collinear or coincident vertices: no plane */
-    /* Scaled to a largest component of 1 first: |n| neither overflows nor underflows. */
-    return vec3_normalize(vec3_scale(n, 1 / largest));
+    return vec3_normalize(vec3_scale(n, 1 / largest)); /* |n| neither overflows nor underflows */
 }
