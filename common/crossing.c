@@ -151,18 +151,19 @@ static inline double finite_sum(vec3 v)
  * sees them: in double, scaled by powers of two.  The float build's data are
  * exact in double, and double arithmetic errs far less than the bound allows
  * for float.  False for non-finite data. */
-static bool scaled_edges(vec3 va, vec3 vb, vec3 vc, ray r, double e1[3], double e2[3], double d[3], double f[3])
+static bool scaled_edges(const vec3 *va, const vec3 *vb, const vec3 *vc, ray r, double e1[3], double e2[3],
+                         double d[3], double f[3])
 {
-    if (!(finite_sum(va) + finite_sum(vb) + finite_sum(vc) + finite_sum(r.p) + finite_sum(r.d) == 0))
+    if (!(finite_sum(*va) + finite_sum(*vb) + finite_sum(*vc) + finite_sum(r.p) + finite_sum(r.d) == 0))
         return false;
     real largest =
-        (real)larger(larger(vec3_max_abs(va), vec3_max_abs(vb)), larger(vec3_max_abs(vc), vec3_max_abs(r.p)));
+        (real)larger(larger(vec3_max_abs(*va), vec3_max_abs(*vb)), larger(vec3_max_abs(*vc), vec3_max_abs(r.p)));
     int ev = exponent_of(largest), ed = exponent_of(vec3_max_abs(r.d));
     const double sv = power_of_two(ev), sd = power_of_two(ed);
     double a[3], b[3], c[3], p[3];
-    scaled(va, ev, sv, a);
-    scaled(vb, ev, sv, b);
-    scaled(vc, ev, sv, c);
+    scaled(*va, ev, sv, a);
+    scaled(*vb, ev, sv, b);
+    scaled(*vc, ev, sv, c);
     scaled(r.p, ev, sv, p);
     scaled(r.d, ed, sd, d);
     for (int i = 0; i < 3; i++) {
@@ -173,13 +174,13 @@ static bool scaled_edges(vec3 va, vec3 vb, vec3 vc, ray r, double e1[3], double 
     return true;
 }
 
-bool triangle_crossing_certain_exact(vec3 a, vec3 b, vec3 c, ray r)
+bool triangle_crossing_certain_exact(const vec3 *a, const vec3 *b, const vec3 *c, ray r)
 {
     double e1[3], e2[3], d[3], f[3];
     return scaled_edges(a, b, c, r, e1, e2, d, f) && decided(e1, e2, d, f);
 }
 
-bool triangle_crossing_certain(vec3 a, vec3 b, vec3 c, ray r)
+bool triangle_crossing_certain(const vec3 *a, const vec3 *b, const vec3 *c, ray r)
 {
     double e1[3], e2[3], d[3], f[3];
     return scaled_edges(a, b, c, r, e1, e2, d, f) && (clearly_decided(e1, e2, d, f) || decided(e1, e2, d, f));

@@ -22,7 +22,7 @@
  * Cramer's rule in real arithmetic must be certain to place a hit point. */
 #define TRIANGLE_POINT_SLACK 0x1p-3
 
-/* Whether r crosses the plane of the triangle a, b, c at a t that the data
+/* Whether r crosses the plane of the triangle *a, *b, *c at a t that the data
  * decide: false when |M| or |N| is not larger than the rounding error it may
  * carry (a degenerate or nearly degenerate triangle, a direction in or
  * parallel to the plane, an origin in the plane), for non-finite data, and
@@ -30,11 +30,11 @@
  * the triangle's size from where the data put it.  The data are taken as
  * they are stored: a crossing that the arithmetic decides counts at any
  * distance from the origin. */
-bool triangle_crossing_certain(vec3 a, vec3 b, vec3 c, ray r);
+bool triangle_crossing_certain(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
 
 /* The same answer, always computed in full: triangle_crossing_certain first
  * tries a cheaper sufficient test and calls this one only where that test
  * cannot decide.  (The tests compare the two.) */
-bool triangle_crossing_certain_exact(vec3 a, vec3 b, vec3 c, ray r);
+bool triangle_crossing_certain_exact(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
 
 #endif

@@ -39,15 +39,15 @@ bool watertight_ray_make(ray r, watertight_ray *wr)
     return true;
 }
 
-bool watertight_hit(const watertight_ray *wr, vec3 va, vec3 vb, vec3 vc, real t_min, real t_max, real *t_hit,
-                    real *beta, real *gamma)
+bool watertight_hit(const watertight_ray *wr, const vec3 *va, const vec3 *vb, const vec3 *vc, real t_min,
+                    real t_max, real out[3])
 {
     const ray r = wr->r;
     const int kx = wr->kx, ky = wr->ky, kz = wr->kz;
     const real sx = wr->sx, sy = wr->sy, sz = wr->sz;
     /* snippet: watertight_vertices */
     /* 2. The vertices relative to p, sheared: the ray is now the positive z axis. */
-    vec3 a = vec3_sub(va, r.p), b = vec3_sub(vb, r.p), c = vec3_sub(vc, r.p);
+    vec3 a = vec3_sub(*va, r.p), b = vec3_sub(*vb, r.p), c = vec3_sub(*vc, r.p);
     real ax = component(a, kx) - sx * component(a, kz), ay = component(a, ky) - sy * component(a, kz);
     real bx = component(b, kx) - sx * component(b, kz), by = component(b, ky) - sy * component(b, kz);
     real cx = component(c, kx) - sx * component(c, kz), cy = component(c, ky) - sy * component(c, kz);
@@ -89,9 +89,9 @@ bool watertight_hit(const watertight_ray *wr, vec3 va, vec3 vb, vec3 vc, real t_
      * a crossing that the data decide counts (crossing.h); only hits pay. */
     if (!triangle_crossing_certain(va, vb, vc, r))
         return false;
-    *t_hit = t;
-    *beta = v / det;
-    *gamma = w / det;
+    out[0] = t;
+    out[1] = v / det;
+    out[2] = w / det;
     return true;
     /* end snippet */
 }

@@ -26,12 +26,13 @@ typedef struct {
 /* Step 1 for r.  False when d has no direction: every triangle is missed. */
 bool watertight_ray_make(ray r, watertight_ray *wr);
 
-/* Steps 2-4 for the triangle a, b, c: whether the ray meets it at
+/* Steps 2-4 for the triangle *a, *b, *c: whether the ray meets it at
  * r.p + t r.d = a + beta (b - a) + gamma (c - a) with t in (t_min, t_max)
  * and a crossing that the data decide (crossing.h).  A degenerate triangle
- * and a ray in or parallel to its plane are misses.  *t, *beta and *gamma
- * are written only on a hit. */
-bool watertight_hit(const watertight_ray *wr, vec3 a, vec3 b, vec3 c, real t_min, real t_max, real *t, real *beta,
-                    real *gamma);
+ * and a ray in or parallel to its plane are misses.  out = (t, beta, gamma)
+ * is written only on a hit.  (Addresses, not copies: the test runs for
+ * every triangle a ray meets, and each argument beyond six registers costs.) */
+bool watertight_hit(const watertight_ray *wr, const vec3 *a, const vec3 *b, const vec3 *c, real t_min, real t_max,
+                    real out[3]);
 
 #endif

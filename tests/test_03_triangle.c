@@ -923,8 +923,8 @@ static void test_crossing_certain_quick_is_exact(void **state)
                              &tri.c.z, &r.p.x, &r.p.y, &r.p.z, &r.d.x, &r.d.y, &r.d.z};
             *all[below(15)] = bad;
         }
-        bool quick = triangle_crossing_certain(tri.a, tri.b, tri.c, r),
-             exact = triangle_crossing_certain_exact(tri.a, tri.b, tri.c, r);
+        bool quick = triangle_crossing_certain(&tri.a, &tri.b, &tri.c, r),
+             exact = triangle_crossing_certain_exact(&tri.a, &tri.b, &tri.c, r);
         if (quick != exact) {
             fail_msg("kind %d, input %d: triangle_crossing_certain says %d, the full computation %d for a = (%a, %a, "
                      "%a), b = (%a, %a, %a), c = (%a, %a, %a), p = (%a, %a, %a), d = (%a, %a, %a)",
@@ -985,8 +985,8 @@ static void test_crossing_certain_quick_is_exact(void **state)
         vec3 a = v[0], b = v[1], c = v[2], o = v[3], d = v[4];
         triangle tri = {a, b, c};
         ray r = {o, d};
-        bool quick = triangle_crossing_certain(tri.a, tri.b, tri.c, r),
-             exact = triangle_crossing_certain_exact(tri.a, tri.b, tri.c, r);
+        bool quick = triangle_crossing_certain(&tri.a, &tri.b, &tri.c, r),
+             exact = triangle_crossing_certain_exact(&tri.a, &tri.b, &tri.c, r);
         if (quick != exact)
             fail_msg("tight input %d: triangle_crossing_certain says %d, the full computation %d for rho %a, shift %d",
                      n, quick, exact, (double)rho, shift);

@@ -18,7 +18,7 @@ static bool hit_of(vec3 a, vec3 b, vec3 c, ray r, real t_min, real t_max, real o
 {
     out[0] = out[1] = out[2] = -7;
     watertight_ray wr;
-    return watertight_ray_make(r, &wr) && watertight_hit(&wr, a, b, c, t_min, t_max, &out[0], &out[1], &out[2]);
+    return watertight_ray_make(r, &wr) && watertight_hit(&wr, &a, &b, &c, t_min, t_max, out);
 }
 
 /* Component k of v moved to axis (k + shift) % 3, so that each axis in turn
@@ -136,7 +136,7 @@ static void test_crossing_certain_on_vertices(void **state)
         int e = scales[k];
         vec3 sa = vec3_ldexp(a, e), sb = vec3_ldexp(b, e), sc = vec3_ldexp(c, e);
         ray r = {vec3_ldexp(clear.p, e), vec3_ldexp(clear.d, e)};
-        if (!triangle_crossing_certain(sa, sb, sc, r) || !triangle_crossing_certain_exact(sa, sb, sc, r))
+        if (!triangle_crossing_certain(&sa, &sb, &sc, r) || !triangle_crossing_certain_exact(&sa, &sb, &sc, r))
             fail_msg("a clear hit scaled by 2^%d is not certain", e);
     }
     const struct {
@@ -152,8 +152,9 @@ static void test_crossing_certain_on_vertices(void **state)
         {a, b, c, {{1, (real)NAN, 2}, {0, 0, -1}}, "a NaN origin"},
     };
     for (size_t k = 0; k < sizeof not_certain / sizeof not_certain[0]; k++) {
-        bool quick = triangle_crossing_certain(not_certain[k].a, not_certain[k].b, not_certain[k].c, not_certain[k].r);
-        bool full = triangle_crossing_certain_exact(not_certain[k].a, not_certain[k].b, not_certain[k].c, not_certain[k].r);
+        const vec3 *a_k = &not_certain[k].a, *b_k = &not_certain[k].b, *c_k = &not_certain[k].c;
+        bool quick = triangle_crossing_certain(a_k, b_k, c_k, not_certain[k].r);
+        bool full = triangle_crossing_certain_exact(a_k, b_k, c_k, not_certain[k].r);
         if (quick || full)
             fail_msg("%s: certain (quick %d, full %d)", not_certain[k].what, quick, full);
     }

@@ -2,8 +2,7 @@
 #ifndef CH03_TRIANGLE_H
 #define CH03_TRIANGLE_H
 
-#include "ray.h"
-#include "watertight.h"
+#include "watertight.h" /* the ray and the watertight test, given (common/) */
 
 /* snippet: triangle */
 typedef struct {
@@ -35,7 +34,11 @@ bool triangle_cramer(const triangle *tri, ray r, real t_min, real t_max, triangl
 static inline bool watertight_ray_hit(const watertight_ray *wr, const triangle *tri, real t_min, real t_max,
                                       triangle_hit *hit)
 {
-    return watertight_hit(wr, tri->a, tri->b, tri->c, t_min, t_max, &hit->t, &hit->beta, &hit->gamma);
+    real out[3];
+    if (!watertight_hit(wr, &tri->a, &tri->b, &tri->c, t_min, t_max, out))
+        return false;
+    *hit = (triangle_hit){out[0], out[1], out[2]};
+    return true;
 }
 
 /* normalize((b - a) x (c - a)), the zero vector for a degenerate triangle. */

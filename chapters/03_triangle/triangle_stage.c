@@ -70,11 +70,9 @@ void *triangle_stage_prepare(const void *context, const scene *desc, char *err, 
 {
     (void)context;
     triangle_stage *s = calloc(1, sizeof *s + (size_t)desc->n_surfaces * sizeof s->tris[0]);
-    if (!s) {
+    if (!s)
         snprintf(err, err_size, "%s: out of memory", scene_name(desc));
-        return NULL;
-    }
-    if (!camera_from_scene(&s->cam, desc, err, err_size)) {
+    if (!s || !camera_from_scene(&s->cam, desc, err, err_size)) {
         free(s);
         return NULL;
     }

@@ -1,6 +1,5 @@
 /* triangle.c - chapter 03: the barycentric ray-triangle intersection. */
 #include "03_triangle/triangle.h"
-
 #include "crossing.h"
 
 bool triangle_cramer(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
@@ -49,7 +48,7 @@ bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, tria
     }
     /* Only a hit whose crossing the data decide counts (crossing.h). */
     triangle_hit h;
-    if (!triangle_cramer(tri, r, t_min, t_max, &h) || !triangle_crossing_certain(tri->a, tri->b, tri->c, r))
+    if (!triangle_cramer(tri, r, t_min, t_max, &h) || !triangle_crossing_certain(&tri->a, &tri->b, &tri->c, r))
         return false;
     *hit = h;
     return true;
