@@ -59,7 +59,7 @@ static void test_near_edge(void **state)
  * with Cramer's rule no false hit, with the watertight test (whose
  * barycentrics the check's bound does not follow exactly) at most 10 per
  * 10^6 rays in the lab's measurement, so at most 2 of these 40,000, and
- * every hit within 1/8 of an edge of its triangle (degenerate.h's bound).
+ * every hit within 1/8 of an edge of its triangle (common/crossing.h's bound).
  * Clear hits (1 % inside by a long-double reference) are all found in
  * double; in float the lab measures 1 lost of 240,018, so at most 1 % here. */
 static void test_degenerate_counts(void **state)

@@ -21,7 +21,7 @@
 
 #include "suite.h"
 
-#include "03_triangle/degenerate.h"
+#include "crossing.h"
 #include "03_triangle/lab/crossing_reference.h"
 #include "03_triangle/lab/degenerate_count.h"
 #include "03_triangle/scenes/icosahedron.h"
@@ -170,7 +170,7 @@ static void test_parallel_ray(void **state)
     }
 }
 
-/* The exercise on its own (triangle_cramer: no check of degenerate.h after
+/* The exercise on its own (triangle_cramer: no check of crossing.h after
  * it, which would hide these): where cramer cannot divide, or its data are
  * not numbers, it answers false and leaves *hit alone.  A NaN or infinite
  * coordinate of p leaves M finite (M does not involve p) and makes t, beta
@@ -255,7 +255,7 @@ static void test_any_length_of_d(void **state)
      * the ray from x = -2^127 along d = (2^126, 0, 0) meets it at t = 3
      * exactly, which a d scaled all the way down to about 1 would turn into
      * 3 2^127, beyond the largest float.  (The same scene in double, at 2^1022,
-     * is beyond the range of the degeneracy check of degenerate.h, which
+     * is beyond the range of the degeneracy check of crossing.h, which
      * scales the coordinates to 1 in double: edges of 2^-11 would fall below
      * the normal doubles.  In double the check stays at 2^126, where it only
      * confirms the hit.) */
@@ -493,7 +493,7 @@ static void print_triangle(const char *what, const triangle *tri, ray r)
                 (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z);
 }
 
-/* The check of degenerate.h accepts a hit only where Cramer's rule in real
+/* The check of crossing.h accepts a hit only where Cramer's rule in real
  * arithmetic puts its point within 1/8 of the triangle's longest edge of the
  * crossing the data have (a first-order bound, worst case: the errors seen
  * are far smaller).  So a hit, if any, is on the triangle to within that:
@@ -813,7 +813,7 @@ static void test_icosahedron_from_inside(void **state)
 }
 
 /* triangle_crossing_certain takes a quick sufficient test before the full
- * one (degenerate.c); it must decide exactly as the full one,
+ * one (common/crossing.c); it must decide exactly as the full one,
  * triangle_crossing_certain_exact, for every input.  Random triangles and
  * rays in rotated frames, at scales from the smallest subnormal to the
  * largest real and far from the origin, of the kinds where the two could
@@ -923,7 +923,8 @@ static void test_crossing_certain_quick_is_exact(void **state)
                              &tri.c.z, &r.p.x, &r.p.y, &r.p.z, &r.d.x, &r.d.y, &r.d.z};
             *all[below(15)] = bad;
         }
-        bool quick = triangle_crossing_certain(&tri, r), exact = triangle_crossing_certain_exact(&tri, r);
+        bool quick = triangle_crossing_certain(&tri.a, &tri.b, &tri.c, r),
+             exact = triangle_crossing_certain_exact(&tri.a, &tri.b, &tri.c, r);
         if (quick != exact) {
             fail_msg("kind %d, input %d: triangle_crossing_certain says %d, the full computation %d for a = (%a, %a, "
                      "%a), b = (%a, %a, %a), c = (%a, %a, %a), p = (%a, %a, %a), d = (%a, %a, %a)",
@@ -984,7 +985,8 @@ static void test_crossing_certain_quick_is_exact(void **state)
         vec3 a = v[0], b = v[1], c = v[2], o = v[3], d = v[4];
         triangle tri = {a, b, c};
         ray r = {o, d};
-        bool quick = triangle_crossing_certain(&tri, r), exact = triangle_crossing_certain_exact(&tri, r);
+        bool quick = triangle_crossing_certain(&tri.a, &tri.b, &tri.c, r),
+             exact = triangle_crossing_certain_exact(&tri.a, &tri.b, &tri.c, r);
         if (quick != exact)
             fail_msg("tight input %d: triangle_crossing_certain says %d, the full computation %d for rho %a, shift %d",
                      n, quick, exact, (double)rho, shift);

@@ -316,7 +316,7 @@ static void test_spawn_ray_to_far_end(void **state)
  * sphere, at any scale from 1e-4 to 1e4 (acne.h).  The blunder has acne on
  * the sphere at every scale (on the square less: chapter 03's test refuses
  * a ray whose start its arithmetic cannot tell from the triangle's plane,
- * degenerate.h, and crosses only the others). */
+ * common/crossing.h, and crosses only the others). */
 static void test_no_acne_no_leak(void **state)
 {
     (void)state;

@@ -20,7 +20,7 @@ for test in cramer watertight; do
 done
 rm -f "${TMPDIR:-/tmp}/bench-03-cracks.$$.png"
 
-# The crossing check of degenerate.c against the distance from the origin
+# The crossing check of common/crossing.c against the distance from the origin
 # (lab --degenerate=N): false hits (a point further than 1 % of an edge
 # from the triangle) at degenerate triangles and by rays in the plane, and
 # clear hits that Cramer's rule alone decides but the test loses.

@@ -1,14 +1,6 @@
-/* triangle_stage.h - chapter 03: what its renderer traces, and its built-in scene.
- *
- * The scene's triangles, each pixel coloured by the barycentric coordinates
- * of the closest hit, (R, G, B) = (alpha, beta, gamma), with the test that
- * --triangle chose.  render.c hands these to renderer_main; the chapter's
- * lab calls them too.
- */
+/* triangle_stage.h - chapter 03: what its renderer traces (the lab calls it too). */
 #ifndef CH03_TRIANGLE_STAGE_H
 #define CH03_TRIANGLE_STAGE_H
-
-#include <stdint.h>
 
 #include "01_camera_rays/camera.h"
 #include "03_triangle/triangle.h"
@@ -16,39 +8,28 @@
 
 typedef struct {
     camera cam;
-    triangle *tris; /* the scene's Triangle surfaces */
-    int n;
     color back;         /* <backColor> */
     triangle_test test; /* what --triangle chose */
+    int n;
+    triangle tris[];    /* the scene's n Triangle surfaces */
 } triangle_stage;
 
-/* The row of --triangle=cramer|watertight aimed at *choice (a triangle_test),
- * for this renderer and every later one. */
+/* The row of --triangle=cramer|watertight aimed at *choice, for every renderer from here on. */
 knob triangle_knob(int *choice);
 
-/* The closest hit among all triangles with test t: the index of its
- * triangle, or -1 for none. */
+/* The closest hit among all triangles with test t: its triangle's index, or -1 for none. */
 int triangle_stage_closest(const triangle_stage *s, ray r, triangle_test t, triangle_hit *best);
 
 /* (R, G, B) = (alpha, beta, gamma) of a hit. */
 color barycentric_color(triangle_hit h);
 
-/* The 20 faces of the icosahedron (centre, radius) as Triangle surfaces;
- * 0, or -1 when out of memory. */
-int triangle_scene_add_icosahedron(scene *desc, vec3 centre, real radius);
-
-/* The built-in scene: a large triangle on the left, an icosahedron on the
- * right.  0, or -1 when out of memory. */
-int triangle_scene(scene *desc);
-
-/* renderer.h's prepare (context: the int --triangle set), sample, release. */
+/* renderer.h's prepare (context: the int --triangle set) and sample for a
+ * triangle_stage (release: free). */
 void *triangle_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size);
 color triangle_stage_sample(const void *prepared, real u, real v, uint64_t *rays);
-void triangle_stage_release(void *prepared);
 
 /* Chapter 03's renderer: the knob (its row in *row, aimed at *test, which
- * the caller owns), the built-in scene and the functions above, with
- * chapter 01's pixel_to_image. */
+ * the caller owns), the built-in scene and the functions above. */
 renderer triangle_stage_renderer(int *test, knob *row);
 
 #endif

@@ -2,6 +2,7 @@
 #include "03_triangle/lab/crack_view.h"
 
 #include "03_triangle/lab/cracks.h"
+#include "03_triangle/scenes/triangle_scene.h"
 
 /* How close to an edge, in barycentric units, a pixel is re-aimed at the
  * edge, and the stretch of the edge (as a fraction of its length, to either

@@ -10,7 +10,7 @@ static long double det_ld(const long double u[3], const long double v[3], const 
            u[2] * (v[0] * w[1] - v[1] * w[0]);
 }
 
-/* The six products of det[u v w] without their signs (degenerate.c). */
+/* The six products of det[u v w] without their signs (common/crossing.c). */
 static long double size_ld(const long double u[3], const long double v[3], const long double w[3])
 {
     long double p = 0;

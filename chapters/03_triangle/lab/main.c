@@ -21,6 +21,7 @@
 #include "03_triangle/lab/crack_view.h"
 #include "03_triangle/lab/cracks.h"
 #include "03_triangle/lab/degenerate_count.h"
+#include "03_triangle/scenes/triangle_scene.h"
 
 #define LAB_NAME "03_triangle_lab"
 

@@ -12,7 +12,7 @@
 #include <math.h>
 #include <stdint.h>
 
-#include "03_triangle/watertight.h"
+#include "03_triangle/triangle.h"
 #include "04_many_shapes/surface.h"
 
 /* The search so far: the best hit, and the window a new hit must fall in. */

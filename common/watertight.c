@@ -1,7 +1,7 @@
-/* watertight.c - chapter 03: Woop, Benthin and Wald's watertight test (2013). */
-#include "03_triangle/watertight.h"
+/* watertight.c - Woop, Benthin and Wald's watertight ray/triangle test (2013). */
+#include "watertight.h"
 
-#include "03_triangle/degenerate.h"
+#include "crossing.h"
 
 /* v's coordinate along axis k (0: x, 1: y, 2: z), read from an array rather
  * than chosen by branches: the test reads nine of them per triangle. */
@@ -39,14 +39,15 @@ bool watertight_ray_make(ray r, watertight_ray *wr)
     return true;
 }
 
-bool watertight_ray_hit(const watertight_ray *wr, const triangle *tri, real t_min, real t_max, triangle_hit *hit)
+bool watertight_hit(const watertight_ray *wr, const vec3 *va, const vec3 *vb, const vec3 *vc, real t_min,
+                    real t_max, real out[3])
 {
     const ray r = wr->r;
     const int kx = wr->kx, ky = wr->ky, kz = wr->kz;
     const real sx = wr->sx, sy = wr->sy, sz = wr->sz;
     /* snippet: watertight_vertices */
     /* 2. The vertices relative to p, sheared: the ray is now the positive z axis. */
-    vec3 a = vec3_sub(tri->a, r.p), b = vec3_sub(tri->b, r.p), c = vec3_sub(tri->c, r.p);
+    vec3 a = vec3_sub(*va, r.p), b = vec3_sub(*vb, r.p), c = vec3_sub(*vc, r.p);
     real ax = component(a, kx) - sx * component(a, kz), ay = component(a, ky) - sy * component(a, kz);
     real bx = component(b, kx) - sx * component(b, kz), by = component(b, ky) - sy * component(b, kz);
     real cx = component(c, kx) - sx * component(c, kz), cy = component(c, ky) - sy * component(c, kz);
@@ -84,19 +85,13 @@ bool watertight_ray_hit(const watertight_ray *wr, const triangle *tri, real t_mi
     real t = (u * az + v * bz + w * cz) / det;
     if (!(t > t_min && t < t_max))
         return false;
-    /* Rounding leaves det a sliver of either sign where it should be 0 (a
-     * degenerate triangle, a ray in the plane): accept only a crossing that
-     * the data decide (degenerate.h).  Only rays that passed the edge tests
-     * with t inside the window pay for this check, as with Cramer's rule. */
-    if (!triangle_crossing_certain(tri, r))
+    /* Rounding leaves det a sliver of either sign where it should be 0: only
+     * a crossing that the data decide counts (crossing.h); only hits pay. */
+    if (!triangle_crossing_certain(va, vb, vc, r))
         return false;
-    *hit = (triangle_hit){.t = t, .beta = v / det, .gamma = w / det};
+    out[0] = t;
+    out[1] = v / det;
+    out[2] = w / det;
     return true;
     /* end snippet */
-}
-
-bool triangle_intersect_watertight(const triangle *tri, ray r, real t_min, real t_max, triangle_hit *hit)
-{
-    watertight_ray wr;
-    return watertight_ray_make(r, &wr) && watertight_ray_hit(&wr, tri, t_min, t_max, hit);
 }

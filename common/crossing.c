@@ -1,5 +1,5 @@
-/* degenerate.c - chapter 03: determinants against their own rounding error. */
-#include "03_triangle/degenerate.h"
+/* crossing.c - a ray and a triangle's plane: determinants against their own rounding error. */
+#include "crossing.h"
 
 #include <stdint.h>
 #include <string.h>
@@ -54,7 +54,7 @@ static inline void scaled(vec3 v, int e, double scale, double out[3])
 static inline double larger(double x, double y) { return x > y ? x : y; }
 
 /* e1 . (e2 x w), in one fixed order of operations: the quick test below and
- * det_certain must see the same rounded value. */
+ * decided must see the same rounded value. */
 static double det_of(const double e1[3], const double e2[3], const double w[3])
 {
     return e1[0] * (e2[1] * w[2] - e2[2] * w[1]) + e1[1] * (e2[2] * w[0] - e2[0] * w[2]) +
@@ -147,53 +147,41 @@ static inline double finite_sum(vec3 v)
     return ((double)v.x - (double)v.x) + ((double)v.y - (double)v.y) + ((double)v.z - (double)v.z);
 }
 
-/* The data as det_certain sees them: in double, scaled by powers of two.
- * The float build's data are exact in double, and double arithmetic errs
- * far less than the bound allows for float.  False for non-finite data. */
-static bool scaled_data(const triangle *tri, ray r, double a[3], double b[3], double c[3], double p[3],
-                        double d[3])
+/* The edges e1 = a - b, e2 = a - c, f = a - p and the direction d as decided
+ * sees them: in double, scaled by powers of two.  The float build's data are
+ * exact in double, and double arithmetic errs far less than the bound allows
+ * for float.  False for non-finite data. */
+static bool scaled_edges(const vec3 *va, const vec3 *vb, const vec3 *vc, ray r, double e1[3], double e2[3],
+                         double d[3], double f[3])
 {
-    if (!(finite_sum(tri->a) + finite_sum(tri->b) + finite_sum(tri->c) + finite_sum(r.p) + finite_sum(r.d) == 0))
+    if (!(finite_sum(*va) + finite_sum(*vb) + finite_sum(*vc) + finite_sum(r.p) + finite_sum(r.d) == 0))
         return false;
-    real largest = (real)larger(larger(vec3_max_abs(tri->a), vec3_max_abs(tri->b)),
-                                larger(vec3_max_abs(tri->c), vec3_max_abs(r.p)));
+    real largest =
+        (real)larger(larger(vec3_max_abs(*va), vec3_max_abs(*vb)), larger(vec3_max_abs(*vc), vec3_max_abs(r.p)));
     int ev = exponent_of(largest), ed = exponent_of(vec3_max_abs(r.d));
     const double sv = power_of_two(ev), sd = power_of_two(ed);
-    scaled(tri->a, ev, sv, a);
-    scaled(tri->b, ev, sv, b);
-    scaled(tri->c, ev, sv, c);
+    double a[3], b[3], c[3], p[3];
+    scaled(*va, ev, sv, a);
+    scaled(*vb, ev, sv, b);
+    scaled(*vc, ev, sv, c);
     scaled(r.p, ev, sv, p);
     scaled(r.d, ed, sd, d);
-    return true;
-}
-
-/* The edges e1 = a - b, e2 = a - c and f = a - p. */
-static void edges(const double a[3], const double b[3], const double c[3], const double p[3], double e1[3],
-                  double e2[3], double f[3])
-{
     for (int i = 0; i < 3; i++) {
         e1[i] = a[i] - b[i];
         e2[i] = a[i] - c[i];
         f[i] = a[i] - p[i];
     }
+    return true;
 }
 
-bool triangle_crossing_certain_exact(const triangle *tri, ray r)
+bool triangle_crossing_certain_exact(const vec3 *a, const vec3 *b, const vec3 *c, ray r)
 {
-    double a[3], b[3], c[3], p[3], d[3];
-    if (!scaled_data(tri, r, a, b, c, p, d))
-        return false;
-    double e1[3], e2[3], f[3];
-    edges(a, b, c, p, e1, e2, f);
-    return decided(e1, e2, d, f);
+    double e1[3], e2[3], d[3], f[3];
+    return scaled_edges(a, b, c, r, e1, e2, d, f) && decided(e1, e2, d, f);
 }
 
-bool triangle_crossing_certain(const triangle *tri, ray r)
+bool triangle_crossing_certain(const vec3 *a, const vec3 *b, const vec3 *c, ray r)
 {
-    double a[3], b[3], c[3], p[3], d[3];
-    if (!scaled_data(tri, r, a, b, c, p, d))
-        return false;
-    double e1[3], e2[3], f[3];
-    edges(a, b, c, p, e1, e2, f);
-    return clearly_decided(e1, e2, d, f) || decided(e1, e2, d, f);
+    double e1[3], e2[3], d[3], f[3];
+    return scaled_edges(a, b, c, r, e1, e2, d, f) && (clearly_decided(e1, e2, d, f) || decided(e1, e2, d, f));
 }

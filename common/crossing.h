@@ -1,0 +1,40 @@
+/* crossing.h - is the crossing of a ray and a triangle's plane decided by the
+ * data, or only by rounding?
+ *
+ * Cramer's rule for the ray p + t d and the triangle a, b, c divides by
+ * M = det[a - b   a - c   d], which is zero for a degenerate triangle
+ * (collinear or coincident vertices) and a ray parallel to its plane.  With
+ * coordinates that are not small integers rounding leaves a tiny M of either
+ * sign there, and the quotients are noise that may pass the inside test.
+ * This check compares |M| and the numerator of t, N = det[a - b   a - c   a - p],
+ * with bounds on the rounding error they may carry (the derivation is in
+ * crossing.c); the bounds scale with the data, so there is no absolute
+ * epsilon.  Chapter 03's two triangle tests apply it to their hits.
+ */
+#ifndef RT_CROSSING_H
+#define RT_CROSSING_H
+
+#include <stdbool.h>
+
+#include "ray.h"
+
+/* The share of a triangle's size (its largest edge component) within which
+ * Cramer's rule in real arithmetic must be certain to place a hit point. */
+#define TRIANGLE_POINT_SLACK 0x1p-3
+
+/* Whether r crosses the plane of the triangle *a, *b, *c at a t that the data
+ * decide: false when |M| or |N| is not larger than the rounding error it may
+ * carry (a degenerate or nearly degenerate triangle, a direction in or
+ * parallel to the plane, an origin in the plane), for non-finite data, and
+ * when rounding may put the hit point further than TRIANGLE_POINT_SLACK of
+ * the triangle's size from where the data put it.  The data are taken as
+ * they are stored: a crossing that the arithmetic decides counts at any
+ * distance from the origin. */
+bool triangle_crossing_certain(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
+
+/* The same answer, always computed in full: triangle_crossing_certain first
+ * tries a cheaper sufficient test and calls this one only where that test
+ * cannot decide.  (The tests compare the two.) */
+bool triangle_crossing_certain_exact(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
+
+#endif
