@@ -23,8 +23,7 @@ int triangle_stage_closest(const triangle_stage *s, ray r, triangle_test t, tria
 /* (R, G, B) = (alpha, beta, gamma) of a hit. */
 color barycentric_color(triangle_hit h);
 
-/* renderer.h's prepare (context: the int --triangle set) and sample for a
- * triangle_stage (release: free). */
+/* renderer.h's prepare (context: --triangle's int) and sample (release: free). */
 void *triangle_stage_prepare(const void *context, const scene *desc, char *err, size_t err_size);
 color triangle_stage_sample(const void *prepared, real u, real v, uint64_t *rays);
 
