@@ -74,6 +74,13 @@ plant "hint: a shadow ray from the hit point itself" 06_shadows shadow.c \
 plant "hint: x^p by an integer loop" 07_blinn_phong phong.c \
     's|real highlight = real_pow(real_fmax(0, vec3_dot(n, h)), p);|real highlight = 1; for (int i = 0; i < p; i++) highlight *= real_fmax(0, vec3_dot(n, h));|' \
     test_exponent_behaviour "" "p = 2\.5" "fractional p"
+# Glass: R and 1 - R swapped; each ray's path coefficient 1 instead of its weight.
+plant "hint: the glass weights swapped" 09_refraction shade_glass.c \
+    's|L = color_mul(R, mirror_radiance|L = color_mul(T, mirror_radiance|; s|color_mul(T, transmitted_radiance|color_mul(R, transmitted_radiance|' \
+    test_glass_weights "" "R and 1 - R swapped"
+plant "hint: the glass rays traced with coefficient 1" 09_refraction shade_glass.c \
+    's|mirror_radiance(tr, sp, R, depth|mirror_radiance(tr, sp, color_make(1, 1, 1), depth|; s|transmitted_radiance(tr, sp, e.T, T, depth|transmitted_radiance(tr, sp, e.T, color_make(1, 1, 1), depth|' \
+    test_glass_weights "" "min-weight 0\\.97" "coefficient other than its weight"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"

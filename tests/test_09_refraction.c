@@ -539,6 +539,91 @@ static void test_total_internal_reflection_rays(void **state)
     scene_free(&desc);
 }
 
+/* The glass shader's weights, one event at a time (--depth 1: a ray it casts
+ * that leaves the glass brings the background B, one that stays inside
+ * brings black).  Head on into or out of glass of index 1.5, R = 0.04: from
+ * outside L = R B (the reflected ray leaves, the transmitted one stays inside),
+ * from inside L = (1 - R) B.  Each is R or 1 - R times B = 0.5 after a few
+ * roundings of values of size 1: TOL(1).  Past the critical angle no
+ * transmitted ray is cast; with --min-weight above both weights no ray at all
+ * (path_next is given each ray's weight); with index 1 (R = 0) no reflected
+ * ray. */
+static void test_glass_weights(void **state)
+{
+    (void)state;
+    scene desc;
+    scene_init(&desc);
+    desc.back_color = color_make((real)0.25, (real)0.5, (real)0.75);
+    const vec3 lo = {-10.5, -20, 3}, hi = {10.5, 2.25, 25};
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_BOX, .shader = add_glass(&desc, (real)1.5), .min_pt = lo,
+                                             .max_pt = hi});
+    probe_shader = -1;
+    const double B = 0.5, R = 0.04;
+    const vec3 outside = {0.5, 6.25, 14}, inside = {0.5, 1.25, 14}, down = {0, -1, 0}, up = {0, 1, 0};
+    const struct {
+        const char *where;
+        vec3 from, d;
+        double expected, swapped, unweighted;
+        const char *unweighted_mistake, *missing_mistake;
+    } cases[] = {
+        {"a ray from outside, head on into glass of index 1.5 (R = 0.04, the transmitted ray stays inside)", outside,
+         down, R * B, (1 - R) * B, B, "L_reflected not multiplied by R", "no reflected ray traced, or its L not added"},
+        {"a ray from inside, head on out of glass of index 1.5 (R = 0.04, the reflected ray stays inside)", inside, up,
+         (1 - R) * B, R * B, B, "L_transmitted not multiplied by 1 - R", "no transmitted ray traced, or its L not added"},
+    };
+    for (int k = 0; k < 2; k++) {
+        glass_knobs knobs = knobs_of(1, 0);
+        uint64_t rays[RAY_KINDS] = {0};
+        color L = trace_one(&desc, &knobs, (ray){cases[k].from, cases[k].d}, rays);
+        const suspect suspects[] = {{cases[k].swapped, "the weights R and 1 - R swapped"},
+                                    {cases[k].unweighted, cases[k].unweighted_mistake},
+                                    {0, cases[k].missing_mistake}};
+        assert_close_why(cases[k].expected, L.g, TOL(1),
+                         describe("shade_glass, %s, background %g: L", cases[k].where, B),
+                         "L = R L_reflected + (1 - R) L_transmitted (README, \"The glass shader\")", suspects, 3);
+        if (rays[RAY_REFLECTED] != 1 || rays[RAY_REFRACTED] != 1)
+            fail_msg("shade_glass, %s\n    expected 1 reflected and 1 refracted ray\n    got      %d and %d\n"
+                     "    likely mistake: a ray not traced though its weight (R or 1 - R) is above 0",
+                     cases[k].where, (int)rays[RAY_REFLECTED], (int)rays[RAY_REFRACTED]);
+    }
+    /* past the critical angle (60 degrees from inside): the reflected ray only */
+    glass_knobs knobs = knobs_of(1, 0);
+    uint64_t rays[RAY_KINDS] = {0};
+    trace_one(&desc, &knobs, (ray){inside, incoming(down, vec3_make((real)0.6, 0, (real)0.8), 60 * pi / 180)}, rays);
+    if (rays[RAY_REFLECTED] != 1 || rays[RAY_REFRACTED] != 0)
+        fail_msg("shade_glass, a ray from inside at 60 degrees, past the critical angle of 41.8\n"
+                 "    expected 1 reflected ray and no refracted one\n    got      %d and %d\n"
+                 "    likely mistake: a transmitted ray traced past the critical angle (glass_at says it does not "
+                 "transmit: R = 1)",
+                 (int)rays[RAY_REFLECTED], (int)rays[RAY_REFRACTED]);
+    /* --min-weight 0.97, above R = 0.04 and 1 - R = 0.96: neither ray is cast */
+    knobs = knobs_of(1, (real)0.97);
+    uint64_t cut[RAY_KINDS] = {0};
+    trace_one(&desc, &knobs, (ray){outside, down}, cut);
+    if (cut[RAY_REFLECTED] != 0 || cut[RAY_REFRACTED] != 0)
+        fail_msg("shade_glass, a ray from outside, head on, at --min-weight 0.97\n"
+                 "    expected no reflected and no refracted ray (weights 0.04 and 0.96)\n    got      %d and %d\n"
+                 "    likely mistake: a ray traced with a coefficient other than its weight (R for the reflected "
+                 "ray, 1 - R for the transmitted one: path_next compares the path's weight times it with "
+                 "--min-weight)",
+                 (int)cut[RAY_REFLECTED], (int)cut[RAY_REFRACTED]);
+    scene_free(&desc);
+    /* index 1: R = 0, no surface to reflect */
+    scene_init(&desc);
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_BOX, .shader = add_glass(&desc, 1), .min_pt = lo,
+                                             .max_pt = hi});
+    probe_shader = -1;
+    knobs = knobs_of(1, 0);
+    uint64_t none[RAY_KINDS] = {0};
+    trace_one(&desc, &knobs, (ray){outside, down}, none);
+    if (none[RAY_REFLECTED] != 0 || none[RAY_REFRACTED] != 1)
+        fail_msg("shade_glass, a ray from outside, head on into glass of index 1 (R = 0)\n"
+                 "    expected no reflected ray and 1 refracted ray\n    got      %d and %d\n"
+                 "    likely mistake: a reflected ray traced with R = 0 (it carries nothing)",
+                 (int)none[RAY_REFLECTED], (int)none[RAY_REFRACTED]);
+    scene_free(&desc);
+}
+
 /* ---- whole images ---------------------------------------------------------------------------- */
 
 static render_stats render_glass(const scene *desc, const glass_knobs *knobs, image *img, int w, int h)
@@ -734,6 +819,7 @@ static const graded_test tests[] = {
     GRADED(test_sphere_centre_undeviated, 3),
     GRADED(test_slab_returns_entry_direction, 3),
     GRADED(test_total_internal_reflection_rays, 2),
+    GRADED(test_glass_weights, 3),
     GRADED(test_furnace_glass_sphere, 2),
     GRADED(test_furnace_on_white, 0),
     GRADED(test_index_one_sphere_invisible, 2),

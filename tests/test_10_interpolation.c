@@ -11,7 +11,7 @@
 #include "10_interpolation/interpolate.h"
 #include "10_interpolation/shading_normal.h"
 #include "10_interpolation/scenes/sphere_mesh.h"
-#include "10_interpolation/sphere_uv.h"
+#include "sphere_uv.h"
 #include "10_interpolation/texture.h"
 #include "scene_build.h"
 #include "suite.h"

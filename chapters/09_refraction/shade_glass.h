@@ -1,32 +1,12 @@
 /* shade_glass.h - chapter 09: the shade function of the refraction stage.
  *
- * The lecture's "Recursive Shading Model" with both of its recursive terms:
- * a Glass shader (docs/scenes.md: <shader type="Glass"> with <refractiveIndex>
- * eta, 1.5 by default) reflects and transmits, and nothing else:
+ * A Glass shader (<refractiveIndex> eta, 1.5 by default) reflects and
+ * transmits, nothing else (README, "The glass shader"):
  *
  *     L = R L_reflected + (1 - R) L_transmitted
  *
- * L_reflected is traced along the mirror direction (chapter 08's
- * mirror_radiance, with k_m = R), L_transmitted along Snell's transmitted
- * direction T (refract.h), and R is Fresnel's reflectance (fresnel.h, exact
- * or Schlick by --fresnel).  Past the critical angle R = 1 and no
- * transmitted ray is cast.
- *
- * Entering or leaving is decided by the sign of d . n with n the GEOMETRIC
- * normal, which points out of the glass: d . n < 0, the ray comes from
- * outside (air, eta_i = 1, eta_t = eta); otherwise it is leaving, the normal
- * is flipped and the indices swapped (eta_i = eta, eta_t = 1).  The
- * directions are computed about the shading normal sp->n, which is turned
- * towards the incoming ray already (the flipped normal on the way out).  A
- * glass object must be closed, its normals pointing out (a sphere, a box, a
- * mesh wound counter-clockwise seen from outside), and no two glass objects
- * may touch: the renderer knows air and glass, not glass next to water.
- *
- * Nothing is absorbed inside: a path through glass loses only what is
- * reflected away at its surfaces, however long it runs inside.  Glass blocks
- * the shadow rays of chapter 06 like any surface (the light it focuses on the
- * floor is a caustic, which rays traced from the eye do not find).  Every
- * other shader is shaded by chapter 08 (shade_glazed).
+ * The geometric normal, pointing out of the glass, decides entering or leaving
+ * ("Entering and leaving"); every other shader is chapter 08's shade_glazed.
  */
 #ifndef CH09_SHADE_GLASS_H
 #define CH09_SHADE_GLASS_H

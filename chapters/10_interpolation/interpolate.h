@@ -1,19 +1,9 @@
 /* interpolate.h - chapter 10: values stored at vertices, read between them.
  *
- * The lecture's "Interpolation in ray tracing": "when values are stored at
- * vertices, use linear (barycentric) interpolation to define values across
- * the whole surface": during the triangle intersection compute the
- * barycentric coordinates (chapter 03 did: beta, gamma), then "use them to
- * average attributes given at vertices".  With alpha = 1 - beta - gamma the
- * value at the point a + beta (b - a) + gamma (c - a) is
+ * The lecture's barycentric interpolation of an attribute A given at the
+ * vertices a, b, c (README, "Values at vertices, read in between"):
  *
- *     A(beta, gamma) = alpha A_a + beta A_b + gamma A_c
- *
- * It matches the values at the vertices (beta = gamma = 0 gives A_a), is
- * continuous across an edge that two triangles share (on the edge only its
- * two vertices' values count), and is linear over each triangle.  The
- * attributes of this chapter are the OBJ file's per-vertex normals (vn) and
- * texture coordinates (vt).
+ *     A(beta, gamma) = (1 - beta - gamma) A_a + beta A_b + gamma A_c
  */
 #ifndef CH10_INTERPOLATE_H
 #define CH10_INTERPOLATE_H

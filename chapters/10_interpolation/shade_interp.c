@@ -3,15 +3,8 @@
 
 #include "04_many_shapes/flat_shading.h"
 #include "10_interpolation/interpolate.h"
-#include "10_interpolation/sphere_uv.h"
 #include "explain.h"
-
-/* The shading of the chapters before this one: chapter 09's glass, which
- * shades every other shader by chapter 08's glazed surface. */
-static color shade_earlier(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
-{
-    return shade_glass(tr, sp, depth, rays);
-}
+#include "sphere_uv.h"
 
 static const interp_knobs *knobs_of(const tracer *tr)
 {
@@ -73,13 +66,13 @@ color shade_interp(const tracer *tr, const shading_point *sp, int depth, uint64_
     if (ip.smooth && mirrors && knobs->below == BELOW_FLIP) /* keep the mirror ray above the surface */
         ip.sp.n = mirror_above(ip.sp.n, sp->n, sp->v);
     if (shader->texture < 0 || !ip.has_uv)
-        return shade_earlier(tr, &ip.sp, depth, rays);
+        return shade_glass(tr, &ip.sp, depth, rays);
     /* k_d from the texture: the earlier shading is given the point's shader with that k_d */
     scene_shader textured = *shader;
     textured.diffuse_color = texture_lookup(&tr->desc->textures[shader->texture], ip.uv,
                                             (texture_filter)knobs->filter);
     EXPLAIN(explain_texel(ip.uv.u, ip.uv.v, texture_filter_names[knobs->filter], textured.diffuse_color));
     ip.sp.shader = &textured;
-    return shade_earlier(tr, &ip.sp, depth, rays);
+    return shade_glass(tr, &ip.sp, depth, rays);
 }
 /* end snippet */

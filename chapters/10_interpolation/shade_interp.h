@@ -1,19 +1,10 @@
 /* shade_interp.h - chapter 10: the shade function of the interpolation stage.
  *
- * Chapter 10 changes what the shading is given, not how it shades: at a
- * point of a mesh face it replaces
- *   - the shading normal n by the interpolated vertex normal (shading_normal.h),
- *   - a textured shader's diffuse colour k_d by the texture's colour at the
- *     point's texture coordinates (texture.h): the interpolated vt of a mesh
- *     face, the course's (u, v) of a sphere (sphere_uv.h),
- * and then calls the shading of chapters 05-09 (chapter 09's shade_glass,
- * which calls chapter 08's glazed surface, which calls chapter 07's
- * Blinn-Phong) with them.  RGBNormals shows the interpolated normal.
- *
- * A surface without the attribute keeps what it had: a face with a corner
- * without vn is shaded flat with the geometric normal; a textured shader on
- * a surface without texture coordinates (a Box, a Triangle, a face without
- * vt) keeps its diffuseColor.
+ * At a point of a mesh face the shading normal n becomes the interpolated
+ * vertex normal, and a textured shader's k_d the texture's colour at the
+ * point's (u, v) (a mesh's interpolated vt, a sphere's own); then the shading
+ * of chapters 05-09 runs with them (README, "The shade function").  A surface
+ * without the attribute keeps what it had.
  */
 #ifndef CH10_SHADE_INTERP_H
 #define CH10_SHADE_INTERP_H

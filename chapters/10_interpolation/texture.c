@@ -1,8 +1,7 @@
 /* texture.c - chapter 10: a texture's colour at texture coordinates (u, v). */
 #include "10_interpolation/texture.h"
 #include "exercise.h"
-
-#include <math.h>
+#include "texture_space.h"
 
 const char *const texture_filter_names[] = {"nearest", "bilinear", NULL};
 
@@ -18,21 +17,6 @@ int texel_index(texture_kind kind, long long i, int n)
     return 0;
 }
 /* end snippet */
-
-/* The continuous texel coordinates of (u, v): x = u W across from the left
- * edge, y = (1 - v) H down from the top (v counts up from the bottom), in
- * texel widths; texel (x, y)'s centre is at (x, y).  Beyond +-2^40 texels
- * (no index means anything there) a coordinate is held at +-2^40, so that
- * it converts to an integer; NaN reads 0. */
-#define TEXEL_COORDINATE_LIMIT ((real)1099511627776.0) /* 2^40 */
-
-static real texel_coordinate(real s, int n)
-{
-    real x = s * (real)n;
-    if (!(x == x))
-        return 0;
-    return real_fmin(real_fmax(x, -TEXEL_COORDINATE_LIMIT), TEXEL_COORDINATE_LIMIT);
-}
 
 /* snippet: texture_nearest */
 color texture_nearest(const scene_texture *tex, mesh_uv uv)

@@ -76,5 +76,6 @@ SEEDED_CHECKS(SEEDED(test_refract_normal_incidence, seeded_refract),
               SEEDED(test_sphere_centre_undeviated, seeded_glass),
               SEEDED(test_slab_returns_entry_direction, seeded_glass),
               SEEDED(test_total_internal_reflection_rays, seeded_glass),
+              SEEDED(test_glass_weights, seeded_glass),
               SEEDED(test_furnace_glass_sphere, seeded_glass),
               SEEDED(test_index_one_sphere_invisible, seeded_glass), SEEDED(test_rays_only_where_needed, seeded_glass))

@@ -1,5 +1,5 @@
-/* sphere_uv.c - chapter 10: the course's texture coordinates of a sphere. */
-#include "10_interpolation/sphere_uv.h"
+/* sphere_uv.c - the course's texture coordinates of a sphere. */
+#include "sphere_uv.h"
 
 #include <math.h>
 
