@@ -5,7 +5,7 @@
 #include <stdlib.h>
 
 #include "01_camera_rays/pixel.h"
-#include "04_many_shapes/scene_surfaces.h"
+#include "04_many_shapes/surface.h"
 #include "04_many_shapes/shape_knobs.h"
 #include "05_lambert/scenes/shading_scene.h"
 #include "renderer.h"
