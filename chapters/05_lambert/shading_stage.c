@@ -19,8 +19,9 @@ int hit_query_linear(const surface_list *list, const scene *desc, hit_query *q, 
     return 0;
 }
 
-void shading_release(shading_view *view)
+void shading_release(void *prepared)
 {
+    shading_view *view = prepared;
     if (!view)
         return;
     if (view->query.release)
@@ -66,15 +67,11 @@ color shading_sample(const void *view, real u, real v, uint64_t *rays)
 }
 /* end snippet */
 
-/* ---- the renderer: the stage is prepare's context (the knobs of chapters
- * 02-03 are chosen through shape_knobs.h). */
-
+/* renderer.h's prepare: the stage is its context, --sphere and --triangle are shape_knobs.h's. */
 static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
     return shading_prepare(context, desc, chosen_sphere_formula(), chosen_triangle_test(), err, err_size);
 }
-
-static void release(void *view) { shading_release(view); }
 
 int shading_main(const shading_stage *stage, int argc, char **argv)
 {
@@ -99,7 +96,7 @@ int shading_main(const shading_stage *stage, int argc, char **argv)
         .prepare = prepare,
         .context = stage,
         .sample = shading_sample,
-        .release = release,
+        .release = shading_release,
         .pixel_to_image = pixel_to_image, /* chapter 01's: the student's own mapping */
     };
     return renderer_main(&r, argc, argv);
