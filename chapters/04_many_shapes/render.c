@@ -31,7 +31,7 @@ static void *prepare(const void *context, const scene *desc, char *err, size_t e
     }
     st->desc = desc;
     surface_list_init(&st->list, chosen_sphere_formula(), chosen_triangle_test());
-    if (camera_from_scene(&st->cam, desc, err, err_size) && surface_list_from_scene(&st->list, desc, err, err_size) == 0)
+    if (camera_from_scene(&st->cam, desc, err, err_size) && !surface_list_from_scene(&st->list, desc, err, err_size))
         return st;
     release(st);
     return NULL;

@@ -12,9 +12,7 @@
 
 int hit_query_linear(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size)
 {
-    (void)desc;
-    (void)err;
-    (void)err_size;
+    (void)desc, (void)err, (void)err_size;
     *q = (hit_query){.closest_hit = closest_hit_linear, .accel = list};
     return 0;
 }
