@@ -1,15 +1,10 @@
 /* surface_shader.c - the shader a surface of a scene is shaded with. */
 #include "surface_shader.h"
 
+#include "scene_build.h"
+
 const scene_shader *surface_shader(const scene *desc, int shader)
 {
-    static const scene_shader white = {
-        .kind = SHADER_LAMBERTIAN,
-        .diffuse_color = {1, 1, 1},
-        .specular_color = {1, 1, 1},
-        .exponent = 1,
-        .refractive_index = (real)1.5,
-        .texture = -1,
-    };
+    static const scene_shader white = SCENE_SHADER_DEFAULTS(SHADER_LAMBERTIAN);
     return shader >= 0 ? &desc->shaders[shader] : &white;
 }
