@@ -12,7 +12,6 @@
 #include "options.h"
 #include "scene.h"
 
-/* snippet: hit_query */
 /* The closest-hit query of a prepared scene and what it owns. */
 typedef struct {
     closest_hit_fn closest_hit;
@@ -25,7 +24,6 @@ typedef struct {
  * Returns 0, or -1 with "path: problem" in err. */
 typedef int (*build_query_fn)(const surface_list *list, const scene *desc, hit_query *q, char *err,
                               size_t err_size);
-/* end snippet */
 
 /* Chapter 04's linear scan over the list (surfaces_intersect): a build_query_fn. */
 int hit_query_linear(const surface_list *list, const scene *desc, hit_query *q, char *err, size_t err_size);
