@@ -37,12 +37,5 @@ int scene_add_texture(scene *s, scene_texture texture)
 
 scene_shader scene_default_shader(shader_kind kind)
 {
-    return (scene_shader){
-        .kind = kind,
-        .diffuse_color = {1, 1, 1},
-        .specular_color = {1, 1, 1},
-        .exponent = 1,
-        .refractive_index = (real)1.5,
-        .texture = -1,
-    };
+    return (scene_shader)SCENE_SHADER_DEFAULTS(kind);
 }

@@ -19,5 +19,9 @@ int scene_add_texture(scene *s, scene_texture texture);
 
 /* A shader with the defaults of docs/scenes.md: white, exponent 1, eta 1.5, no texture. */
 scene_shader scene_default_shader(shader_kind kind);
+/* The same as an initializer, for a constant. */
+#define SCENE_SHADER_DEFAULTS(k)                                                                                   \
+    {.kind = (k), .diffuse_color = {1, 1, 1}, .specular_color = {1, 1, 1}, .exponent = 1,                        \
+     .refractive_index = (real)1.5, .texture = -1}
 
 #endif

@@ -32,7 +32,7 @@
 
 #include "01_camera_rays/camera.h"
 #include "04_many_shapes/closest_hit.h"
-#include "04_many_shapes/scene_surfaces.h"
+#include "04_many_shapes/surface.h"
 #include "05_lambert/scenes/shading_scene.h"
 #include "08_mirrors/scenes/mirror_scene.h"
 #include "09_refraction/scenes/glass_scene.h"

@@ -8,11 +8,10 @@
 #include <stb_image.h>
 
 #include "01_camera_rays/camera.h"
-#include "04_many_shapes/box.h"
 #include "04_many_shapes/closest_hit.h"
 #include "04_many_shapes/flat_shading.h"
-#include "04_many_shapes/scene_surfaces.h"
 #include "display.h"
+#include "scene_shapes.h"
 #include "scene_build.h"
 #include "suite.h"
 
@@ -259,11 +258,11 @@ static void test_box_triangles_outward(void **state)
     const vec3 lo = {-1, -2, -3}, hi = {2, 3, 4};
     const vec3 centre = vec3_scale(vec3_add(lo, hi), 0.5);
     const vec3 size = vec3_sub(hi, lo);
-    triangle faces[BOX_TRIANGLES];
+    vec3 faces[BOX_TRIANGLES][3];
     box_triangles(lo, hi, faces);
     real area[3][2] = {{0}}; /* per axis and side */
     for (int f = 0; f < BOX_TRIANGLES; f++) {
-        const triangle *tri = &faces[f];
+        const triangle *tri = &(triangle){faces[f][0], faces[f][1], faces[f][2]};
         vec3 n = triangle_normal(tri);
         /* the normal is a unit axis vector: one component is +-1 */
         int axis = real_abs(n.x) > (real)0.5 ? 0 : real_abs(n.y) > (real)0.5 ? 1 : 2;
@@ -464,10 +463,10 @@ static void test_rays_from_a_surface(void **state)
         for (int g = 0; g < 2; g++) {
             surface_list list;
             surface_list_init(&list, formulas[f], tests_of_triangles[g]);
-            triangle faces[BOX_TRIANGLES];
+            vec3 faces[BOX_TRIANGLES][3];
             box_triangles(vec3_make(-1, -1, -1), vec3_make(1, 1, 1), faces); /* the cube [-1, 1]^3 */
             for (int k = 0; k < BOX_TRIANGLES; k++)
-                surface_list_add_triangle(&list, faces[k], 0, 0);
+                surface_list_add_triangle(&list, (triangle){faces[k][0], faces[k][1], faces[k][2]}, 0, 0);
             surface_list_add_sphere(&list, (sphere){{5, 0.25, -0.5}, 2}, 1, 1); /* x from 3 to 7 */
             const char *why = "is the window open at t_min, so that the start point (t = 0) is refused?";
             /* On the box's face x = 1, at (1, 0.25, -0.5): inwards the face x = -1 at t = 2. */

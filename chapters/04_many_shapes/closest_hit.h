@@ -1,11 +1,5 @@
-/* closest_hit.h - chapter 04: the first surface along a ray.
- *
- * The lecture's "Intersection against many shapes": loop over the list,
- * ignore the surfaces the ray misses, and keep the closest hit seen so far
- * by shrinking the end of the ray segment to it.  This is linear in the
- * number of surfaces; chapter 11's grid replaces it behind the same
- * signature, so a renderer swaps the one for the other in one line.
- */
+/* closest_hit.h - chapter 04: the first surface along a ray, the lecture's
+ * "Intersection against many shapes" (README, "The closest hit"). */
 #ifndef CH04_CLOSEST_HIT_H
 #define CH04_CLOSEST_HIT_H
 

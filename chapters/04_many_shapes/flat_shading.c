@@ -3,13 +3,12 @@
 
 #include "04_many_shapes/closest_hit.h"
 #include "explain.h"
+#include "surface_shader.h"
 
 /* snippet: flat_color */
 color flat_color(const scene *desc, const hit_record *hit)
 {
-    if (hit->shader < 0) /* docs/scenes.md: a surface without a shader is white */
-        return color_make(1, 1, 1);
-    const scene_shader *shader = &desc->shaders[hit->shader];
+    const scene_shader *shader = surface_shader(desc, hit->shader); /* none: white Lambertian */
     if (shader->kind == SHADER_RGB_NORMALS) { /* (n + 1) / 2: each component from [-1, 1] to [0, 1] */
         vec3 n = hit->normal;
         return color_make((n.x + 1) / 2, (n.y + 1) / 2, (n.z + 1) / 2);

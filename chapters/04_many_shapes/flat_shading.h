@@ -1,17 +1,5 @@
-/* flat_shading.h - chapter 04: one flat colour per surface.
- *
- * Before any light (chapter 05), the lecture's first scene image colours a
- * pixel by the surface its ray hits first:
- *
- *     Scene.trace(ray, tMin, tMax)
- *         surface, t = surfs.intersect(ray, tMin, tMax)
- *         if surface is not null: return surface.color()
- *         else return backgroundColor
- *
- * surface.color() is looked up in the scene description by the hit's shader
- * index: geometry (the surface list) and shading (the scene's shaders) stay
- * apart, and chapter 05 changes only this lookup.
- */
+/* flat_shading.h - chapter 04: one flat colour per surface, the lecture's
+ * first Scene.trace (README, "Flat colours"). */
 #ifndef CH04_FLAT_SHADING_H
 #define CH04_FLAT_SHADING_H
 

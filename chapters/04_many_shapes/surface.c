@@ -6,6 +6,7 @@
 #include "03_triangle/triangle_explain.h"
 #include "explain.h"
 #include "grow.h"
+#include "scene_shapes.h"
 
 void surface_list_init(surface_list *list, sphere_formula formula, triangle_test test)
 {
@@ -15,8 +16,7 @@ void surface_list_init(surface_list *list, sphere_formula formula, triangle_test
 void surface_list_free(surface_list *list)
 {
     free(list->items);
-    list->items = NULL;
-    list->n = list->capacity = 0;
+    *list = (surface_list){.sphere_formula = list->sphere_formula, .triangle_test = list->triangle_test};
 }
 
 static int add(surface_list *list, surface s)
@@ -35,6 +35,21 @@ int surface_list_add_sphere(surface_list *list, sphere s, int shader, int source
 int surface_list_add_triangle(surface_list *list, triangle tri, int shader, int source)
 {
     return add(list, (surface){.kind = SHAPE_TRIANGLE, .triangle = tri, .shader = shader, .source = source});
+}
+
+/* Appends one shape of the scene (scene_shapes.h) to the list: its index, or -1. */
+static int add_shape(void *list, const scene_shape *s)
+{
+    int i = s->is_sphere ? surface_list_add_sphere(list, (sphere){s->center, s->radius}, s->shader, s->source)
+                         : surface_list_add_triangle(list, (triangle){s->v[0], s->v[1], s->v[2]}, s->shader, s->source);
+    if (i >= 0)
+        ((surface_list *)list)->items[i].face = s->face;
+    return i;
+}
+
+int surface_list_from_scene(surface_list *list, const scene *desc, char *err, size_t err_size)
+{
+    return scene_shapes(desc, add_shape, list, err, err_size);
 }
 
 /* snippet: surface_intersect */
@@ -64,15 +79,7 @@ bool surface_intersect(const surface *s, const surface_list *list, ray r, real t
 
 hit_record surface_hit_record(const surface *s, ray r, real t, vec3 n, real beta, real gamma)
 {
-    return (hit_record){
-        .t = t,
-        .point = ray_at(r, t),
-        .normal = n,
-        .surface = -1, /* the list's loop fills it in */
-        .source = s->source,
-        .face = s->face,
-        .shader = s->shader,
-        .beta = beta,
-        .gamma = gamma,
-    };
+    /* .surface: the list's loop fills it in */
+    return (hit_record){.t = t, .point = ray_at(r, t), .normal = n, .surface = -1, .source = s->source,
+                        .face = s->face, .shader = s->shader, .beta = beta, .gamma = gamma};
 }

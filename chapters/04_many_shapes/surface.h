@@ -1,22 +1,20 @@
-/* surface.h - chapter 04: the list of surfaces a ray is tested against.
+/* surface.h - chapter 04: the lecture's surfaceList, the surfaces a ray is tested against.
  *
- * The lecture's "surfaceList": every sphere and every triangle of the scene,
- * side by side.  A Box of the scene file becomes 12 triangles and a Mesh its
- * faces, so the list knows only the two shapes of chapters 02 and 03.
- *
- * Geometry knows nothing of shading: a surface carries its shape and the
- * index of its scene shader, and the renderer looks the colour up, so that
- * the shading chapters change the lookup, not the list.  The list also carries the accuracy knobs of the two
- * intersection tests, so that every call uses the same ones.
+ * Spheres and triangles side by side (a Box or a Mesh of the scene file is
+ * its triangles), each with its scene shader's index; the list carries the
+ * --sphere and --triangle knobs that every intersection uses (README,
+ * "The surface list").
  */
 #ifndef CH04_SURFACE_H
 #define CH04_SURFACE_H
 
 #include <stdbool.h>
+#include <stddef.h>
 
 #include "02_sphere/sphere.h"
 #include "03_triangle/triangle.h"
 #include "ray.h"
+#include "scene.h"
 
 typedef enum { SHAPE_SPHERE, SHAPE_TRIANGLE } shape_kind;
 
@@ -55,10 +53,8 @@ typedef struct {
 /* end snippet */
 
 /* snippet: default_test */
-/* The triangle test of every renderer from this chapter on, unless
- * --triangle says otherwise: the watertight one, because Cramer's rule lets
- * eye rays through the shared edge of two triangles (a square floor of two
- * triangles shows background pixels along its diagonal; see the README). */
+/* The triangle test from this chapter on: Cramer's rule lets eye rays through
+ * the shared edge of two triangles (README, "Cracks in an ordinary image"). */
 #define TRIANGLE_TEST_DEFAULT TRIANGLE_WATERTIGHT
 /* end snippet */
 
@@ -70,14 +66,17 @@ void surface_list_free(surface_list *list);
 int surface_list_add_sphere(surface_list *list, sphere s, int shader, int source);
 int surface_list_add_triangle(surface_list *list, triangle tri, int shader, int source);
 
+/* Appends the shapes of every surface of the scene (scene_shapes.h), in the
+ * file's order.  Returns 0, or -1 with "path:line: problem" in err. */
+int surface_list_from_scene(surface_list *list, const scene *desc, char *err, size_t err_size);
+
 /* One surface against the ray, with the list's knobs: true when it is hit at
  * some t in (t_min, t_max); then *hit holds everything but hit->surface,
  * which only the list knows.  *hit is left unchanged on a miss. */
 bool surface_intersect(const surface *s, const surface_list *list, ray r, real t_min, real t_max, hit_record *hit);
 
-/* The record surface_intersect fills in for a hit of s at t, with the unit
- * normal n there (and a triangle's beta and gamma; 0 for a sphere), so that a
- * caller that finds the hit another way (chapter 11's lab) records it alike. */
+/* The record of a hit of s at t with unit normal n (beta, gamma: 0 for a
+ * sphere), for surface_intersect and for a caller that finds hits another way. */
 hit_record surface_hit_record(const surface *s, ray r, real t, vec3 n, real beta, real gamma);
 
 #endif

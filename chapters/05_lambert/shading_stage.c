@@ -5,12 +5,13 @@
 #include <stdlib.h>
 
 #include "01_camera_rays/pixel.h"
-#include "04_many_shapes/scene_surfaces.h"
+#include "04_many_shapes/surface.h"
 #include "05_lambert/scenes/shading_scene.h"
 #include "renderer.h"
 
-void shading_release(shading_view *view)
+void shading_release(void *prepared)
 {
+    shading_view *view = prepared;
     if (!view)
         return;
     if (view->query.release)
@@ -57,16 +58,13 @@ color shading_sample(const void *view, real u, real v, uint64_t *rays)
 }
 /* end snippet */
 
-/* ---- the renderer: the stage, with the values of every knob, is prepare's context. */
-
+/* renderer.h's prepare: the stage, with the values of every knob, is its context. */
 static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
     const shading_stage *stage = context;
     return shading_prepare(stage, desc, chosen_sphere_formula(&stage->shapes), chosen_triangle_test(&stage->shapes),
                            err, err_size);
 }
-
-static void release(void *view) { shading_release(view); }
 
 int shading_main(const shading_stage *stage, int argc, char **argv)
 {
@@ -93,7 +91,7 @@ int shading_main(const shading_stage *stage, int argc, char **argv)
         .prepare = prepare,
         .context = &st,
         .sample = shading_sample,
-        .release = release,
+        .release = shading_release,
         .pixel_to_image = pixel_to_image, /* chapter 01's: the student's own mapping */
     };
     return renderer_main(&r, argc, argv);

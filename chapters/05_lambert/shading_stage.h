@@ -1,13 +1,6 @@
-/* shading_stage.h - chapter 05: the renderer that every shading chapter shares.
- *
- * Chapters 05-11 render the same way and differ in what they shade with: the
- * camera (chapter 01) casts one eye ray per sample, the tracer (tracer.h)
- * finds its closest hit and calls the stage's shade function.  A chapter's
- * render.c describes its stage in a `shading_stage` (name, knobs, shade
- * function, and optionally how the closest-hit query is built) and calls
- * shading_main(); the camera, the surface list, the lights and the knobs of
- * chapters 02-04 (--sphere, --triangle) are set up here, once.
- */
+/* shading_stage.h - chapter 05: the renderer that chapters 05-11 share: a
+ * render.c fills a shading_stage and calls shading_main() (README, "One
+ * renderer for every shading chapter"). */
 #ifndef CH05_SHADING_STAGE_H
 #define CH05_SHADING_STAGE_H
 
@@ -20,7 +13,6 @@
 #include "options.h"
 #include "scene.h"
 
-/* snippet: hit_query */
 /* The closest-hit query of a prepared scene and what it owns. */
 typedef struct {
     closest_hit_fn closest_hit;
@@ -33,7 +25,6 @@ typedef struct {
  * the knobs the stage gives it.  Returns 0, or -1 with "path: problem" in err. */
 typedef int (*build_query_fn)(const void *knobs, const surface_list *list, const scene *desc, hit_query *q,
                               char *err, size_t err_size);
-/* end snippet */
 
 /* snippet: shading_stage */
 typedef struct {
@@ -64,14 +55,12 @@ typedef struct {
     tracer tr;
 } shading_view;
 
-/* Prepares desc for rendering with stage's shading and the given chapter
- * 02/03 knobs.  NULL with "path:line: problem" in err when it cannot be
- * rendered.  desc must outlive the view. */
+/* The view of desc (which must outlive it) with the stage's shading and the
+ * given --sphere and --triangle; NULL with "path:line: problem" in err. */
 shading_view *shading_prepare(const shading_stage *stage, const scene *desc, sphere_formula formula,
                               triangle_test test, char *err, size_t err_size);
-/* A sample_fn (render_loop.h): the eye ray through (u, v), counted as
- * RAY_EYE, traced from t = 0 (the eye) on. */
+/* A sample_fn (render_loop.h): the eye ray through (u, v), counted as RAY_EYE. */
 color shading_sample(const void *view, real u, real v, uint64_t *rays);
-void shading_release(shading_view *view);
+void shading_release(void *view);
 
 #endif

@@ -3,6 +3,7 @@
 
 #include "04_many_shapes/closest_hit.h"
 #include "explain.h"
+#include "surface_shader.h"
 
 bool closest_hit_linear(const void *accel, ray r, real t_min, real t_max, hit_record *hit)
 {
@@ -17,21 +18,6 @@ vec3 normal_towards_viewer(vec3 n, vec3 d)
 }
 /* end snippet */
 
-const scene_shader *hit_shader(const scene *desc, const hit_record *hit)
-{
-    /* docs/scenes.md: a surface without a shader is white Lambertian (the
-     * defaults of scene_default_shader). */
-    static const scene_shader white = {
-        .kind = SHADER_LAMBERTIAN,
-        .diffuse_color = {1, 1, 1},
-        .specular_color = {1, 1, 1},
-        .exponent = 1,
-        .refractive_index = (real)1.5,
-        .texture = -1,
-    };
-    return hit->shader >= 0 ? &desc->shaders[hit->shader] : &white;
-}
-
 /* snippet: trace */
 color trace(const tracer *tr, ray r, real t_min, real t_max, int depth, uint64_t *rays)
 {
@@ -41,7 +27,7 @@ color trace(const tracer *tr, ray r, real t_min, real t_max, int depth, uint64_t
         EXPLAIN(explain_miss(tr->desc->back_color); explain_radiance(tr->desc->back_color));
         return tr->desc->back_color;
     }
-    shading_point sp = {.r = r, .hit = hit, .shader = hit_shader(tr->desc, &hit)};
+    shading_point sp = {.r = r, .hit = hit, .shader = surface_shader(tr->desc, hit.shader)};
     sp.v = vec3_neg(vec3_normalize(r.d));           /* v = -normalize(ray.direction) */
     sp.n = normal_towards_viewer(hit.normal, r.d); /* the normal, turned to face v */
     EXPLAIN(explain_closest(hit.surface, hit.source, hit.t, hit.point); explain_shading(hit.normal, sp.n, sp.v, sp.shader));

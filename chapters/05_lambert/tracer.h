@@ -1,26 +1,6 @@
-/* tracer.h - chapter 05: what every shading stage (05-11) traces with.
- *
- * The lecture's Scene.trace of the "image so far" slides:
- *
- *     Scene.trace(Ray ray, tMin, tMax)
- *         surface, t = hit(ray, tMin, tMax)
- *         if surface is not null
- *             point = ray.evaluate(t); normal = surface.getNormal(point)
- *             return surface.shade(ray, point, normal, light)
- *         else return backgroundColor
- *
- * A `tracer` holds the pieces that sentence names: the question "what does
- * this ray hit first?" (one function value and the structure it searches),
- * the scene description (shaders, lights, backColor, ambient), the shade
- * function of the stage, and the stage's knobs.  Every shading chapter
- * changes one of these pieces and nothing else:
- *   05 Lambert, 06 shadows, 07 Blinn-Phong: the shade function and its knobs;
- *   08 mirrors, 09 refraction: shade functions that call trace() again, one
- *      level deeper (depth);
- *   10 interpolation: a shade function that replaces the shading normal n and
- *      then calls the earlier shade;
- *   11 the grid: the closest-hit function and its structure, one assignment.
- * No shading code calls chapter 04's surfaces_intersect by name.
+/* tracer.h - chapter 05: what every shading stage (05-11) traces with: the
+ * lecture's Scene.trace over any closest-hit query, and what a shade function
+ * is given (README, "Shading a hit"; "How the later chapters plug in").
  */
 #ifndef CH05_TRACER_H
 #define CH05_TRACER_H
@@ -54,17 +34,16 @@ typedef struct {
     vec3 n;         /* the SHADING normal: unit, turned towards the viewer (n . v >= 0);
                      * the geometric one here, an interpolated one from chapter 10 on */
     vec3 v;         /* unit vector from the point towards the viewer: -normalize(d) */
-    const scene_shader *shader; /* the point's shader, looked up once by trace() (hit_shader);
+    const scene_shader *shader; /* the point's shader, looked up once by trace() (surface_shader.h);
                                  * chapter 10 hands on a copy whose k_d is the texture's */
 } shading_point;
 /* end snippet */
 
 typedef struct tracer tracer;
 
-/* The stage's shading: the radiance leaving sp's point towards the viewer.
- * depth is the number of bounces that led here (0 for an eye ray); `rays`
- * points at the RAY_KINDS counters of render_loop.h, and a shade function adds
- * every ray it casts (++rays[RAY_SHADOW] per shadow ray). */
+/* The stage's shading: the radiance leaving sp's point towards the viewer;
+ * depth: the bounces that led here (0 for an eye ray); a shade function adds
+ * every ray it casts to the RAY_KINDS counters `rays` (render_loop.h). */
 typedef color (*shade_fn)(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays);
 
 /* The knobs of the stages from 06 on, each its chapter's struct (NULL: the stage's defaults). */
@@ -88,18 +67,12 @@ struct tracer {
 };
 /* end snippet */
 
-/* The lecture's Scene.trace: the closest hit of r in (t_min, t_max) shaded
- * by tr->shade, or the scene's backColor when r hits nothing.  trace() does
- * not count r: its caller counts the ray by its kind (eye, reflected, ...). */
+/* The closest hit of r in (t_min, t_max) shaded by tr->shade, or the scene's
+ * backColor when r hits nothing.  r is not counted: its caller counts it by its kind. */
 color trace(const tracer *tr, ray r, real t_min, real t_max, int depth, uint64_t *rays);
 
 /* The shading normal of a geometric unit normal n seen along direction d:
- * n itself when it faces the viewer (n . d < 0), else -n.  So the back of a
- * triangle and the inside of a sphere are shaded like a front side. */
+ * n itself when it faces the viewer (n . d < 0), else -n. */
 vec3 normal_towards_viewer(vec3 n, vec3 d);
-
-/* The scene shader of a hit; a surface without a shader is white Lambertian
- * (docs/scenes.md). */
-const scene_shader *hit_shader(const scene *desc, const hit_record *hit);
 
 #endif
