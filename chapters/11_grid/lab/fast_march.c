@@ -13,8 +13,8 @@
 #define MAILBOX 32
 
 /* A cell's entries are sifted this many at a time, by the ray's span in the
- * cell (cull_span) when the cell lists at least SIFT_FROM of them; fewer go
- * straight to passes_box. */
+ * cell (cull_span) when the cell lists at least SIFT_FROM of them; fewer are
+ * tested without culling. */
 #define BATCH 32
 #define SIFT_FROM 8
 
@@ -253,9 +253,10 @@ static inline void consider(const fast_grid_entry *entry, const cull_frame *f, b
  * batches of up to BATCH entries: first the entries whose boxes are not
  * beside the ray's span, gathered without branches (which entries pass is
  * different in every cell: a branch on it is often guessed wrong); then
- * each of those.  A cell of fewer entries takes them one by one, and makes
- * the cull frame only at the first not tested yet (a floor's triangles are
- * listed in every cell under it and tested once).  A cell with a grid of
+ * each of those.  A cell of fewer entries tests them one by one without
+ * culling: most are large surfaces (a floor's triangles are listed in every
+ * cell under it), culled again in every cell until tested once, where a
+ * test settles them for the rest of the ray.  A cell with a grid of
  * its own (two levels) lists that grid alone: the ray marches through it. */
 static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, search *s, const ray_frame *rf,
                               march_state *ms)
@@ -270,17 +271,8 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
     }
     const bool cull = g->cull, use_mailbox = g->mailbox;
     if (!cull || last - first < SIFT_FROM) {
-        bool framed = !cull;
-        for (uint32_t e = first; e < last; e++) {
-            const uint32_t k = refs[e].surface;
-            if (use_mailbox && ms->mailbox[k % MAILBOX] == k)
-                continue;
-            if (!framed) {
-                cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->cull_slack);
-                framed = true;
-            }
-            consider(&refs[e], f, cull, use_mailbox, s, ms);
-        }
+        for (uint32_t e = first; e < last; e++)
+            consider(&refs[e], f, false, use_mailbox, s, ms);
         return;
     }
     uint64_t span_lo, span_hi;
