@@ -26,6 +26,7 @@ typedef struct {
     real enter[3], leave[3], unit[3];
     int near[3], far[3];
     real near_top[3], far_top[3]; /* 0 or FAST_GRID_BOX_STEPS unit_a: the frame's own sides, near and far */
+    bool started;                 /* cull_start has filled in the fields above */
 } cull_frame;
 
 static inline bool passes_box(const uint8_t box[8], const cull_frame *f, real t_min, real upper)
@@ -44,7 +45,7 @@ static inline bool passes_box(const uint8_t box[8], const cull_frame *f, real t_
 
 /* What the cull frame of every cell of g has for this ray: the steps'
  * length in t, the sides the ray enters and leaves by.  Once per grid and
- * ray. */
+ * ray, at the first cell that culls (many rays meet none). */
 static inline void cull_start(cull_frame *f, const fast_grid *g, const int near[3], const int far[3],
                               const real inv_d[3])
 {
@@ -55,6 +56,7 @@ static inline void cull_start(cull_frame *f, const fast_grid *g, const int near[
         f->near_top[a] = (near[a] < 3 ? 0 : FAST_GRID_BOX_STEPS) * f->unit[a];
         f->far_top[a] = (far[a] < 3 ? 0 : FAST_GRID_BOX_STEPS) * f->unit[a];
     }
+    f->started = true;
 }
 
 /* The cull frame of cell i: its base_a, widened by the slack, for passes_box. */

@@ -276,6 +276,8 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
         return;
     }
     uint64_t span_lo, span_hi;
+    if (!f->started)
+        cull_start(f, g, rf->near, rf->far, rf->inv_d);
     cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->cull_slack);
     cull_span(f, g, m->i, rf->p, rf->d, rf->reach, rf->d_max, s->t_min, s->upper, &span_lo, &span_hi);
     for (uint32_t e = first; e < last;) {
@@ -303,8 +305,7 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
     if (g->n_cells == 0 || !enter(g, rf, s->t_min, s->upper, &m))
         return;
     cull_frame f;
-    if (g->cull)
-        cull_start(&f, g, rf->near, rf->far, rf->inv_d);
+    f.started = false;
     for (;;) {
         ms->cells++;
         visit_cell(g, &m, &f, s, rf, ms);
