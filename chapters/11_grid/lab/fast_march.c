@@ -147,8 +147,6 @@ typedef struct {
     real inv_d[3];      /* 1 / d_a; 0 where d_a is +0, -0 or so small that 1 / d_a overflows */
     bool parallel[3];   /* those axes: the ray never crosses a boundary of theirs */
     real slack[3];      /* the rounding of a computed crossing of axis a, in t; 0 where inv_d_a = 0 */
-    real cull_slack[3]; /* the same, infinite where inv_d_a = 0 (culling then lets every box pass) */
-    int near[3], far[3];
     real reach, d_max;
     long octant;        /* the octant of d, as g->empty counts it (an axis the ray never crosses may take either) */
 } ray_frame;
@@ -168,13 +166,10 @@ static inline void frame_of(ray_frame *f, const fast_grid *g, ray r)
         f->p[a] = p[a];
         f->d[a] = d[a];
         f->inv_d[a] = 1 / d[a];
-        f->near[a] = d[a] < 0 ? 3 + a : a;
-        f->far[a] = d[a] < 0 ? a : 3 + a;
         f->parallel[a] = !isfinite(f->inv_d[a]); /* d_a = +0 or -0, or tiny */
         if (f->parallel[a])
             f->inv_d[a] = 0;
         f->slack[a] = f->reach * real_abs(f->inv_d[a]);
-        f->cull_slack[a] = f->inv_d[a] != 0 ? f->slack[a] : REAL_INFINITY;
     }
     f->octant = (f->inv_d[0] < 0) | (f->inv_d[1] < 0) << 1 | (f->inv_d[2] < 0) << 2;
 }
@@ -277,8 +272,8 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
     }
     uint64_t span_lo, span_hi;
     if (!f->started)
-        cull_start(f, g, rf->near, rf->far, rf->inv_d);
-    cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->cull_slack);
+        cull_start(f, g, rf->d, rf->inv_d, rf->slack);
+    cull_cell(f, g, m->i, rf->p, rf->inv_d);
     cull_span(f, g, m->i, rf->p, rf->d, rf->reach, rf->d_max, s->t_min, s->upper, &span_lo, &span_hi);
     for (uint32_t e = first; e < last;) {
         const uint32_t end = last - e > BATCH ? e + BATCH : last, batch = end - e;
