@@ -26,6 +26,8 @@ typedef struct {
     real enter[3], leave[3], unit[3];
     int near[3], far[3];
     real near_top[3], far_top[3]; /* 0 or FAST_GRID_BOX_STEPS unit_a: the frame's own sides, near and far */
+    real slack[3];                /* the march's slack_a, infinite where inv_d_a = 0 (every box then passes) */
+    bool started;                 /* cull_start has filled in the fields above */
 } cull_frame;
 
 static inline bool passes_box(const uint8_t box[8], const cull_frame *f, real t_min, real upper)
@@ -42,29 +44,31 @@ static inline bool passes_box(const uint8_t box[8], const cull_frame *f, real t_
 }
 /* end snippet */
 
-/* What the cull frame of every cell of g has for this ray: the steps'
- * length in t, the sides the ray enters and leaves by.  Once per grid and
- * ray. */
-static inline void cull_start(cull_frame *f, const fast_grid *g, const int near[3], const int far[3],
-                              const real inv_d[3])
+/* What the cull frame of every cell of g has for the ray with direction d
+ * (inv_d and slack as the march has them): the steps' length in t, the
+ * sides the ray enters and leaves by, the slack.  Once per grid and ray, at
+ * the first cell that culls (many rays meet none). */
+static inline void cull_start(cull_frame *f, const fast_grid *g, const real d[3], const real inv_d[3],
+                              const real slack[3])
 {
     for (int a = 0; a < 3; a++) {
         f->unit[a] = g->frame_step[a] * inv_d[a];
-        f->near[a] = near[a];
-        f->far[a] = far[a];
-        f->near_top[a] = (near[a] < 3 ? 0 : FAST_GRID_BOX_STEPS) * f->unit[a];
-        f->far_top[a] = (far[a] < 3 ? 0 : FAST_GRID_BOX_STEPS) * f->unit[a];
+        f->near[a] = d[a] < 0 ? 3 + a : a;
+        f->far[a] = d[a] < 0 ? a : 3 + a;
+        f->near_top[a] = (d[a] < 0 ? FAST_GRID_BOX_STEPS : 0) * f->unit[a];
+        f->far_top[a] = (d[a] < 0 ? 0 : FAST_GRID_BOX_STEPS) * f->unit[a];
+        f->slack[a] = inv_d[a] != 0 ? slack[a] : REAL_INFINITY;
     }
+    f->started = true;
 }
 
 /* The cull frame of cell i: its base_a, widened by the slack, for passes_box. */
-static inline void cull_cell(cull_frame *f, const fast_grid *g, const int i[3], const real p[3], const real inv_d[3],
-                             const real cull_slack[3])
+static inline void cull_cell(cull_frame *f, const fast_grid *g, const int i[3], const real p[3], const real inv_d[3])
 {
     for (int a = 0; a < 3; a++) {
         real base = inv_d[a] != 0 ? (g->plane[a][i[a]] - g->margin - p[a]) * inv_d[a] : 0;
-        f->enter[a] = base - cull_slack[a];
-        f->leave[a] = base + cull_slack[a];
+        f->enter[a] = base - f->slack[a];
+        f->leave[a] = base + f->slack[a];
     }
 }
 

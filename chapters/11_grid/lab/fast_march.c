@@ -13,8 +13,8 @@
 #define MAILBOX 32
 
 /* A cell's entries are sifted this many at a time, by the ray's span in the
- * cell (cull_span) when the cell lists at least SIFT_FROM of them; fewer go
- * straight to passes_box. */
+ * cell (cull_span) when the cell lists at least SIFT_FROM of them; fewer are
+ * tested without culling. */
 #define BATCH 32
 #define SIFT_FROM 8
 
@@ -27,6 +27,8 @@ typedef struct {
     int step[3];  /* +1 or -1: the sign of d_a; 0 when d_a = 0 (the ray never crosses a boundary of that axis) */
     real next[3]; /* t of the next boundary crossing along each axis; +infinity when step is 0 */
     long cell;    /* i[0] + n_x (i[1] + n_y i[2]): the cell's place in g->start */
+    int ahead[3]; /* 1 when step_a > 0, else 0: the cell's far boundary along a is plane i_a + ahead_a */
+    long move[3]; /* step_a stride_a (stride: 1, n_x, n_x n_y): what a step along a adds to cell */
 } dda;
 /* end snippet */
 
@@ -47,18 +49,17 @@ static inline bool dda_step(const fast_grid *g, dda *m, int a, const real p[3], 
     /* one step of the 3D-DDA along axis a.
      *     i_a = i_a + step_a                      (the neighbour across the boundary)
      *     outside 0 .. n_a - 1: return false      (the ray leaves the grid)
-     *     cell = cell + step_a stride_a           (stride: 1, n_x, n_x n_y for x, y, z)
+     *     cell = cell + step_a stride_a           (move_a; stride: 1, n_x, n_x n_y for x, y, z)
      *     next_a = t of the neighbour's far boundary along a:
      *              plane i_a + 1 when step_a > 0, plane i_a when step_a < 0
-     *              (crossing(g, a, plane, p, inv_d) computes it)
+     *              (plane i_a + ahead_a; crossing(g, a, plane, p, inv_d) computes it)
      * Compute next_a from the plane each time rather than adding a fixed
      * t step: the sum would gather one rounding per cell. */
-    const long stride[3] = {1, g->n[0], (long)g->n[0] * g->n[1]};
     m->i[a] += m->step[a];
     if ((unsigned)m->i[a] >= (unsigned)g->n[a])
         return false;
-    m->cell += m->step[a] * stride[a];
-    m->next[a] = crossing(g, a, m->i[a] + (m->step[a] > 0), p, inv_d);
+    m->cell += m->move[a];
+    m->next[a] = crossing(g, a, m->i[a] + m->ahead[a], p, inv_d);
     return true;
 }
 /* end snippet */
@@ -107,13 +108,16 @@ static inline bool dda_leap(const fast_grid *g, dda *m, int side, const real p[3
     /* The t at which the ray crosses the cube's far face along each axis
      * (infinity on an axis it never crosses); the first of them is the exit. */
     real t_face[3];
-    for (int a = 0; a < 3; a++)
-        t_face[a] = m->step[a] ? crossing(g, a, m->i[a] + (m->step[a] > 0 ? side : 1 - side), p, inv_d) : REAL_INFINITY;
+    int far_end[3]; /* the index of the cube's last cell along each axis, the cell before its far face */
+    for (int a = 0; a < 3; a++) {
+        far_end[a] = m->i[a] + m->step[a] * (side - 1);
+        t_face[a] = m->step[a] ? crossing(g, a, far_end[a] + m->ahead[a], p, inv_d) : REAL_INFINITY;
+    }
     const int axis = t_face[0] <= t_face[1] ? (t_face[0] <= t_face[2] ? 0 : 2) : (t_face[1] <= t_face[2] ? 1 : 2);
     const real t_exit = t_face[axis];
     if (!(t_exit < REAL_INFINITY)) /* no face ahead (or NaN): nothing to leap to */
         return false;
-    const int beyond = m->i[axis] + m->step[axis] * side;
+    const int beyond = far_end[axis] + m->step[axis];
     if (beyond < 0 || beyond >= g->n[axis])
         return false; /* the cube's face is beyond the grid's */
     const real back = reach + 16 * REAL_EPSILON * real_abs(t_exit) * d_max;
@@ -122,14 +126,13 @@ static inline bool dda_leap(const fast_grid *g, dda *m, int side, const real p[3
             m->i[a] = beyond;
         } else if (m->step[a]) { /* in the cube and in the grid */
             real f = (p[a] + t_exit * d[a] - g->lo_a[a] - (real)m->step[a] * back) * g->inv_cell_a[a];
-            int far_end = m->i[a] + m->step[a] * (side - 1);
-            int lowest = m->step[a] > 0 ? m->i[a] : far_end > 0 ? far_end : 0;
-            int highest = m->step[a] < 0 ? m->i[a] : far_end < g->n[a] - 1 ? far_end : g->n[a] - 1;
+            int lowest = m->step[a] > 0 ? m->i[a] : far_end[a] > 0 ? far_end[a] : 0;
+            int highest = m->step[a] < 0 ? m->i[a] : far_end[a] < g->n[a] - 1 ? far_end[a] : g->n[a] - 1;
             m->i[a] = index_in(f, lowest, highest);
         } else {
             continue; /* the ray stays in its slab of cells along a */
         }
-        m->next[a] = crossing(g, a, m->i[a] + (m->step[a] > 0), p, inv_d);
+        m->next[a] = crossing(g, a, m->i[a] + m->ahead[a], p, inv_d);
     }
     m->cell = m->i[0] + (long)g->n[0] * (m->i[1] + (long)g->n[1] * m->i[2]);
     return true;
@@ -144,8 +147,6 @@ typedef struct {
     real inv_d[3];      /* 1 / d_a; 0 where d_a is +0, -0 or so small that 1 / d_a overflows */
     bool parallel[3];   /* those axes: the ray never crosses a boundary of theirs */
     real slack[3];      /* the rounding of a computed crossing of axis a, in t; 0 where inv_d_a = 0 */
-    real cull_slack[3]; /* the same, infinite where inv_d_a = 0 (culling then lets every box pass) */
-    int near[3], far[3];
     real reach, d_max;
     long octant;        /* the octant of d, as g->empty counts it (an axis the ray never crosses may take either) */
 } ray_frame;
@@ -165,13 +166,10 @@ static inline void frame_of(ray_frame *f, const fast_grid *g, ray r)
         f->p[a] = p[a];
         f->d[a] = d[a];
         f->inv_d[a] = 1 / d[a];
-        f->near[a] = d[a] < 0 ? 3 + a : a;
-        f->far[a] = d[a] < 0 ? a : 3 + a;
         f->parallel[a] = !isfinite(f->inv_d[a]); /* d_a = +0 or -0, or tiny */
         if (f->parallel[a])
             f->inv_d[a] = 0;
         f->slack[a] = f->reach * real_abs(f->inv_d[a]);
-        f->cull_slack[a] = f->inv_d[a] != 0 ? f->slack[a] : REAL_INFINITY;
     }
     f->octant = (f->inv_d[0] < 0) | (f->inv_d[1] < 0) << 1 | (f->inv_d[2] < 0) << 2;
 }
@@ -204,11 +202,14 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
     if (!(t0 <= t1)) /* misses the box, or the window ends before it */
         return false;
     const real back = f->reach + 16 * REAL_EPSILON * real_abs(t0) * f->d_max;
+    const long stride[3] = {1, g->n[0], (long)g->n[0] * g->n[1]};
     for (int a = 0; a < 3; a++) {
         m->step[a] = f->inv_d[a] > 0 ? 1 : f->inv_d[a] < 0 ? -1 : 0;
+        m->ahead[a] = m->step[a] > 0;
+        m->move[a] = m->step[a] * stride[a];
         real x = f->inv_d[a] != 0 ? f->p[a] + t0 * f->d[a] : f->p[a];
         m->i[a] = first_cell(g, a, (x - lo[a] - (real)m->step[a] * back) * g->inv_cell_a[a]);
-        m->next[a] = m->step[a] ? crossing(g, a, m->i[a] + (m->step[a] > 0), f->p, f->inv_d) : REAL_INFINITY;
+        m->next[a] = m->step[a] ? crossing(g, a, m->i[a] + m->ahead[a], f->p, f->inv_d) : REAL_INFINITY;
     }
     m->cell = m->i[0] + (long)g->n[0] * (m->i[1] + (long)g->n[1] * m->i[2]);
     return true;
@@ -247,9 +248,10 @@ static inline void consider(const fast_grid_entry *entry, const cull_frame *f, b
  * batches of up to BATCH entries: first the entries whose boxes are not
  * beside the ray's span, gathered without branches (which entries pass is
  * different in every cell: a branch on it is often guessed wrong); then
- * each of those.  A cell of fewer entries takes them one by one, and makes
- * the cull frame only at the first not tested yet (a floor's triangles are
- * listed in every cell under it and tested once).  A cell with a grid of
+ * each of those.  A cell of fewer entries tests them one by one without
+ * culling: most are large surfaces (a floor's triangles are listed in every
+ * cell under it), culled again in every cell until tested once, where a
+ * test settles them for the rest of the ray.  A cell with a grid of
  * its own (two levels) lists that grid alone: the ray marches through it. */
 static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, search *s, const ray_frame *rf,
                               march_state *ms)
@@ -264,21 +266,14 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
     }
     const bool cull = g->cull, use_mailbox = g->mailbox;
     if (!cull || last - first < SIFT_FROM) {
-        bool framed = !cull;
-        for (uint32_t e = first; e < last; e++) {
-            const uint32_t k = refs[e].surface;
-            if (use_mailbox && ms->mailbox[k % MAILBOX] == k)
-                continue;
-            if (!framed) {
-                cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->cull_slack);
-                framed = true;
-            }
-            consider(&refs[e], f, cull, use_mailbox, s, ms);
-        }
+        for (uint32_t e = first; e < last; e++)
+            consider(&refs[e], f, false, use_mailbox, s, ms);
         return;
     }
     uint64_t span_lo, span_hi;
-    cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->cull_slack);
+    if (!f->started)
+        cull_start(f, g, rf->d, rf->inv_d, rf->slack);
+    cull_cell(f, g, m->i, rf->p, rf->inv_d);
     cull_span(f, g, m->i, rf->p, rf->d, rf->reach, rf->d_max, s->t_min, s->upper, &span_lo, &span_hi);
     for (uint32_t e = first; e < last;) {
         const uint32_t end = last - e > BATCH ? e + BATCH : last, batch = end - e;
@@ -305,8 +300,7 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
     if (g->n_cells == 0 || !enter(g, rf, s->t_min, s->upper, &m))
         return;
     cull_frame f;
-    if (g->cull)
-        cull_start(&f, g, rf->near, rf->far, rf->inv_d);
+    f.started = false;
     for (;;) {
         ms->cells++;
         visit_cell(g, &m, &f, s, rf, ms);
