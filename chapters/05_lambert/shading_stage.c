@@ -62,7 +62,7 @@ color shading_sample(const void *view, real u, real v, uint64_t *rays)
 static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
     const shading_stage *stage = context;
-    return shading_prepare(stage, desc, chosen_sphere_formula(&stage->shapes), chosen_triangle_test(&stage->shapes),
+    return shading_prepare(stage, desc, (sphere_formula)stage->shapes.sphere, (triangle_test)stage->shapes.triangle,
                            err, err_size);
 }
 
