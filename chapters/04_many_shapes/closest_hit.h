@@ -3,14 +3,10 @@
 #ifndef CH04_CLOSEST_HIT_H
 #define CH04_CLOSEST_HIT_H
 
-#include <stdbool.h>
-
 #include "04_many_shapes/surface.h"
 
-/* The hit with the smallest t in (t_min, t_max) over every surface of the
- * list.  True when there is one; then *hit is complete, with hit->surface
- * its index in the list.  Surfaces hit at exactly the same t: the first in
- * the list wins.  *hit is left unchanged when nothing is hit. */
+/* The hit with the smallest t in (t_min, t_max) over the list, hit->surface its index (at the same t
+ * the first in the list wins): true when there is one, else *hit is left unchanged. */
 bool surfaces_intersect(const surface_list *list, ray r, real t_min, real t_max, hit_record *hit);
 
 #endif

@@ -19,10 +19,9 @@ color flat_color(const scene *desc, const hit_record *hit)
 color trace_flat(const surface_list *list, const scene *desc, ray r, real t_min, real t_max)
 {
     hit_record hit;
-    if (surfaces_intersect(list, r, t_min, t_max, &hit)) {
-        EXPLAIN(explain_closest(hit.surface, hit.source, hit.t, hit.point));
-        return flat_color(desc, &hit);
-    }
-    return desc->back_color;
+    if (!surfaces_intersect(list, r, t_min, t_max, &hit))
+        return desc->back_color;
+    EXPLAIN(explain_closest(hit.surface, hit.source, hit.t, hit.point));
+    return flat_color(desc, &hit);
 }
 /* end snippet */

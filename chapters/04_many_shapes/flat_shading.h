@@ -6,12 +6,10 @@
 #include "04_many_shapes/surface.h"
 #include "scene.h"
 
-/* The flat colour of a hit: RGBNormals shows (n + 1) / 2; any other shader
- * its diffuseColor; a surface without a shader is white. */
+/* The flat colour of a hit: (n + 1) / 2 for RGBNormals, else the diffuseColor (none: white). */
 color flat_color(const scene *desc, const hit_record *hit);
 
-/* The colour seen along r: the flat colour of the closest hit in
- * (t_min, t_max), or the scene's backColor when the ray hits nothing. */
+/* The flat colour of r's closest hit in (t_min, t_max), or the backColor when r hits nothing. */
 color trace_flat(const surface_list *list, const scene *desc, ray r, real t_min, real t_max);
 
 #endif

@@ -29,7 +29,7 @@ static void *prepare(const void *context, const scene *desc, char *err, size_t e
         return NULL;
     }
     st->desc = desc;
-    surface_list_init(&st->list, chosen_sphere_formula(knobs), chosen_triangle_test(knobs));
+    surface_list_init(&st->list, (sphere_formula)knobs->sphere, (triangle_test)knobs->triangle);
     if (camera_from_scene(&st->cam, desc, err, err_size) && !surface_list_from_scene(&st->list, desc, err, err_size))
         return st;
     release(st);

@@ -55,31 +55,26 @@ int surface_list_from_scene(surface_list *list, const scene *desc, char *err, si
 /* snippet: surface_intersect */
 bool surface_intersect(const surface *s, const surface_list *list, ray r, real t_min, real t_max, hit_record *hit)
 {
-    real t, beta = 0, gamma = 0;
-    vec3 n;
     EXPLAIN(explain_surface((int)(s - list->items), s->source, s->face));
     if (s->kind == SHAPE_SPHERE) {
-        if (!sphere_intersect(&s->sphere, r, t_min, t_max, list->sphere_formula, &t, &n))
-            return false;
-    } else {
-        triangle_hit th;
-        bool found = triangle_intersect(&s->triangle, r, t_min, t_max, list->triangle_test, &th);
-        EXPLAIN(triangle_explain(&s->triangle, r, t_min, t_max, list->triangle_test, found, &th));
-        if (!found)
-            return false;
-        t = th.t;
-        beta = th.beta;
-        gamma = th.gamma;
-        n = triangle_normal(&s->triangle);
+        real t;
+        vec3 n;
+        bool found = sphere_intersect(&s->sphere, r, t_min, t_max, list->sphere_formula, &t, &n);
+        if (found)
+            *hit = surface_hit_record(s, r, t, n, 0, 0);
+        return found;
     }
-    *hit = surface_hit_record(s, r, t, n, beta, gamma);
-    return true;
+    triangle_hit th;
+    bool found = triangle_intersect(&s->triangle, r, t_min, t_max, list->triangle_test, &th);
+    EXPLAIN(triangle_explain(&s->triangle, r, t_min, t_max, list->triangle_test, found, &th));
+    if (found)
+        *hit = surface_hit_record(s, r, th.t, triangle_normal(&s->triangle), th.beta, th.gamma);
+    return found;
 }
 /* end snippet */
 
 hit_record surface_hit_record(const surface *s, ray r, real t, vec3 n, real beta, real gamma)
 {
-    /* .surface: the list's loop fills it in */
-    return (hit_record){.t = t, .point = ray_at(r, t), .normal = n, .surface = -1, .source = s->source,
-                        .face = s->face, .shader = s->shader, .beta = beta, .gamma = gamma};
+    return (hit_record){.t = t, .point = ray_at(r, t), .normal = n, .surface = -1, /* set by the list's loop */
+                        .source = s->source, .face = s->face, .shader = s->shader, .beta = beta, .gamma = gamma};
 }

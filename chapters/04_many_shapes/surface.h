@@ -1,19 +1,12 @@
-/* surface.h - chapter 04: the lecture's surfaceList, the surfaces a ray is tested against.
- *
- * Spheres and triangles side by side (a Box or a Mesh of the scene file is
- * its triangles), each with its scene shader's index; the list carries the
- * --sphere and --triangle knobs that every intersection uses (README,
- * "The surface list").
- */
+/* surface.h - chapter 04: the lecture's surfaceList, spheres and triangles (a Box's or a Mesh's)
+ * with their shaders and the knobs every intersection uses (README, "The surface list"). */
 #ifndef CH04_SURFACE_H
 #define CH04_SURFACE_H
 
-#include <stdbool.h>
 #include <stddef.h>
 
-#include "02_sphere/sphere.h"
+#include "02_sphere/sphere.h" /* and ray.h */
 #include "03_triangle/triangle.h"
-#include "ray.h"
 #include "scene.h"
 
 typedef enum { SHAPE_SPHERE, SHAPE_TRIANGLE } shape_kind;
@@ -53,30 +46,24 @@ typedef struct {
 /* end snippet */
 
 /* snippet: default_test */
-/* The triangle test from this chapter on: Cramer's rule lets eye rays through
- * the shared edge of two triangles (README, "Cracks in an ordinary image"). */
+/* From here on: Cramer's rule lets rays through shared edges (README, "Cracks in an ordinary image"). */
 #define TRIANGLE_TEST_DEFAULT TRIANGLE_WATERTIGHT
 /* end snippet */
 
-/* An empty list with the given knobs. */
+/* An empty list with the given knobs; append one surface: its index, or -1 when out of memory. */
 void surface_list_init(surface_list *list, sphere_formula formula, triangle_test test);
 void surface_list_free(surface_list *list);
-
-/* Append one surface; returns its index, or -1 when out of memory. */
 int surface_list_add_sphere(surface_list *list, sphere s, int shader, int source);
 int surface_list_add_triangle(surface_list *list, triangle tri, int shader, int source);
 
-/* Appends the shapes of every surface of the scene (scene_shapes.h), in the
- * file's order.  Returns 0, or -1 with "path:line: problem" in err. */
+/* Appends the scene's shapes (scene_shapes.h) in the file's order: 0, or -1 with "path:line: problem" in err. */
 int surface_list_from_scene(surface_list *list, const scene *desc, char *err, size_t err_size);
 
-/* One surface against the ray, with the list's knobs: true when it is hit at
- * some t in (t_min, t_max); then *hit holds everything but hit->surface,
- * which only the list knows.  *hit is left unchanged on a miss. */
+/* One surface against the ray, with the list's knobs: true when it is hit at some t in (t_min, t_max);
+ * then *hit holds everything but hit->surface, which only the list knows (unchanged on a miss). */
 bool surface_intersect(const surface *s, const surface_list *list, ray r, real t_min, real t_max, hit_record *hit);
 
-/* The record of a hit of s at t with unit normal n (beta, gamma: 0 for a
- * sphere), for surface_intersect and for a caller that finds hits another way. */
+/* The record of a hit of s at t with unit normal n (beta, gamma: 0 for a sphere). */
 hit_record surface_hit_record(const surface *s, ray r, real t, vec3 n, real beta, real gamma);
 
 #endif

@@ -10,13 +10,12 @@ color shade_lambert(const tracer *tr, const shading_point *sp, int depth, uint64
 {
     (void)depth; /* no ray leaves the surface here: nothing to count */
     (void)rays;
-    const scene_shader *shader = sp->shader;
-    if (shader->kind == SHADER_RGB_NORMALS) /* a geometry check, not lit: chapter 04's colour */
+    if (sp->shader->kind == SHADER_RGB_NORMALS) /* a geometry check, not lit: chapter 04's colour */
         return flat_color(tr->desc, &sp->hit);
     if (tr->desc->n_lights == 0)
         return color_make(0, 0, 0);
     /* Surface.shade(ray, point, normal, light) with the lecture's one light */
-    color L_d = lambert(shader->diffuse_color, sp->hit.point, sp->n, &tr->desc->lights[0]);
+    color L_d = lambert(sp->shader->diffuse_color, sp->hit.point, sp->n, &tr->desc->lights[0]);
     EXPLAIN(explain_light(&tr->desc->lights[0], sp->hit.point, sp->n, sp->v, L_d, false, L_d));
     return L_d;
 }

@@ -5,9 +5,8 @@
 #include <stdlib.h>
 
 #include "01_camera_rays/pixel.h"
-#include "04_many_shapes/surface.h"
 #include "05_lambert/scenes/shading_scene.h"
-#include "renderer.h"
+#include "joined_knobs.h"
 
 void shading_release(void *prepared)
 {
@@ -29,8 +28,8 @@ shading_view *shading_prepare(const shading_stage *stage, const scene *desc, sph
         return NULL;
     }
     surface_list_init(&view->list, formula, test);
-    view->query = (hit_query){.closest_hit = closest_hit_linear, .accel = &view->list}; /* chapter 04's scan ... */
-    build_query_fn build = stage->build_query;                                      /* ... or the stage's own */
+    view->query = (hit_query){.closest_hit = closest_hit_linear, .accel = &view->list}; /* or the stage's own */
+    build_query_fn build = stage->build_query;
     if (!camera_from_scene(&view->cam, desc, err, err_size) ||
         surface_list_from_scene(&view->list, desc, err, err_size) != 0 ||
         (build && build(stage->query_knobs, &view->list, desc, &view->query, err, err_size) != 0)) {
@@ -52,37 +51,30 @@ shading_view *shading_prepare(const shading_stage *stage, const scene *desc, sph
 color shading_sample(const void *view, real u, real v, uint64_t *rays)
 {
     const shading_view *sv = view;
-    ++rays[RAY_EYE];
-    /* Eye rays start at the eye: every hit with t > 0 is in front of it. */
+    ++rays[RAY_EYE]; /* it starts at the eye: every hit with t > 0 is in front of it */
     return trace(&sv->tr, camera_ray(&sv->cam, u, v), 0, REAL_INFINITY, 0, rays);
 }
 /* end snippet */
 
-/* renderer.h's prepare: the stage, with the values of every knob, is its context. */
+/* renderer.h's prepare: its context is the stage, with the values of every knob. */
 static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
     const shading_stage *stage = context;
-    return shading_prepare(stage, desc, chosen_sphere_formula(&stage->shapes), chosen_triangle_test(&stage->shapes),
+    return shading_prepare(stage, desc, (sphere_formula)stage->shapes.sphere, (triangle_test)stage->shapes.triangle,
                            err, err_size);
 }
 
 int shading_main(const shading_stage *stage, int argc, char **argv)
 {
-    knob knobs[SHAPE_KNOBS + MAX_STAGE_KNOBS];
-    if (stage->n_knobs > MAX_STAGE_KNOBS) {
-        fprintf(stderr, "%s: too many knobs (%d > %d)\n", stage->name, stage->n_knobs, MAX_STAGE_KNOBS);
-        return 2;
-    }
     shading_stage st = *stage;
     st.shapes = (shape_knobs)SHAPE_KNOBS_DEFAULT;
-    shape_knob_rows(&st.shapes, knobs); /* --sphere and --triangle first */
-    for (int k = 0; k < stage->n_knobs; k++)
-        knobs[SHAPE_KNOBS + k] = stage->knobs[k];
+    knob shapes[SHAPE_KNOBS];
+    shape_knob_rows(&st.shapes, shapes);
     const renderer r = {
         .name = stage->name,
         .summary = stage->summary,
-        .knobs = knobs,
-        .n_knobs = SHAPE_KNOBS + stage->n_knobs,
+        .knobs = stage->knobs,
+        .n_knobs = stage->n_knobs,
         .modelled = stage->modelled,
         .accelerated = stage->accelerated,
         .default_width = 512,
@@ -94,5 +86,5 @@ int shading_main(const shading_stage *stage, int argc, char **argv)
         .release = shading_release,
         .pixel_to_image = pixel_to_image, /* chapter 01's: the student's own mapping */
     };
-    return renderer_main(&r, argc, argv);
+    return renderer_main_joined(&r, shapes, SHAPE_KNOBS, argc, argv); /* --sphere and --triangle first */
 }

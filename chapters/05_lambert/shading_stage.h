@@ -1,28 +1,22 @@
-/* shading_stage.h - chapter 05: the renderer that chapters 05-11 share: a
- * render.c fills a shading_stage and calls shading_main() (README, "One
- * renderer for every shading chapter"). */
+/* shading_stage.h - chapter 05: the renderer that chapters 05-11 share: a render.c fills a
+ * shading_stage and calls shading_main() (README, "One renderer for every shading chapter"). */
 #ifndef CH05_SHADING_STAGE_H
 #define CH05_SHADING_STAGE_H
-
-#include <stddef.h>
-#include <stdint.h>
 
 #include "01_camera_rays/camera.h"
 #include "04_many_shapes/shape_knobs.h"
 #include "05_lambert/tracer.h"
-#include "options.h"
-#include "scene.h"
 
-/* The closest-hit query of a prepared scene and what it owns. */
+/* The closest-hit query of a prepared scene, and what it owns (freed by release unless NULL). */
 typedef struct {
     closest_hit_fn closest_hit;
     const void *accel;
-    void *owned;                  /* freed by release (NULL: nothing to free) */
+    void *owned;
     void (*release)(void *owned);
 } hit_query;
 
-/* Builds the query over the scene's surface list (which outlives it), with
- * the knobs the stage gives it.  Returns 0, or -1 with "path: problem" in err. */
+/* Builds the query over the scene's surface list (which outlives it) with the knobs the stage gives it:
+ * 0, or -1 with "path: problem" in err. */
 typedef int (*build_query_fn)(const void *knobs, const surface_list *list, const scene *desc, hit_query *q,
                               char *err, size_t err_size);
 
@@ -47,16 +41,14 @@ typedef struct {
 /* The renderer's main(): options, scene, render, PNG, summary (renderer.h). */
 int shading_main(const shading_stage *stage, int argc, char **argv);
 
-/* What a shading renderer traces: everything trace() needs for one scene. */
+/* What a shading renderer traces for one scene, prepared from desc (which must outlive it) with the
+ * stage's shading, --sphere and --triangle: NULL with "path:line: problem" in err. */
 typedef struct {
     camera cam;
     surface_list list;
     hit_query query;
     tracer tr;
 } shading_view;
-
-/* The view of desc (which must outlive it) with the stage's shading and the
- * given --sphere and --triangle; NULL with "path:line: problem" in err. */
 shading_view *shading_prepare(const shading_stage *stage, const scene *desc, sphere_formula formula,
                               triangle_test test, char *err, size_t err_size);
 /* A sample_fn (render_loop.h): the eye ray through (u, v), counted as RAY_EYE. */

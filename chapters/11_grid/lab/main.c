@@ -118,7 +118,7 @@ static void *prepare(const void *context, const scene *desc, char *err, size_t e
     pv->show = lab->show;
     pv->heat_max = lab->heat_max;
     const shape_knobs *shapes = &lab->stage.shapes;
-    pv->view = shading_prepare(&lab->stage, desc, chosen_sphere_formula(shapes), chosen_triangle_test(shapes), err,
+    pv->view = shading_prepare(&lab->stage, desc, (sphere_formula)shapes->sphere, (triangle_test)shapes->triangle, err,
                                err_size);
     if (!pv->view) {
         release(pv);
