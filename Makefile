@@ -447,7 +447,7 @@ check-figures: figure-renderers
 
 # ---- snippets: the code shown in the texts, taken from the source ----------------
 
-SNIPPET_TEXTS := $(sort $(wildcard chapters/[0-9][0-9]_*/README.md chapters/[0-9][0-9]_*/lab/README.md docs/*.md))
+SNIPPET_TEXTS := $(sort $(wildcard chapters/[0-9][0-9]_*/README.md chapters/[0-9][0-9]_*/lab/*.md docs/*.md))
 
 snippets:
 	$(NO_SOLUTIONS)

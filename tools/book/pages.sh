@@ -6,7 +6,7 @@
 # SOURCE is a Markdown text of the repository, PAGE the name of its page in
 # the book (PAGE.html) and TITLE its first heading.  The title page is
 # docs/README.md; then each chapter's lesson, followed by its lab when the
-# chapter has one (chapters/NN_name/lab/README.md); then the measurements, the
+# chapter has one (chapters/NN_name/lab/README.md, then its other pages); then the measurements, the
 # scene format, the instructor's guide and the rest of docs/.  Run from the
 # top of the repository.
 title() { # the text of the first level-1 heading of $1
@@ -22,6 +22,9 @@ for dir in chapters/[0-9][0-9]_*/; do
     name=$(basename "$dir")
     page "$dir/README.md" "$name"
     page "$dir/lab/README.md" "$name-lab"
+    for extra in "$dir"/lab/*.md; do # the lab's further pages, after its README
+        [ "$(basename "$extra")" = README.md ] || page "$extra" "$name-lab-$(basename "$extra" .md)"
+    done
 done
 page docs/measurements.md measurements
 page docs/scenes.md scenes
