@@ -12,8 +12,18 @@ static const interp_knobs *knobs_of(const tracer *tr)
     return tr->knobs.interp ? tr->knobs.interp : &defaults;
 }
 
+/* The shading point with the interpolated normal, and its texture coordinates if it has them. */
+typedef struct {
+    shading_point sp;
+    bool smooth;     /* sp.n is an interpolated normal */
+    vec3 n_raw;      /* the interpolated normal before it was turned (RGBNormals shows it) */
+    bool has_uv;
+    mesh_uv uv;
+} interp_point;
+
 /* snippet: interp_at */
-interp_point interp_at(const tracer *tr, const shading_point *sp)
+/* The interpolated attributes of the point sp (a surface without one keeps what it had). */
+static interp_point interp_at(const tracer *tr, const shading_point *sp)
 {
     interp_point ip = {.sp = *sp};
     const hit_record *hit = &sp->hit;

@@ -17,22 +17,9 @@ typedef struct interp_knobs {
 } interp_knobs;
 /* end snippet */
 
-/* The defaults, an initializer: chapter 09's, interpolated normals, the
- * nearest texel (the course's images), mirror directions flipped above. */
+/* The defaults: chapter 09's, interpolated normals, the nearest texel (the course's images), flipped. */
 #define INTERP_KNOBS_DEFAULT \
     {.earlier = GLASS_KNOBS_DEFAULT, .normals = NORMALS_INTERPOLATED, .filter = TEXTURE_NEAREST, .below = BELOW_FLIP}
-
-/* The shading point with the interpolated normal, and its texture coordinates if it has them. */
-typedef struct {
-    shading_point sp;
-    bool smooth;     /* sp.n is an interpolated normal */
-    vec3 n_raw;      /* the interpolated normal before it was turned (RGBNormals shows it) */
-    bool has_uv;
-    mesh_uv uv;
-} interp_point;
-
-/* The interpolated attributes of the point sp (a surface without one keeps what it had). */
-interp_point interp_at(const tracer *tr, const shading_point *sp);
 
 /* A shade_fn: the shading of chapter 09 with the interpolated normal and the
  * textured diffuse colour (tr->knobs.interp, or the defaults). */
