@@ -1,11 +1,5 @@
-/* interp_stage.h - chapter 10: the stage, as the renderer describes it.
- *
- * Chapter 10's renderer is chapter 05's shading_stage with this chapter's
- * shade function, knobs and features.  The stage is built here, not in
- * render.c, so that chapter 11 renders with exactly this stage and changes
- * one thing, the closest-hit query, `interp_stage(..., grid_query)`, and so
- * gives byte-identical images, only faster.
- */
+/* interp_stage.h - chapter 10: the stage, as the renderer describes it: chapter 05's shading_stage with
+ * this chapter's shade function, knobs and features, which chapter 11 reuses over its grid. */
 #ifndef CH10_INTERP_STAGE_H
 #define CH10_INTERP_STAGE_H
 

@@ -11,10 +11,8 @@
 #include "mesh.h"
 #include "vec3.h"
 
-/* The attribute A_a, A_b, A_c of vertices a, b, c at the point with
- * barycentric coordinates (beta, gamma): (1 - beta - gamma) A_a + beta A_b +
- * gamma A_c.  A normal comes out of it with the length it happens to have
- * (shorter than 1 between two different unit normals): normalize it. */
+/* A(beta, gamma) of the attribute A_a, A_b, A_c of vertices a, b, c.  A normal comes out of it
+ * shorter than 1 between two different unit normals: normalize it. */
 vec3 interpolate_vec3(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma);
 
 /* The same for texture coordinates (u, v). */

@@ -4,7 +4,7 @@
 #include "04_many_shapes/flat_shading.h"
 #include "10_interpolation/interpolate.h"
 #include "explain.h"
-#include "sphere_uv.h"
+#include "surface_attributes.h"
 
 static const interp_knobs *knobs_of(const tracer *tr)
 {
@@ -12,24 +12,23 @@ static const interp_knobs *knobs_of(const tracer *tr)
     return tr->knobs.interp ? tr->knobs.interp : &defaults;
 }
 
-/* snippet: face_of_hit */
-const mesh_face *face_of_hit(const scene *desc, const hit_record *hit, const mesh **m)
-{
-    const scene_surface *s = &desc->surfaces[hit->source];
-    if (s->kind != SURFACE_MESH)
-        return NULL;
-    *m = &desc->meshes[s->mesh];
-    return &(*m)->faces[hit->face];
-}
-/* end snippet */
+/* The shading point with the interpolated normal, and its texture coordinates if it has them. */
+typedef struct {
+    shading_point sp;
+    bool smooth;     /* sp.n is an interpolated normal */
+    vec3 n_raw;      /* the interpolated normal before it was turned (RGBNormals shows it) */
+    bool has_uv;
+    mesh_uv uv;
+} interp_point;
 
 /* snippet: interp_at */
-interp_point interp_at(const tracer *tr, const shading_point *sp)
+/* The interpolated attributes of the point sp (a surface without one keeps what it had). */
+static interp_point interp_at(const tracer *tr, const shading_point *sp)
 {
     interp_point ip = {.sp = *sp};
     const hit_record *hit = &sp->hit;
     const mesh *m;
-    const mesh_face *f = face_of_hit(tr->desc, hit, &m);
+    const mesh_face *f = surface_mesh_face(tr->desc, hit->source, hit->face, &m); /* the face chapter 04 records */
     if (f) {
         ip.smooth = knobs_of(tr)->normals == NORMALS_INTERPOLATED &&
                     vertex_normal(m, f, hit->beta, hit->gamma, &ip.n_raw);
@@ -39,11 +38,7 @@ interp_point interp_at(const tracer *tr, const shading_point *sp)
         if (ip.has_uv)
             ip.uv = interpolate_uv(m->uvs[f->vt[0]], m->uvs[f->vt[1]], m->uvs[f->vt[2]], hit->beta, hit->gamma);
     } else {
-        const scene_surface *s = &tr->desc->surfaces[hit->source];
-        if (s->kind == SURFACE_SPHERE) {
-            ip.has_uv = true;
-            ip.uv = sphere_uv(s->center, s->radius, hit->point);
-        }
+        ip.has_uv = surface_sphere_uv(tr->desc, hit->source, hit->point, &ip.uv);
     }
     return ip;
 }

@@ -1,11 +1,5 @@
-/* shade_interp.h - chapter 10: the shade function of the interpolation stage.
- *
- * At a point of a mesh face the shading normal n becomes the interpolated
- * vertex normal, and a textured shader's k_d the texture's colour at the
- * point's (u, v) (a mesh's interpolated vt, a sphere's own); then the shading
- * of chapters 05-09 runs with them (README, "The shade function").  A surface
- * without the attribute keeps what it had.
- */
+/* shade_interp.h - chapter 10: the shading of chapters 05-09 with the interpolated normal as n and a
+ * textured shader's k_d read at the point's (u, v) (README, "The shade function"). */
 #ifndef CH10_SHADE_INTERP_H
 #define CH10_SHADE_INTERP_H
 
@@ -23,29 +17,9 @@ typedef struct interp_knobs {
 } interp_knobs;
 /* end snippet */
 
-/* The defaults, an initializer: chapter 09's, interpolated normals, the
- * nearest texel (the course's images), mirror directions flipped above. */
+/* The defaults: chapter 09's, interpolated normals, the nearest texel (the course's images), flipped. */
 #define INTERP_KNOBS_DEFAULT \
     {.earlier = GLASS_KNOBS_DEFAULT, .normals = NORMALS_INTERPOLATED, .filter = TEXTURE_NEAREST, .below = BELOW_FLIP}
-
-/* What the point looks like to the shading: the shading point with the
- * interpolated normal (and, for mirror and glass points, the normal that
- * keeps the mirror direction above the surface), whether it has texture
- * coordinates, and which. */
-typedef struct {
-    shading_point sp;
-    bool smooth;     /* sp.n is an interpolated normal */
-    vec3 n_raw;      /* the interpolated normal before it was turned (RGBNormals shows it) */
-    bool has_uv;
-    mesh_uv uv;
-} interp_point;
-
-/* The mesh face a hit lies on (chapter 04 records it in hit.face): the mesh
- * in *m and the face, or NULL when the hit is not on a Mesh surface. */
-const mesh_face *face_of_hit(const scene *desc, const hit_record *hit, const mesh **m);
-
-/* The interpolated attributes of the point sp. */
-interp_point interp_at(const tracer *tr, const shading_point *sp);
 
 /* A shade_fn: the shading of chapter 09 with the interpolated normal and the
  * textured diffuse colour (tr->knobs.interp, or the defaults). */

@@ -1,13 +1,5 @@
-/* shading_normal.h - chapter 10: the interpolated normal.
- *
- * The lecture's "shading normal" in place of the "geometric normal": a mesh
- * face whose three corners have normals (vn) is shaded with
- *
- *     n_s = normalize((1 - beta - gamma) n_a + beta n_b + gamma n_c)
- *
- * put on the viewer's side, with its mirror direction kept above the surface
- * (common/shading_side.h).
- */
+/* shading_normal.h - chapter 10: the shading normal of a mesh face whose corners have normals (vn),
+ * n_s = normalize((1 - beta - gamma) n_a + beta n_b + gamma n_c), its side in common/shading_side.h. */
 #ifndef CH10_SHADING_NORMAL_H
 #define CH10_SHADING_NORMAL_H
 

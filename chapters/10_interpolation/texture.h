@@ -1,10 +1,5 @@
-/* texture.h - chapter 10: a texture's colour at texture coordinates (u, v).
- *
- * In texels x = u W, y = (1 - v) H (common/texture_space.h), wrapped outside
- * the image by the texture's kind (RepeatTexture: i mod W; ClampTexture: i in
- * [0, W - 1]) and read with --texture-filter (README, "Textures").  Texels are
- * used as stored, each byte / 255.
- */
+/* texture.h - chapter 10: a texture's colour at texture coordinates (u, v), in texels x = u W,
+ * y = (1 - v) H (common/texture_space.h), each texel's bytes / 255 as stored (README, "Textures"). */
 #ifndef CH10_TEXTURE_H
 #define CH10_TEXTURE_H
 

@@ -19,15 +19,13 @@ enum { GRID_ACCEL_GRID, GRID_ACCEL_LIST };
 #define GRID_KNOBS_DEFAULT \
     {.interp = INTERP_KNOBS_DEFAULT, .density = (real)GRID_DEFAULT_DENSITY, .max_cells = (int)GRID_DEFAULT_MAX_CELLS}
 
-/* A build_query_fn whose knobs are a grid_knobs: the grid of `list`, or
- * chapter 04's linear scan under --accel=list.  Returns 0, or -1 with
- * "path: problem". */
+/* A build_query_fn on a grid_knobs: the grid of `list` (--accel=list: chapter 04's linear scan);
+ * 0, or -1 with "path: problem". */
 int grid_query(const void *knobs, const surface_list *list, const scene *desc, hit_query *q, char *err,
                size_t err_size);
 
-/* Chapter 11's stage: chapter 10's over grid_query, with this chapter's
- * name, knobs (rows in rows[MAX_STAGE_KNOBS], aimed at *k, which the caller
- * owns) and built-in scene. */
+/* Chapter 11's stage: chapter 10's over grid_query, with this chapter's name, built-in scene and
+ * knobs (rows in rows[MAX_STAGE_KNOBS], aimed at *k, which the caller owns). */
 shading_stage grid_stage(grid_knobs *k, knob *rows);
 
 #endif
