@@ -7,7 +7,7 @@
  *     GRID, GRID_OPTIONS            the grid's types
  *     GRID_BUILD, GRID_INTERSECT,   its functions, with grid_build's,
  *     GRID_FREE, GRID_DEFAULTS()    grid_intersect's and grid_free's shapes
- *     GRID_STAGE()                  chapter 11's stage over that grid
+ *     GRID_QUERY, GRID_QUERY_KNOBS  its build_query_fn and the knobs it takes
  *     knob_sets[], N_KNOB_SETS      the options every random ray is tried with
  *
  * The grid must give exactly the answer of chapter 04's linear scan: for
@@ -37,7 +37,7 @@
 #include "08_mirrors/scenes/mirror_scene.h"
 #include "09_refraction/scenes/glass_scene.h"
 #include "10_interpolation/scenes/interp_scene.h"
-#include "10_interpolation/interp_stage.h"
+#include "10_interpolation/shade_interp.h"
 #include "11_grid/scenes/grid_scene.h"
 #include "image.h"
 #include "scene_build.h"
@@ -574,8 +574,8 @@ static void render_stage(const shading_stage *stage, const scene *desc, int side
 }
 
 /* The built-in scenes of chapters 05-07 (one scene), 08, 09, 10 and 11,
- * rendered by chapter 10's stage (interp_stage over the linear scan) and by
- * chapter 11's (the same stage over the grid): every pixel the same, bit for
+ * rendered by chapter 10's stage (shade_interp over the linear scan) and by
+ * chapter 11's (the same over the grid): every pixel the same, bit for
  * bit, since every ray of every kind gets the same hit.  (Chapter 04's
  * built-in scene lives in its render.c; tools/check-grid-images.sh compares
  * the two renderers on the chapters' scene files and the Cornell corpus.) */
@@ -590,9 +590,8 @@ static void test_builtin_scenes_as_chapter_10(void **state)
         {"chapters 05-07", shading_scene, 64}, {"chapter 08", mirror_scene, 64}, {"chapter 09", glass_scene, 64},
         {"chapter 10", interp_scene, 64},      {"chapter 11", grid_scene, 40},
     };
-    interp_knobs linear_knobs = INTERP_KNOBS_DEFAULT;
-    knob linear_rows[MAX_STAGE_KNOBS];
-    const shading_stage linear = interp_stage(&linear_knobs, linear_rows, NULL), gridded = GRID_STAGE();
+    const shading_stage linear = {.name = "10_interpolation", .shade = shade_interp}, /* the knobs' defaults */
+        gridded = {.name = "11_grid", .shade = shade_interp, .build_query = GRID_QUERY, .query_knobs = GRID_QUERY_KNOBS};
     for (size_t s = 0; s < sizeof scenes / sizeof scenes[0]; s++) {
         scene desc;
         scene_init(&desc);

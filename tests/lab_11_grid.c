@@ -13,7 +13,8 @@
 #define GRID_INTERSECT fast_grid_intersect
 #define GRID_FREE fast_grid_free
 #define GRID_DEFAULTS fast_grid_default_options
-#define GRID_STAGE fast_stage
+#define GRID_QUERY lab_query_build
+#define GRID_QUERY_KNOBS (&fast_defaults)
 /* a few densities with every knob on, one level and two (the default split,
  * and splits so low that most cells with surfaces get grids of their own),
  * then mailboxing, leaping and culling off one at a time and all together */
@@ -27,17 +28,7 @@ static const fast_grid_options knob_sets[] = {
 };
 #define N_KNOB_SETS (sizeof knob_sets / sizeof knob_sets[0])
 
-/* Chapter 11's stage over the lab's query, with the fast grid. */
-static shading_stage fast_stage(void)
-{
-    static fast_knobs knobs; /* the lab's defaults: the fast grid; their values last as long as the suite */
-    static knob rows[MAX_STAGE_KNOBS];
-    knobs = (fast_knobs)FAST_KNOBS_DEFAULT;
-    shading_stage stage = grid_stage(&knobs.grid, rows);
-    stage.build_query = lab_query_build;
-    stage.query_knobs = &knobs;
-    return stage;
-}
+static const fast_knobs fast_defaults = FAST_KNOBS_DEFAULT; /* the lab's: the fast grid */
 
 #include "grid_cases.h"
 

@@ -7,7 +7,7 @@
 #include "05_lambert/shading_stage.h"
 #include "08_mirrors/mirror.h"
 #include "10_interpolation/scenes/interp_scene.h"
-#include "10_interpolation/interp_stage.h"
+#include "10_interpolation/shade_interp.h"
 #include "10_interpolation/interpolate.h"
 #include "10_interpolation/shading_normal.h"
 #include "10_interpolation/scenes/sphere_mesh.h"
@@ -602,14 +602,14 @@ static void test_mirror_above(void **state)
 
 /* ---- shading through the stage ------------------------------------------------------------------ */
 
-/* Traces one ray with chapter 10's stage (defaults) through desc. */
+/* Chapter 10's stage: its shade function with the knobs' defaults, over the linear scan. */
+static const shading_stage stage10 = {.name = "10_interpolation", .shade = shade_interp};
+
+/* Traces one ray with chapter 10's stage through desc. */
 static color trace_10(const scene *desc, ray r, uint64_t *rays)
 {
     char err[256] = "";
-    interp_knobs knobs = INTERP_KNOBS_DEFAULT;
-    knob rows[MAX_STAGE_KNOBS];
-    const shading_stage stage = interp_stage(&knobs, rows, NULL);
-    shading_view *view = shading_prepare(&stage, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
+    shading_view *view = shading_prepare(&stage10, desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
     if (!view)
         fail_msg("%s", err);
     color c = trace(&view->tr, r, 0, REAL_INFINITY, 0, rays);
@@ -722,10 +722,7 @@ static void test_builtin_scene_smooth_and_flat(void **state)
     scene_init(&desc);
     assert_int_equal(0, interp_scene(&desc));
     char err[256] = "";
-    interp_knobs knobs = INTERP_KNOBS_DEFAULT;
-    knob rows[MAX_STAGE_KNOBS];
-    const shading_stage stage = interp_stage(&knobs, rows, NULL);
-    shading_view *view = shading_prepare(&stage, &desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
+    shading_view *view = shading_prepare(&stage10, &desc, SPHERE_ROBUST, TRIANGLE_WATERTIGHT, err, sizeof err);
     if (!view)
         fail_msg("%s", err);
     /* the same point, relative to each sphere's centre, seen from in front */

@@ -15,19 +15,13 @@
 #define GRID_INTERSECT grid_intersect
 #define GRID_FREE grid_free
 #define GRID_DEFAULTS grid_default_options
-#define GRID_STAGE default_grid_stage
+#define GRID_QUERY grid_query
+#define GRID_QUERY_KNOBS (&grid_defaults)
 /* a few densities, and a cap that makes the cells few and large */
 static const grid_options knob_sets[] = {{0.3, 1L << 20}, {2, 1L << 20}, {10, 1L << 20}, {2, 64}};
 #define N_KNOB_SETS (sizeof knob_sets / sizeof knob_sets[0])
 
-/* Chapter 11's stage with its knobs' defaults (their values last as long as the suite). */
-static shading_stage default_grid_stage(void)
-{
-    static grid_knobs knobs;
-    static knob rows[MAX_STAGE_KNOBS];
-    knobs = (grid_knobs)GRID_KNOBS_DEFAULT;
-    return grid_stage(&knobs, rows);
-}
+static const grid_knobs grid_defaults = GRID_KNOBS_DEFAULT; /* chapter 11's renderer's */
 
 #include "grid_cases.h"
 

@@ -21,7 +21,6 @@
 
 #include "05_lambert/shading_stage.h"
 #include "07_blinn_phong/shade_phong.h"
-#include "10_interpolation/interp_stage.h"
 #include "10_interpolation/scenes/sphere_mesh.h"
 #include "11_grid/grid_stage.h"
 #include "image_compare.h"
@@ -91,26 +90,17 @@ static void test_07_bunny(void **state) { (void)state; check_scene(&stage07_grid
 static void test_07_bunny2(void **state) { (void)state; check_scene(&stage07_grid, "bunny2"); }
 
 /* ---- chapter 10: every scene of the corpus, textures and vertex normals too --------------------------
- * Chapter 10's stage as its renderer runs it (interp_stage.h, the defaults:
- * nearest texel, interpolated normals); chapter 11 renders with the same
- * stage over its grid and must give the same bytes. */
+ * Chapter 10's stage as its renderer runs it (shade_interp with the knobs'
+ * defaults: nearest texel, interpolated normals); chapter 11 renders with the
+ * same stage over its grid and must give the same bytes. */
 
-static void check_10(const char *name)
-{
-    interp_knobs knobs = INTERP_KNOBS_DEFAULT;
-    knob rows[MAX_STAGE_KNOBS];
-    const shading_stage stage = interp_stage(&knobs, rows, NULL);
-    check_scene(&stage, name);
-}
+static const shading_stage stage10 = {.name = "10_interpolation", .shade = shade_interp};
+static void check_10(const char *name) { check_scene(&stage10, name); }
 
 /* Chapter 10's stage over chapter 11's grid: chapter 11's renderer. */
-static void check_10_grid(const char *name)
-{
-    grid_knobs knobs = GRID_KNOBS_DEFAULT;
-    knob rows[MAX_STAGE_KNOBS];
-    const shading_stage stage = grid_stage(&knobs, rows);
-    check_scene(&stage, name);
-}
+static const shading_stage stage10_grid = {
+    .name = "11_grid", .shade = shade_interp, .build_query = grid_query, .query_knobs = &grid_defaults};
+static void check_10_grid(const char *name) { check_scene(&stage10_grid, name); }
 
 static void test_10_one_sphere(void **state) { (void)state; check_10("one-sphere"); }
 static void test_10_one_sphere_rgb_normals(void **state) { (void)state; check_10_grid("one-sphere-rgb-normals"); }

@@ -3,9 +3,6 @@
 
 #include "10_interpolation/interpolate.h"
 
-const char *const normal_source_names[] = {"interpolated", "geometric", NULL};
-const char *const below_policy_names[] = {"flip", "keep", NULL};
-
 /* snippet: vertex_normal */
 bool vertex_normal(const mesh *m, const mesh_face *f, real beta, real gamma, vec3 *n)
 {

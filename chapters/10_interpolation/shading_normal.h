@@ -8,17 +8,6 @@
 #include "mesh.h"
 #include "shading_side.h"
 
-typedef enum { NORMALS_INTERPOLATED, NORMALS_GEOMETRIC } normal_source;
-
-/* The names of the sources, in enum order, NULL-terminated: the choices of
- * --normals (geometric: the mesh's vn are ignored, for the lecture's pair). */
-extern const char *const normal_source_names[];
-
-typedef enum { BELOW_FLIP, BELOW_KEEP } below_policy;
-
-/* The names of the policies, in enum order, NULL-terminated: the choices of --below-surface. */
-extern const char *const below_policy_names[];
-
 /* The interpolated unit normal of face f of mesh m at (beta, gamma): true
  * and *n set when all three corners have normals and their blend is not the
  * zero vector (opposite corner normals); false otherwise (the face is then

@@ -3,8 +3,6 @@
 #include "exercise.h"
 #include "texture_space.h"
 
-const char *const texture_filter_names[] = {"nearest", "bilinear", NULL};
-
 /* snippet: texel_index */
 int texel_index(texture_kind kind, long long i, int n)
 {

@@ -7,10 +7,7 @@
 #include "mesh.h"
 #include "scene.h"
 
-typedef enum { TEXTURE_NEAREST, TEXTURE_BILINEAR } texture_filter;
-
-/* The names of the filters, in enum order, NULL-terminated: the choices of --texture-filter. */
-extern const char *const texture_filter_names[];
+typedef enum { TEXTURE_NEAREST, TEXTURE_BILINEAR } texture_filter; /* --texture-filter */
 
 /* The column (or row) that index i, any integer, reads in an image n texels
  * wide (or high), n >= 1: i mod n (in [0, n), also for i < 0) for

@@ -5,9 +5,18 @@
 #include <stdlib.h>
 
 #include "04_many_shapes/closest_hit.h"
-#include "11_grid/scenes/grid_scene.h"
 
 static const char *const accel_choices[] = {"grid", "list", NULL};
+
+int grid_knob_rows(grid_knobs *k, knob *rows, stage_knobs *aimed)
+{
+    int n = interp_knob_rows(&k->interp, rows, aimed); /* chapters 06-10's first */
+    rows[n++] = (knob){"grid-density", KNOB_REAL, &k->density, NULL, "grid cells per surface"};
+    rows[n++] = (knob){"grid-cells", KNOB_INT, &k->max_cells, NULL, "the most cells the grid may have"};
+    rows[n++] = (knob){"accel", KNOB_CHOICE, &k->accel, accel_choices,
+                       "grid, or chapter 04's linear scan over the list"};
+    return n;
+}
 
 static bool grid_closest_hit(const void *g, ray r, real t_min, real t_max, hit_record *hit)
 {
@@ -35,22 +44,5 @@ int grid_query(const void *knobs, const surface_list *list, const scene *desc, h
     }
     *q = (hit_query){.closest_hit = grid_closest_hit, .accel = g, .owned = g, .release = grid_release};
     return 0;
-}
-
-shading_stage grid_stage(grid_knobs *k, knob *rows)
-{
-    shading_stage stage = interp_stage(&k->interp, rows, grid_query); /* chapter 10's stage, the grid as its query */
-    int n = stage.n_knobs; /* chapter 10's knobs, then the grid's */
-    rows[n++] = (knob){"grid-density", KNOB_REAL, &k->density, NULL, "grid cells per surface"};
-    rows[n++] = (knob){"grid-cells", KNOB_INT, &k->max_cells, NULL, "the most cells the grid may have"};
-    rows[n++] = (knob){"accel", KNOB_CHOICE, &k->accel, accel_choices,
-                       "grid, or chapter 04's linear scan over the list"};
-    stage.query_knobs = k;
-    stage.name = "11_grid";
-    stage.summary = "11_grid: the closest hit through a uniform grid (3D-DDA), shaded as in chapter 10";
-    stage.n_knobs = n;
-    stage.builtin = grid_scene;
-    stage.accelerated = true;
-    return stage;
 }
 /* end snippet */

@@ -5,7 +5,8 @@
 
 #include <stddef.h>
 
-#include "10_interpolation/interp_stage.h"
+#include "05_lambert/shading_stage.h"
+#include "10_interpolation/shade_interp.h"
 #include "11_grid/grid.h"
 
 /* The knobs of chapter 11: chapter 10's, then the grid's. */
@@ -19,13 +20,12 @@ enum { GRID_ACCEL_GRID, GRID_ACCEL_LIST };
 #define GRID_KNOBS_DEFAULT \
     {.interp = INTERP_KNOBS_DEFAULT, .density = (real)GRID_DEFAULT_DENSITY, .max_cells = (int)GRID_DEFAULT_MAX_CELLS}
 
+/* The option rows of chapters 06-11's knobs, and the tracer's knobs, aimed at *k; returns how many rows. */
+int grid_knob_rows(grid_knobs *k, knob *rows, stage_knobs *aimed);
+
 /* A build_query_fn on a grid_knobs: the grid of `list` (--accel=list: chapter 04's linear scan);
  * 0, or -1 with "path: problem". */
 int grid_query(const void *knobs, const surface_list *list, const scene *desc, hit_query *q, char *err,
                size_t err_size);
-
-/* Chapter 11's stage: chapter 10's over grid_query, with this chapter's name, built-in scene and
- * knobs (rows in rows[MAX_STAGE_KNOBS], aimed at *k, which the caller owns). */
-shading_stage grid_stage(grid_knobs *k, knob *rows);
 
 #endif

@@ -5,14 +5,30 @@
  * that is chapter 10 as it is).  The lab (lab/README.md) measures the grid
  * and adds a faster one.
  */
+#include "05_lambert/shading_stage.h"
 #include "11_grid/grid_stage.h"
+#include "11_grid/scenes/grid_scene.h"
 
 int main(int argc, char **argv)
 {
-    /* snippet: stage */
     grid_knobs settings = GRID_KNOBS_DEFAULT;
     knob rows[MAX_STAGE_KNOBS];
-    const shading_stage stage = grid_stage(&settings, rows); /* interp_stage(...): chapter 10's stage over the grid */
+    stage_knobs aimed = {0};
+    int n_rows = grid_knob_rows(&settings, rows, &aimed);
+    /* snippet: stage */
+    const shading_stage stage = {
+        .name = "11_grid",
+        .summary = "11_grid: the closest hit through a uniform grid (3D-DDA), shaded as in chapter 10",
+        .knobs = rows,
+        .n_knobs = n_rows,
+        .modelled = INTERP_MODELLED,
+        .shade = shade_interp, /* chapter 10's shading ... */
+        .shade_knobs = aimed,
+        .build_query = grid_query, /* ... of the hits the grid finds */
+        .query_knobs = &settings,
+        .builtin = grid_scene,
+        .accelerated = true,
+    };
     /* end snippet */
     return shading_main(&stage, argc, argv);
 }

@@ -17,6 +17,7 @@
 #include "04_many_shapes/shape_knobs.h"
 #include "11_grid/lab/fast_query.h"
 #include "11_grid/lab/heat.h"
+#include "11_grid/scenes/grid_scene.h"
 #include "renderer.h"
 
 static const char *const on_off[] = {"on", "off", NULL};
@@ -162,16 +163,24 @@ int main(int argc, char **argv)
 {
     lab_context lab = {.knobs = FAST_KNOBS_DEFAULT, .show = SHOW_IMAGE, .heat_max = 64};
     knob stage_rows[MAX_STAGE_KNOBS];
-    lab.stage = grid_stage(&lab.knobs.grid, stage_rows);
-    lab.stage.build_query = lab_query_build;
-    lab.stage.query_knobs = &lab.knobs;
-    lab.stage.shapes = (shape_knobs)SHAPE_KNOBS_DEFAULT;
+    stage_knobs aimed = {0};
+    int n_stage = grid_knob_rows(&lab.knobs.grid, stage_rows, &aimed);
+    lab.stage = (shading_stage){ /* chapter 11's stage over the lab's query */
+        .name = "11_grid",
+        .modelled = INTERP_MODELLED,
+        .shade = shade_interp,
+        .shade_knobs = aimed,
+        .shapes = SHAPE_KNOBS_DEFAULT,
+        .build_query = lab_query_build,
+        .query_knobs = &lab.knobs,
+        .builtin = grid_scene,
+    };
     knob knobs[MAX_KNOBS];
     shape_knob_rows(&lab.stage.shapes, knobs); /* --sphere and --triangle first */
     int n_knobs = SHAPE_KNOBS;
-    for (int k = 0; k < lab.stage.n_knobs; k++) /* the lesson's, but its --accel: the lab's has three choices */
-        if (strcmp(lab.stage.knobs[k].name, "accel") != 0)
-            knobs[n_knobs++] = lab.stage.knobs[k];
+    for (int k = 0; k < n_stage; k++) /* the lesson's, but its --accel: the lab's has three choices */
+        if (strcmp(stage_rows[k].name, "accel") != 0)
+            knobs[n_knobs++] = stage_rows[k];
     n_knobs += lab_knob_rows(&lab, knobs + n_knobs);
     const renderer r = {
         .name = lab.stage.name,
