@@ -10,7 +10,6 @@
 typedef enum { NORMALS_INTERPOLATED, NORMALS_GEOMETRIC } normal_source; /* geometric: the mesh's vn ignored */
 typedef enum { BELOW_FLIP, BELOW_KEEP } below_policy; /* a mirror direction below the geometric surface */
 
-/* snippet: interp_knobs */
 /* The knobs of chapter 10: chapter 09's, then its own three. */
 typedef struct interp_knobs {
     glass_knobs earlier; /* chapters 06-09: --shadow-eps, --phong, --depth, --min-weight, --fresnel */
@@ -18,7 +17,6 @@ typedef struct interp_knobs {
     int filter;         /* a texture_filter: --texture-filter */
     int below;          /* a below_policy: --below-surface */
 } interp_knobs;
-/* end snippet */
 
 /* The defaults: chapter 09's, interpolated normals, the nearest texel (the course's images), flipped. */
 #define INTERP_KNOBS_DEFAULT \
