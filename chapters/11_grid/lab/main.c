@@ -139,7 +139,7 @@ static void report(const void *prepared, render_stats stats, FILE *out)
     const surface_list *list = &pv->view->list;
     const lab_query *lq = pv->view->query.accel;
     if (lq->accel == LAB_ACCEL_LIST) {
-        fprintf(out, "11_grid: linear scan over %d surfaces: %d intersection tests per ray; traced in %.3f s\n",
+        fprintf(out, "11_grid_lab: linear scan over %d surfaces: %d intersection tests per ray; traced in %.3f s\n",
                 list->n, list->n, stats.seconds);
         return;
     }
@@ -148,7 +148,7 @@ static void report(const void *prepared, render_stats stats, FILE *out)
     long cells = fast ? lq->fast.n_cells : lq->lesson.n_cells, refs = fast ? lq->fast.n_refs : lq->lesson.n_refs;
     size_t bytes = fast ? fast_grid_memory(&lq->fast) : grid_memory(&lq->lesson);
     fprintf(out,
-            "11_grid: %s grid %dx%dx%d = %ld cells (%ld with grids of their own) for %d surfaces (%.2f per cell), "
+            "11_grid_lab: %s grid %dx%dx%d = %ld cells (%ld with grids of their own) for %d surfaces (%.2f per cell), "
             "%.1f MB, built in %.3f s; per ray %.2f cells, %.2f intersection tests (%.2f more culled by their boxes); "
             "traced in %.3f s\n",
             fast ? "fast" : "lesson's", n[0], n[1], n[2], cells, fast ? lq->fast.n_subs : 0L, list->n,
@@ -166,7 +166,7 @@ int main(int argc, char **argv)
     stage_knobs aimed = {0};
     int n_stage = grid_knob_rows(&lab.knobs.grid, stage_rows, &aimed);
     lab.stage = (shading_stage){ /* chapter 11's stage over the lab's query */
-        .name = "11_grid",
+        .name = "11_grid_lab", /* its own default output, 11_grid_lab.png, beside the renderer's */
         .modelled = INTERP_MODELLED,
         .shade = shade_interp,
         .shade_knobs = aimed,
@@ -184,7 +184,8 @@ int main(int argc, char **argv)
     n_knobs += lab_knob_rows(&lab, knobs + n_knobs);
     const renderer r = {
         .name = lab.stage.name,
-        .summary = "11_grid lab: chapter 11's renderer through the fast grid, the lesson's or the list, counted",
+        .summary = "11_grid_lab: chapter 11's renderer with a choice of closest-hit query (the fast grid, the "
+                   "lesson's grid or the linear scan) and what each cost per ray",
         .knobs = knobs,
         .n_knobs = n_knobs,
         .modelled = lab.stage.modelled,
