@@ -156,9 +156,13 @@ static void print_help(const char *program, const char *summary, const char *def
             "                              from the side\n"
             "  -h, --help          this text\n",
             summary, program, default_output);
+    if (n_knobs > 0)
+        fprintf(out, "knobs (the earlier chapters' first), each with its choices and default:\n");
+    int width = 12; /* the helps in one column, two spaces past the longest name (24 at least) */
+    for (int k = 0; k < n_knobs; k++)
+        width = (int)strlen(knobs[k].name) > width ? (int)strlen(knobs[k].name) : width;
     for (int k = 0; k < n_knobs; k++) {
-        int pad = 14 - (int)strlen(knobs[k].name);
-        fprintf(out, "      --%s=V%*s%s", knobs[k].name, pad > 1 ? pad : 1, "", knobs[k].help);
+        fprintf(out, "      --%s=V%*s%s", knobs[k].name, width + 2 - (int)strlen(knobs[k].name), "", knobs[k].help);
         print_knob_default(&knobs[k], out);
         fputc('\n', out);
     }
