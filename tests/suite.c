@@ -177,6 +177,11 @@ const char *cornell_data(void)
             return candidates[k];
     if (getenv("RT_REQUIRE_CORNELL"))
         fail_msg("RT_REQUIRE_CORNELL is set but the Cornell corpus is not at %s", candidates[0]);
+    static bool said; /* once per suite: why its tests of the course's scenes skip */
+    if (!said)
+        printf("note: the course's scenes are not at %s (run from the top of the copy, or set RT_CORNELL to "
+               "their folder): the tests that read them skip\n", candidates[0]);
+    said = true;
     return NULL;
 }
 
