@@ -10,7 +10,7 @@
  * taken with one atomic increment, so threads never share one. */
 enum { MAX_NOTED = 128 };
 typedef struct {
-    const char *chapter, *file, *function;
+    const char *chapter, *file, *exercise, *function;
 } noted_stub;
 static noted_stub noted[MAX_NOTED];
 static atomic_int n_noted;
@@ -24,7 +24,7 @@ void exercise_announce(const char *chapter, const char *file, const char *exerci
     if (atomic_load(&deferred)) {
         int k = atomic_fetch_add(&n_noted, 1);
         if (k < MAX_NOTED)
-            noted[k] = (noted_stub){chapter, file, function};
+            noted[k] = (noted_stub){chapter, file, exercise, function};
         return;
     }
     /* "01_camera_rays" -> "01": the chapter's number. */
@@ -58,6 +58,7 @@ void exercise_report(FILE *out, const char *name)
     fprintf(out, "%s: placeholders of unfinished exercises (each says so until its EXERCISE_STUB line is deleted; "
                  "see chapters/NN_name/README.md, Exercises):", name);
     for (int k = 0; k < n; k++)
-        fprintf(out, " %s/%s:%s", noted[k].chapter, noted[k].file, noted[k].function);
+        fprintf(out, "%s %s/%s: TODO %s (%s)", k ? ";" : "", noted[k].chapter, noted[k].file, noted[k].exercise,
+                noted[k].function);
     fprintf(out, "\n");
 }
