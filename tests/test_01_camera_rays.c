@@ -176,6 +176,7 @@ static vec3 combine(real a, vec3 x, real b, vec3 y, real c, vec3 z)
 #define NOT_CENTRED "the rectangle not centred on the view direction: u_s = (u - 1/2) viewWidth, v_s = (v - 1/2) viewHeight"
 #define V_S_BY_WIDTH "v_s scaled by viewWidth: v_s = (v - 1/2) viewHeight"
 #define U_S_BY_HEIGHT "u_s scaled by viewHeight: u_s = (u - 1/2) viewWidth"
+#define W_H_SWAPPED "viewWidth and viewHeight swapped: u_s = (u - 1/2) viewWidth, v_s = (v - 1/2) viewHeight"
 
 /* d = -d w + u_s u + v_s v, each component a sum of three products of size
  * at most d + width/2 + height/2 < 5: 8 eps of 5 bounds the rounding. */
@@ -209,6 +210,8 @@ static void expect_perspective(const camera *cam, real u, real v)
         {combine(-cam->d, cam->w, u * cam->width, cam->u, v * cam->height, cam->v), NOT_CENTRED},
         {combine(-cam->d, cam->w, us, cam->u, (v - (real)0.5) * cam->width, cam->v), V_S_BY_WIDTH},
         {combine(-cam->d, cam->w, (u - (real)0.5) * cam->height, cam->u, vs, cam->v), U_S_BY_HEIGHT},
+        {combine(-cam->d, cam->w, (u - (real)0.5) * cam->height, cam->u, (v - (real)0.5) * cam->width, cam->v),
+         W_H_SWAPPED},
     };
     assert_vec3_why(ed, r.d, 8 * EPS * 5, where, "d = -d w + u_s u + v_s v (d: projDistance)", sd, N(sd));
 }
@@ -248,6 +251,9 @@ static void expect_orthographic(const camera *cam, real u, real v)
         {vec3_add(cam->e, combine(0, cam->w, u * cam->width, cam->u, v * cam->height, cam->v)), NOT_CENTRED},
         {vec3_add(cam->e, combine(0, cam->w, us, cam->u, (v - (real)0.5) * cam->width, cam->v)), V_S_BY_WIDTH},
         {vec3_add(cam->e, combine(0, cam->w, (u - (real)0.5) * cam->height, cam->u, vs, cam->v)), U_S_BY_HEIGHT},
+        {vec3_add(cam->e, combine(0, cam->w, (u - (real)0.5) * cam->height, cam->u, (v - (real)0.5) * cam->width,
+                                  cam->v)),
+         W_H_SWAPPED},
     };
     double size = vec3_max_abs(cam->e) + 3;
     assert_vec3_why(ep, r.p, 8 * EPS * size, where, "p = e + u_s u + v_s v", sp, N(sp));

@@ -7,6 +7,7 @@
  */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 
 #include "02_sphere/sphere.h"
 #include "suite.h"
@@ -24,9 +25,12 @@ static ray make_ray(real px, real py, real pz, real dx, real dy, real dz)
 static const char *describe_ray(const sphere *s, ray r);
 static const char *formula_name(sphere_formula f);
 
-/* Asserts a hit at t_expected with normal n_expected. */
-static void expect_hit(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula, real t_expected,
-                       vec3 n_expected)
+#define NO_HIT_HINT "the roots (run test_roots_*), or the window: the nearest root with t_min < t < t_max (test_nearest_root)"
+
+/* Asserts a hit at t_expected with normal n_expected; no_hit names the likely
+ * mistake when there is none. */
+static void expect_hit_why(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula, real t_expected,
+                           vec3 n_expected, const char *no_hit)
 {
     real t = -1;
     vec3 n = {0, 0, 0};
@@ -34,12 +38,17 @@ static void expect_hit(const sphere *s, ray r, real t_min, real t_max, sphere_fo
                               formula_name(formula));
     if (!sphere_intersect(s, r, t_min, t_max, formula, &t, &n))
         fail_msg("%s\n    expected a hit at t = %.17g\n    got      no hit\n    likely mistake: %s", in,
-                 (double)t_expected,
-                 "the roots (run test_roots_*), or the window: the nearest root with t_min < t < t_max (test_nearest_root)");
+                 (double)t_expected, no_hit);
     assert_close_why(t_expected, t, TOL(t_expected), describe("%s: t", in),
                      "the roots (test_roots_*) or the choice of root (test_nearest_root)", NULL, 0);
     const suspect_vec3 inward[] = {{vec3_neg(n_expected), "the normal points inwards: n = (x - c) / |x - c|"}};
     assert_vec3_why(n_expected, n, TOL(1), describe("%s: n", in), "n = (x - c) / |x - c|", inward, 1);
+}
+
+static void expect_hit(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula, real t_expected,
+                       vec3 n_expected)
+{
+    expect_hit_why(s, r, t_min, t_max, formula, t_expected, n_expected, NO_HIT_HINT);
 }
 
 static void expect_miss(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula)
@@ -70,7 +79,11 @@ static void miss_case(sphere_formula f)
  * 2^-10 further out misses, 2^-10 further in hits. */
 static void tangent_case(sphere_formula f)
 {
-    expect_hit(&unit, make_ray(1, 0, 5, 0, 0, -1), 0, REAL_INFINITY, f, 5, vec3_make(1, 0, 0));
+    /* f = (1, 0, 5): A = 1, B = -5, C = f.f - R^2 = 25, so B^2 - A C is exactly 0 */
+    expect_hit_why(&unit, make_ray(1, 0, 5, 0, 0, -1), 0, REAL_INFINITY, f, 5, vec3_make(1, 0, 0),
+                   f == SPHERE_TEXTBOOK ? "a tangent ray is a hit: its discriminant is exactly 0 (a double root), so "
+                                          "the test is disc >= 0, not disc > 0"
+                                        : NO_HIT_HINT);
     expect_miss(&unit, make_ray(1 + (real)0x1p-10, 0, 5, 0, 0, -1), 0, REAL_INFINITY, f);
     real t, x = 1 - (real)0x1p-10;
     vec3 n;
@@ -192,6 +205,8 @@ static void expect_roots(const sphere *s, ray r, sphere_formula f, double tolera
     const suspect_vec3 mistakes[] = {
         {stable(A, B, C, (B * B - A * C) / A), "disc = A (R^2 - l.l): the factor A is missing"},
         {stable(A, B, C, -A * C - 3 * B * B), "l = f + t_m d with t_m = -B / A: the sign of t_m is wrong"},
+        {stable(A, B, C, -A * C + (2 - A) * A * B * B),
+         "l = f - B d: t_m = -B / A, divided by A = d.d (d is not a unit vector)"},
         {vec3_make((real)fminl(q / A, q / C), (real)fmaxl(q / A, q / C), 0),
          "t1 = C / q (the product of the roots is C / A), not q / C"},
         {vec3_make((real)(q / A), (real)(q / A), 0), "t1 not computed: t1 = C / q"},
@@ -214,10 +229,16 @@ static void expect_roots(const sphere *s, ray r, sphere_formula f, double tolera
                      in, (double)got.x, (double)got.y);
         return;
     }
-    if (!found)
-        fail_msg("%s\n    expected roots %.17g and %.17g\n    got      false (no roots)\n"
-                 "    likely mistake: the discriminant's sign: disc = B^2 - A C (textbook) or A (R^2 - l.l) (robust)",
-                 in, (double)expected.x, (double)expected.y);
+    if (!found) {
+        /* no roots where there are two: the robust discriminant's mistakes that make it negative here */
+        char why[600] = "";
+        for (size_t k = 0; f == SPHERE_ROBUST && k < 3; k++)
+            if (mistakes[k].value.x != mistakes[k].value.x)
+                snprintf(why + strlen(why), sizeof why - strlen(why), "%s%s", *why ? "; or " : "", mistakes[k].mistake);
+        fail_msg("%s\n    expected roots %.17g and %.17g\n    got      false (no roots)\n    likely mistake: %s", in,
+                 (double)expected.x, (double)expected.y,
+                 *why ? why : "the discriminant's sign: disc = B^2 - A C (textbook) or A (R^2 - l.l) (robust)");
+    }
     assert_vec3_why(expected, got, tolerance, in, "A = d.d, B = d.f, C = f.f - R^2 with f = p - c", mistakes,
                     N(mistakes));
 }
