@@ -50,6 +50,34 @@ static vec3 point_at(const triangle *tri, real beta, real gamma)
 
 static void print_triangle(const char *what, const triangle *tri, ray r);
 
+/* The likely mistake behind a hit that should have been a miss, from what
+ * came back: which of the window's or the edges' comparisons let it in. */
+static const char *false_hit_mistake(triangle_hit h, real t_min, real t_max)
+{
+    if (h.t == t_min)
+        return "accepted t == t_min: the window (t_min, t_max) is open, t > t_min";
+    if (h.t == t_max)
+        return "accepted t == t_max: the window (t_min, t_max) is open, t < t_max";
+    if (!(h.t > t_min && h.t < t_max))
+        return "t outside the window accepted: the hit needs t_min < t < t_max";
+    if (h.beta < 0 || h.gamma < 0)
+        return "a negative beta or gamma accepted: the point is outside the edge ab or ac, test beta >= 0 and "
+               "gamma >= 0";
+    if (h.beta + h.gamma > 1)
+        return "beta + gamma > 1 accepted: the point is beyond the edge bc, test beta + gamma <= 1 (beta <= 1 and "
+               "gamma <= 1 are not enough)";
+    return "a comparison that lets t == t_min, t == t_max or a point outside an edge through, or M not checked";
+}
+
+/* The likely mistake behind a miss where (beta, gamma) is a hit. */
+static const char *lost_hit_mistake(real beta, real gamma)
+{
+    if (beta == 0 || gamma == 0 || beta + gamma == 1)
+        return "the edges are open: a point on an edge (beta = 0, gamma = 0 or beta + gamma = 1) is a hit, "
+               "compare with >= 0 and <= 1";
+    return "are the edges closed, beta >= 0, gamma >= 0, beta + gamma <= 1, and is the window t_min < t < t_max?";
+}
+
 /* Asserts a hit of r at (t, beta, gamma) within tol; on failure prints the
  * triangle, the ray, what was expected, what came back and the likely
  * mistake. */
@@ -58,17 +86,19 @@ static void expect_hit(const triangle *tri, ray r, triangle_test test, real t, r
     triangle_hit h;
     if (!triangle_intersect(tri, r, 0, REAL_INFINITY, test, &h)) {
         print_triangle("input", tri, r);
-        fail_msg("--triangle=%s: expected a hit at t %g, beta %g, gamma %g; got a miss (are the edges closed, "
-                 "beta >= 0, gamma >= 0, beta + gamma <= 1, and is the window t_min < t < t_max?)",
-                 test_names[test], (double)t, (double)beta, (double)gamma);
+        fail_msg("--triangle=%s: expected a hit at t %g, beta %g, gamma %g; got a miss\n    likely mistake: %s",
+                 test_names[test], (double)t, (double)beta, (double)gamma, lost_hit_mistake(beta, gamma));
     }
     real t_tol = tol * real_fmax(1, real_abs(t));
     if (!(real_abs(h.t - t) <= t_tol && real_abs(h.beta - beta) <= tol && real_abs(h.gamma - gamma) <= tol)) {
         print_triangle("input", tri, r);
+        bool swapped = real_abs(h.beta - gamma) <= tol && real_abs(h.gamma - beta) <= tol;
         fail_msg("--triangle=%s: expected t %.9g, beta %.9g, gamma %.9g (tolerance %g); got t %.9g, beta %.9g, "
-                 "gamma %.9g (a column of a determinant replaced by the wrong vector, or beta and gamma swapped?)",
+                 "gamma %.9g\n    likely mistake: %s",
                  test_names[test], (double)t, (double)beta, (double)gamma, (double)tol, (double)h.t,
-                 (double)h.beta, (double)h.gamma);
+                 (double)h.beta, (double)h.gamma,
+                 swapped ? "beta and gamma swapped: beta goes with b - a, gamma with c - a"
+                         : "a column of a determinant replaced by the wrong vector, or beta and gamma swapped");
     }
 }
 
@@ -78,9 +108,10 @@ static void expect_miss(const triangle *tri, ray r, real t_min, real t_max, tria
     triangle_hit h = {-7, -7, -7};
     if (triangle_intersect(tri, r, t_min, t_max, test, &h)) {
         print_triangle("input", tri, r);
-        fail_msg("--triangle=%s: window (%g, %g): expected a miss, got t %g, beta %g, gamma %g (a comparison "
-                 "that lets t == t_min, t == t_max or a point outside an edge through, or M not checked?)",
-                 test_names[test], (double)t_min, (double)t_max, (double)h.t, (double)h.beta, (double)h.gamma);
+        fail_msg("--triangle=%s: window (%g, %g): expected a miss, got t %g, beta %g, gamma %g\n"
+                 "    likely mistake: %s",
+                 test_names[test], (double)t_min, (double)t_max, (double)h.t, (double)h.beta, (double)h.gamma,
+                 false_hit_mistake(h, t_min, t_max));
     }
     if (!(h.t == -7 && h.beta == -7 && h.gamma == -7))
         fail_msg("--triangle=%s: a miss wrote into *hit (t %g): write it only on a hit", test_names[test],
@@ -245,8 +276,8 @@ static void test_any_length_of_d(void **state)
                          (double)h1.gamma, hit ? "" : "a miss,", (double)h.t, (double)h.beta, (double)h.gamma);
             /* the window scales with t: open at both ends, exactly at the hit's t */
             const real t = h.t;
-            assert_false(triangle_intersect(&tilted, r, 0, t, both[k], &h));
-            assert_false(triangle_intersect(&tilted, r, t, REAL_INFINITY, both[k], &h));
+            expect_miss(&tilted, r, 0, t, both[k]);
+            expect_miss(&tilted, r, t, REAL_INFINITY, both[k]);
             assert_true(triangle_intersect(&tilted, r, t / 2, t * 2, both[k], &h));
         }
     }
@@ -403,10 +434,15 @@ static void test_hit_point_is_consistent(void **state)
             }
             bool on_edge = i == 3 || j == 3 || i + j == 20; /* beta = 0, gamma = 0, beta + gamma = 1 */
             bool inside = i >= 3 && j >= 3 && i + j <= 20;
-            if (!on_edge) {
-                assert_true(hit[0] == inside);
-                assert_true(hit[1] == inside);
-            }
+            for (int k = 0; k < N_TESTS && !on_edge; k++)
+                if (hit[k] != inside) {
+                    print_triangle("input", &tilted, r);
+                    fail_msg("--triangle=%s: the point beta %g, gamma %g (beta + gamma %g) is %s the triangle, "
+                             "got %s\n    likely mistake: %s",
+                             test_names[k], (double)beta, (double)gamma, (double)(beta + gamma),
+                             inside ? "inside" : "outside", hit[k] ? "a hit" : "a miss",
+                             hit[k] ? false_hit_mistake(h[k], 0, REAL_INFINITY) : lost_hit_mistake(beta, gamma));
+                }
             total++;
             agree += hit[0] == hit[1];
         }
