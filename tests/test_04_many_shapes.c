@@ -76,9 +76,16 @@ static void expect_closest(const surface_list *list, ray r, real t_min, real t_m
                  hit.surface, (double)hit.t);
     else
         snprintf(got, sizeof got, "no hit");
-    fail_msg("ray p (%g, %g, %g), d (%g, %g, %g), window (%g, %g), %d surfaces: expected %s, got %s (%s)",
+    /* a farther hit than the closest: which way the loop went wrong, from where the surface it kept sits */
+    const char *order = "";
+    if (found && want >= 0 && hit.t > t + tol)
+        order = hit.surface < want ? "\n    likely mistake: the loop stopped at the first surface it hit: go through "
+                                     "the whole list, a later surface can be closer"
+                                   : "\n    likely mistake: a farther surface later in the list replaced the closer "
+                                     "hit: ask each surface with (t_min, t_best), then shrink t_best to its t";
+    fail_msg("ray p (%g, %g, %g), d (%g, %g, %g), window (%g, %g), %d surfaces: expected %s, got %s (%s)%s",
              (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z,
-             (double)t_min, (double)t_max, list->n, expected, got, why);
+             (double)t_min, (double)t_max, list->n, expected, got, why, order);
 }
 
 /* Every ordering of the four shapes, with both sphere formulas and both
