@@ -52,6 +52,7 @@ static void test_irradiance_facing(void **state)
                          "normalized (n . (light.pos - point) is r times the cosine)"},
         {0, "nothing from a light straight above: l points from the point towards the light, light.pos - point"},
         {10 / 6.25, "k_d missing: the surface reflects k_d of the irradiance"},
+        {0.3 / 6.25, "the light's intensity I missing: L_d = k_d max(0, n . l) I / r^2"},
         {0.3 / acos(-1.0) * 10 / 6.25, "divided by pi: the scene's diffuseColor is k_d = R / pi already"},
         {(0.3 + 10) / 6.25, "k_d added to I: multiply them, channel by channel (color_mul)"},
     };
