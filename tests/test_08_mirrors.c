@@ -30,7 +30,9 @@ static void test_reflect_known(void **state)
     vec3 up = {0, 1, 0};
     const suspect_vec3 s45[] = {
         {{1, -1, 0}, "r = d: the part of d along n must change sign"},
-        {{-1, 1, 0}, "-r: r = d - 2 (d . n) n, not 2 (d . n) n - d (that is the lecture's form for v = -d)"},
+        {{-1, -1, 0}, "-r: r = d - 2 (d . n) n, not 2 (d . n) n - d (that is the lecture's form for v = -d)"},
+        {{(real)0.70710678118654752, (real)0.70710678118654752, 0},
+         "d normalized: r keeps the length of d (d may have any length), r = d - 2 (d . n) n"},
         {{1, -3, 0}, "d + 2 (d . n) n: the correction is subtracted"},
         {{1, 0, 0}, "d - (d . n) n is the part along the surface only: the factor 2 is missing"},
     };
@@ -64,7 +66,9 @@ static void test_reflect_random(void **state)
         vec3 d = vec3_scale(suite_random_unit(&rng), (real)(0.1 + 10 * suite_uniform(&rng)));
         real size = vec3_length(d);
         vec3 r = reflect(d, n);
-        assert_close(size, vec3_length(r), TOL(4 * size));
+        const suspect unit[] = {{1, "d normalized: r keeps the length of d (d may have any length)"}};
+        assert_close_why(size, vec3_length(r), TOL(4 * size),
+                         describe("|reflect(d, n)| for |d| = %g", (double)size), "r = d - 2 (d . n) n", unit, 1);
         assert_close(-vec3_dot(d, n), vec3_dot(r, n), TOL(4 * size));
         assert_close(0, vec3_length(vec3_cross(vec3_sub(r, d), n)), TOL(8 * size));
         vec3 v = vec3_scale(d, -1 / size);
@@ -135,6 +139,46 @@ static void add_plane(scene *desc, int shader, vec3 centre, vec3 n, real size)
                       (scene_surface){.kind = SURFACE_TRIANGLE, .shader = shader, .v0 = v[0], .v1 = v[1], .v2 = v[2]});
 }
 
+/* The mirror ray turns about the shading normal sp->n, which a later chapter
+ * tilts away from the geometric one (chapter 10 interpolates it): here the
+ * mirror's point with sp->n tilted 20 degrees from hit.normal, and a probe
+ * (radius 0.5, 2 away) along reflect(d, sp->n).  The mirror direction about
+ * hit.normal is 40 degrees from it, well outside the probe's 14.5. */
+static void mirror_about_shading_normal(void)
+{
+    scene desc;
+    scene_init(&desc);
+    const vec3 n = {0, 1, 0}, centre = {(real)0.5, 0, (real)0.25};
+    add_plane(&desc, add_shader(&desc, SHADER_LAMBERTIAN, color_make(0, 0, 0), color_make(1, 1, 1)), centre, n, 10);
+    const vec3 tilted = {(real)0.34202014332566873, (real)0.93969262078590838, 0}; /* (sin 20, cos 20, 0) */
+    const ray eye_ray = {vec3_add(centre, vec3_make(-1, 3, (real)0.5)), vec3_make(1, -3, (real)-0.5)};
+    const vec3 r = reflect(eye_ray.d, tilted), r_geometric = reflect(eye_ray.d, n);
+    probe_shader = add_shader(&desc, SHADER_LAMBERTIAN, color_make(1, 1, 1), color_make(0, 0, 0));
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = probe_shader,
+                                             .center = vec3_add(centre, vec3_scale(vec3_normalize(r), 2)),
+                                             .radius = 0.5});
+    path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
+    const stage_knobs aimed = aimed_at(&knobs);
+    shading_point sp;
+    shading_view *view = suite_shading_point(&desc, &aimed, eye_ray, &sp);
+    sp.n = tilted;
+    view->tr.shade = probe_shade;
+    probe.n = 0;
+    uint64_t rays[RAY_KINDS] = {0};
+    mirror_radiance(&view->tr, &sp, color_make(1, 1, 1), 0, rays);
+    shading_release(view);
+    const char *input = "mirror_radiance at a floor point whose shading normal sp->n is tilted 20 degrees from "
+                        "hit.normal (as chapter 10 tilts it), a probe along reflect(sp->r.d, sp->n)";
+    check_count(1, probe.n, input, "rays that reached the probe",
+                "the mirror direction about hit.normal: reflect about the shading normal, reflect(sp->r.d, sp->n)");
+    /* the direction of the probe's ray: a few roundings of unit vectors */
+    const suspect_vec3 sd[] = {{vec3_normalize(r_geometric), "reflected about hit.normal: use the shading normal sp->n"}};
+    assert_vec3_why(vec3_normalize(r), vec3_normalize(probe.r[0].d), TOL(8), describe("%s: its direction", input),
+                    "reflect(sp->r.d, sp->n)", sd, 1);
+    probe_shader = -1;
+    scene_free(&desc);
+}
+
 /* A tilted mirror far from the origin and a probe where the mirror direction
  * goes: the probe receives one ray, from the mirror's point, at depth 1,
  * along reflect(d, n), carrying the weight k_m; the eye sees k_m times the
@@ -171,16 +215,57 @@ static void test_mirror_ray_reaches_probe(void **state)
     assert_vec3_close(far_point, probe.r[0].p, 1e4 * REAL_EPSILON * 60);
     assert_close(0, vec3_length(vec3_cross(vec3_normalize(probe.r[0].d), vec3_normalize(r))), TOL(8));
     assert_true(vec3_dot(probe.r[0].d, r) > 0);
-    const suspect_vec3 sw[] = {{{1, 1, 1}, "the path's weight was not carried: trace with next, not tr"}};
+    const suspect_vec3 sw[] = {
+        {{1, 1, 1}, "the path's weight was not carried: trace with next, not tr"},
+        {{1, 1, 1}, "path_next asked with 1 instead of k_m: path_next(tr, depth, k_m, &next) multiplies the path's "
+                    "weight by k_m"},
+    };
     assert_vec3_why(vec3_make(0.8, 0.5, 0.25), vec3_make(probe.weight[0].r, probe.weight[0].g, probe.weight[0].b),
                     TOL(1), describe("%s: the weight of the probe's ray", input),
-                    "trace with next, the tracer path_next filled in: it carries the path's weight", sw, 1);
+                    "trace with next, the tracer path_next filled in: it carries the path's weight", sw, 2);
     const suspect sl[] = {{0.2, "L_m not multiplied by k_m: the glazed term is k_m L_m"},
                           {0.8 * 0.8 * 0.2, "k_m applied twice"}};
     assert_close_why(0.8 * 0.2, L.r, TOL(1), describe("%s: the radiance the eye sees, red", input),
                      "k_m times the probe's colour 0.2 (black diffuse, no lights)", sl, 2);
     assert_close(0.5 * 0.4, L.g, TOL(1));
     assert_close(0.25 * 0.6, L.b, TOL(1));
+    scene_free(&desc);
+    mirror_about_shading_normal();
+}
+
+/* Once spawn_ray has moved its start off the surface, the mirror ray is
+ * traced from t = 0: a surface just beyond the offset is seen.  A floor
+ * mirror at y = 0 and a probe, a lid at height h = 2^13 REAL_EPSILON that
+ * covers only the side the mirror ray leaves to (x > h / 2): the eye ray at
+ * 45 degrees down to (0.5, 0, 0.25) crosses y = h at x = 0.5 - h, beside the
+ * lid, and the mirror ray at x = 0.5 + h, under it, at t = h (|d| = sqrt 2:
+ * a distance of sqrt 2 h).  The bound policy's offset, 32 REAL_EPSILON times
+ * coordinates of at most 3 along the normal, is 0.012 h. */
+static void close_surface_seen(void)
+{
+    scene desc;
+    scene_init(&desc);
+    const vec3 centre = {(real)0.5, 0, (real)0.25};
+    add_plane(&desc, add_shader(&desc, SHADER_LAMBERTIAN, color_make(0, 0, 0), color_make(1, 1, 1)), centre,
+              vec3_make(0, 1, 0), 10);
+    const real h = (real)ldexp(REAL_EPSILON, 13), x = centre.x + h / 2;
+    probe_shader = add_shader(&desc, SHADER_LAMBERTIAN, color_make(1, 1, 1), color_make(0, 0, 0));
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_TRIANGLE, .shader = probe_shader,
+                                             .v0 = vec3_make(x, h, centre.z - 1), .v1 = vec3_make(x, h, centre.z + 1),
+                                             .v2 = vec3_make(x + 2, h, centre.z)});
+    path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
+    uint64_t rays[RAY_KINDS] = {0};
+    trace_one(&desc, &knobs, (ray){vec3_add(centre, vec3_make(-2, 2, 0)), vec3_make(1, -1, 0)}, rays);
+    const vec3 r = reflect(vec3_make(1, -1, 0), vec3_make(0, 1, 0)); /* exact: (1, 1, 0) */
+    check_count(1, probe.n,
+                describe("a floor mirror and a lid %g above it on the mirror ray's side (t = %g along it)", (double)h,
+                         (double)h),
+                "rays that reached the lid",
+                r.x == 1 && r.y == 1 && r.z == 0
+                    ? "the mirror ray traced from a t_min above 0 (or a fixed epsilon) skipped a close surface: "
+                      "spawn_ray already moved its start off the surface, trace from t = 0"
+                    : "reflect((1, -1, 0), (0, 1, 0)) is not (1, 1, 0): the mirror direction (test_reflect_known)");
+    probe_shader = -1;
     scene_free(&desc);
 }
 
@@ -231,6 +316,7 @@ static void test_mirror_ray_policy_from_knobs(void **state)
     }
     probe_shader = -1;
     scene_free(&desc);
+    close_surface_seen();
 }
 
 /* The glazed surface is chapter 07's result plus k_m L_m: with k_m = 0 it is
