@@ -88,7 +88,10 @@ static void test_refract_equal_indices(void **state)
                         "sqrt(1 - |S_t|^2) with |S_t|^2 from the vector d + cos(theta_i) n loses 1 - |S_t|^2 near "
                         "grazing: take cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i) from the cosine",
                         NULL, 0);
-        assert_close(cos_i, cos_t, 4 * REAL_EPSILON * cos_i);
+        assert_close_why(cos_i, cos_t, 4 * REAL_EPSILON * cos_i, describe("%s: cos_t", input),
+                         "cos^2(theta_t) = 1 - r^2 (1 - cos^2(theta_i)) rounds 1 - cos^2(theta_i) and back: group it "
+                         "as (1 - r^2) + r^2 cos^2(theta_i), which for r = 1 is cos^2(theta_i) exactly",
+                         NULL, 0);
     }
 }
 
@@ -123,6 +126,8 @@ static void test_snell_law(void **state)
                 {vec3_add(vec3_scale(t, (real)sin(theta_t)), vec3_scale(n, (real)cos(theta_t))),
                  "C_t = +cos(theta_t) n: the transmitted ray goes on to the far side, against n"},
                 {d, "T = d: Snell's law bends the ray"},
+                {vec3_add(d, vec3_scale(n, (real)(eta_i / eta_t * cos(theta_i) - cos(theta_t)))),
+                 "d not scaled by r: S_t = r S_i, so T = r d + (r cos(theta_i) - cos(theta_t)) n"},
             };
             assert_vec3_why(expected, T, TOL(8), input,
                             "S_t = (eta_i / eta_t) S_i, C_t = -cos(theta_t) n, T = C_t + S_t", sT,
@@ -175,11 +180,14 @@ static void test_critical_angle(void **state)
             assert_close(1.5, e.eta_i, 0); /* leaving the glass */
             assert_close(1, e.eta_t, 0);
             if (!(isfinite(e.R) && e.R >= 0 && e.R <= 1))
-                fail_msg("glass_at, out of glass (1.5 into 1), sin(theta_i) = 1/1.5 %+d ulps: R\n"
-                         "    expected a number in [0, 1]\n    got      %.17g\n"
-                         "    likely mistake: the total internal reflection test is |S_t|^2 > 1 on the refracted "
-                         "sine; past it sqrt(1 - |S_t|^2) is NaN",
-                         k, (double)e.R);
+                fail_msg("glass_at, out of glass (1.5 into 1), sin(theta_i) = 1/1.5 %+d ulps, --fresnel=%s: R\n"
+                         "    expected a number in [0, 1]\n    got      %.17g\n    likely mistake: %s",
+                         k, fresnel_mode_names[mode], (double)e.R,
+                         mode == FRESNEL_SCHLICK && e.R > 1
+                             ? "Schlick's R above 1: R = R_0 + (1 - R_0) (1 - cos)^5, the factor 1 - R_0 keeps it "
+                               "at most 1"
+                             : "the total internal reflection test is |S_t|^2 > 1 on the refracted sine; past it "
+                               "sqrt(1 - |S_t|^2) is NaN");
             if (e.transmits) {
                 /* 64 ulps below theta_c, sin^2(theta_t) is 1 less about 2 x 1.5 x 64 ulps: cos_t is
                  * at most sqrt(1024 REAL_EPSILON), and R falls from 1 by a few times cos_t */
@@ -233,6 +241,8 @@ static void test_fresnel_normal_incidence(void **state)
         {-0.2, "r_s is an amplitude: R is its square"},
         {0.2, "r_s is an amplitude: R is its square"},
         {0.0, "R = 0 head on: r_s = (eta_i cos_i - eta_t cos_t) / (eta_i cos_i + eta_t cos_t)"},
+        {0.0, "the amplitudes averaged (or not squared): head on r_p = -r_s, so (r_s + r_p) / 2 is 0; R averages "
+              "the squares, (r_s^2 + r_p^2) / 2"},
     };
     assert_close_why(0.04, fresnel_exact(1, 1, 1, (real)1.5), TOL(1), "fresnel_exact(cos_i = 1, cos_t = 1, 1, 1.5)",
                      "R = (r_s^2 + r_p^2) / 2 = ((1 - 1.5) / (1 + 1.5))^2 head on", s0, sizeof s0 / sizeof s0[0]);
@@ -288,6 +298,9 @@ static void test_fresnel_exact_values(void **state)
                 {r_s * r_s + r_p * r_p, "r_s^2 + r_p^2 without the / 2"},
                 {(r_s * r_s + r_p_wrong * r_p_wrong) / 2, "r_p written like r_s: in r_p eta_t goes with cos_i"},
                 {(r_s * r_s + r_p_swapped * r_p_swapped) / 2, "r_p with the cosines swapped"},
+                {(r_s + r_p) / 2 * ((r_s + r_p) / 2), "the amplitudes averaged, then squared: R averages the squares, "
+                                                      "(r_s^2 + r_p^2) / 2"},
+                {(r_s + r_p) / 2, "r_s and r_p not squared: they are amplitudes, R = (r_s^2 + r_p^2) / 2"},
             };
             assert_close_why(R, fresnel_exact((real)cos(i), (real)cos(t), (real)eta_i, (real)eta_t), TOL(4),
                              describe("fresnel_exact at theta_i = %.1f degrees from eta %g into %g", i * 180 / pi,
@@ -351,9 +364,17 @@ static void test_schlick_cosines(void **state)
     (void)state;
     real R_0 = (real)0.04;
     real c = (real)0.6, c_t = (real)0.3;
-    const suspect s_in[] = {{R_0 + (1 - R_0) * pow(1 - 0.3, 5), "into glass the cosine is cos_i, the incoming side's"}};
+    /* (eta_i - eta_t) / (eta_i + eta_t) = -0.2 into glass, R_0 its square */
+    const suspect s_in[] = {
+        {R_0 + (1 - R_0) * pow(1 - 0.3, 5), "into glass the cosine is cos_i, the incoming side's"},
+        {R_0 + (1 - R_0) * pow(1 - 0.6, 4), "(1 - cos)^4: Schlick's power is 5"},
+        {0.2 + (1 - 0.2) * pow(1 - 0.6, 5), "R_0 not squared: R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2"},
+        {-0.2 + (1 + 0.2) * pow(1 - 0.6, 5), "R_0 not squared: R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2"},
+        {R_0 + pow(1 - 0.6, 5), "(1 - R_0) missing: R = R_0 + (1 - R_0) (1 - cos)^5 reaches 1 at grazing"},
+    };
     assert_close_why(R_0 + (1 - R_0) * pow(1 - 0.6, 5), fresnel_schlick(c, c_t, 1, (real)1.5), TOL(1),
-                     "fresnel_schlick(cos_i = 0.6, cos_t = 0.3, 1, 1.5)", "R = R_0 + (1 - R_0) (1 - cos)^5", s_in, 1);
+                     "fresnel_schlick(cos_i = 0.6, cos_t = 0.3, 1, 1.5)", "R = R_0 + (1 - R_0) (1 - cos)^5", s_in,
+                     sizeof s_in / sizeof s_in[0]);
     const suspect s_out[] = {
         {R_0 + (1 - R_0) * pow(1 - 0.6, 5), "out of glass the cosine is cos_t (the side of the smaller index), "
                                              "or R jumps at the critical angle"}};
@@ -469,7 +490,12 @@ static void test_sphere_centre_undeviated(void **state)
     trace_one(&desc, &knobs, (ray){vec3_add(eye, side), vec3_scale(along, 3)}, rays);
     ray bent = probe_ray_at_depth_2();
     real sideways = vec3_dot(vec3_normalize(bent.d), side);
-    assert_true(sideways < (real)-0.1); /* a lens: the ray crosses the axis */
+    if (!(sideways < (real)-0.1)) /* a lens: the ray crosses the axis */
+        fail_msg("a ray half a radius off the centre of a glass sphere of index 1.5, leaving it\n"
+                 "    expected bent towards the axis (a sideways component below -0.1)\n    got      %g\n"
+                 "    likely mistake: the transmitted ray cast along d, not bent: cast it along e.T, the direction "
+                 "glass_at refracted",
+                 (double)sideways);
     scene_free(&desc);
 }
 
@@ -499,7 +525,11 @@ static void test_slab_returns_entry_direction(void **state)
         real shift = vec3_length(vec3_cross(vec3_sub(out.p, entry), d));
         /* the points are ~50 from the origin: the hits and the offsets of
          * spawn_ray, in and out, are a few times 32 ulps of 50 */
-        assert_close(0.5 * sin(theta_i - theta_t) / cos(theta_t), shift, TOL(400));
+        const suspect straight[] = {{0, "the transmitted ray cast along d, not bent: cast it along e.T, the "
+                                          "direction glass_at refracted"}};
+        assert_close_why(0.5 * sin(theta_i - theta_t) / cos(theta_t), shift, TOL(400),
+                         describe("a ray through a glass slab 0.5 thick at %g degrees: its sideways shift", angles[k]),
+                         "h sin(theta_i - theta_t) / cos(theta_t)", straight, 1);
     }
     scene_free(&desc);
 }
@@ -575,12 +605,17 @@ static void test_glass_weights(void **state)
         glass_knobs knobs = knobs_of(1, 0);
         uint64_t rays[RAY_KINDS] = {0};
         color L = trace_one(&desc, &knobs, (ray){cases[k].from, cases[k].d}, rays);
-        const suspect suspects[] = {{cases[k].swapped, "the weights R and 1 - R swapped"},
-                                    {cases[k].unweighted, cases[k].unweighted_mistake},
-                                    {0, cases[k].missing_mistake}};
+        const suspect suspects[] = {
+            {cases[k].swapped, "the weights R and 1 - R swapped"},
+            {cases[k].unweighted, cases[k].unweighted_mistake},
+            {0, cases[k].missing_mistake},
+            {0, "depth + 1 given to mirror_radiance or transmitted_radiance: each traces one level deeper itself, "
+                "give it depth (with --depth 1 path_next then refuses the ray)"},
+        };
         assert_close_why(cases[k].expected, L.g, TOL(1),
                          describe("shade_glass, %s, background %g: L", cases[k].where, B),
-                         "L = R L_reflected + (1 - R) L_transmitted (README, \"The glass shader\")", suspects, 3);
+                         "L = R L_reflected + (1 - R) L_transmitted (README, \"The glass shader\")", suspects,
+                         sizeof suspects / sizeof suspects[0]);
         if (rays[RAY_REFLECTED] != 1 || rays[RAY_REFRACTED] != 1)
             fail_msg("shade_glass, %s\n    expected 1 reflected and 1 refracted ray\n    got      %d and %d\n"
                      "    likely mistake: a ray not traced though its weight (R or 1 - R) is above 0",
