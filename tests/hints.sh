@@ -61,11 +61,61 @@ plant() {
     [ "$file" = skeleton ] || cp "solutions/$chapter/$file" "$dir/solutions/$chapter/$file"
 }
 
+# Chapter 01: the image's width and height, each in its place.
+plant "hint: viewWidth and viewHeight swapped" 01_camera_rays camera.c \
+    's|real us = (u - (real)0.5) \* cam->width;|real us = (u - (real)0.5) * cam->height;|; s|real vs = (v - (real)0.5) \* cam->height;|real vs = (v - (real)0.5) * cam->width;|' \
+    test_perspective_rays "" "viewWidth and viewHeight swapped"
+plant "hint: v divided by n_x" 01_camera_rays pixel.c \
+    's|\*v = ((real)j + dv) / (real)ny;|*v = ((real)j + dv) / (real)nx; (void)ny;|' \
+    test_pixel_centres "" "v divided by n_x"
+# Chapter 02: a tangent ray is a hit; the robust discriminant's foot of the perpendicular.
+plant "hint: a tangent ray refused by disc > 0" 02_sphere sphere.c \
+    's|if (!(disc >= 0))$|if (!(disc > 0))|' \
+    test_textbook "" "tangent ray is a hit" "not disc > 0"
+plant "hint: l with t_m of the wrong sign" 02_sphere sphere.c \
+    's|vec3_scale(r.d, -B / A)|vec3_scale(r.d, B / A)|' \
+    test_roots_robust "" "the sign of t_m is wrong"
+plant "hint: l with t_m not divided by A" 02_sphere sphere.c \
+    's|vec3_scale(r.d, -B / A)|vec3_scale(r.d, -B)|' \
+    test_roots_robust "" "divided by A = d\.d"
+# Chapter 03: which comparison let a false hit in, or kept a hit out.
+plant "hint: the triangle's edges open" 03_triangle triangle.c \
+    's|gamma >= 0 \&\& gamma <= 1|gamma > 0 \&\& gamma < 1|; s|beta >= 0 \&\& beta + gamma <= 1|beta > 0 \&\& beta + gamma < 1|' \
+    test_vertices_and_edge_midpoints "" "the edges are open"
+plant "hint: beta + gamma <= 1 left out" 03_triangle triangle.c \
+    's|beta + gamma <= 1|beta <= 1|' \
+    test_just_outside "" "beta \+ gamma > 1 accepted"
+plant "hint: beta >= 0 left out" 03_triangle triangle.c \
+    's|beta >= 0 \&\& beta + gamma|1 \&\& beta + gamma|' \
+    test_hit_point_is_consistent "" "a negative beta or gamma accepted"
+plant "hint: the triangle's t == t_min accepted" 03_triangle triangle.c \
+    's|!(t > t_min \&\&|!(t >= t_min \&\&|' \
+    test_t_window "" "accepted t == t_min"
+plant "hint: the triangle's t == t_max accepted" 03_triangle triangle.c \
+    's|t < t_max))|t <= t_max))|' \
+    test_t_window "" "accepted t == t_max"
+plant "hint: beta and gamma swapped" 03_triangle triangle.c \
+    's|.beta = beta, .gamma = gamma|.beta = gamma, .gamma = beta|' \
+    test_vertices_and_edge_midpoints "" "beta and gamma swapped"
+# Chapter 04: the loop over the list stops early, or lets a farther hit replace a closer one.
+plant "hint: the closest-hit loop stops at the first hit" 04_many_shapes closest_hit.c \
+    's|found = true;|found = true; break;|' \
+    test_closest_hit_in_any_order "" "stopped at the first surface it hit"
+plant "hint: t_best not shrunk" 04_many_shapes closest_hit.c \
+    's|t_best = candidate.t;||' \
+    test_closest_hit_in_any_order "" "later in the list replaced the closer"
 # l = light.pos - point, not divided by r, with the right 1/r^2: the numbers
 # of dividing by r instead of r^2.  Both must be named.
 plant "hint: l not normalized (the numbers of 1/r)" 05_lambert lambert.c \
     's|vec3 l = vec3_scale(to_light, 1 / real_sqrt(r2));|vec3 l = to_light;|' \
     test_irradiance_facing "" "divided by r, not r\^2" "l not normalized"
+# The light's intensity left out; r^2 taken as the length r.
+plant "hint: L_d without the light's intensity" 05_lambert lambert.c \
+    's|color_mul(k_d, light->intensity)|k_d|' \
+    test_irradiance_facing "" "intensity I missing"
+plant "hint: r^2 taken as the length" 05_lambert lambert.c \
+    's|vec3_length_squared(to_light)|vec3_length(to_light)|' \
+    test_irradiance_facing "" "r\^2 taken as the length"
 # The shadow ray built by hand from the hit point: acne, and spawn_ray_to named.
 plant "hint: a shadow ray from the hit point itself" 06_shadows shadow.c \
     's|ray shadow = spawn_ray_to(sp, light_pos, policy, &t_max);|(void)policy; t_max = 1; ray shadow = {sp->hit.point, vec3_sub(light_pos, sp->hit.point)};|' \
@@ -74,6 +124,64 @@ plant "hint: a shadow ray from the hit point itself" 06_shadows shadow.c \
 plant "hint: x^p by an integer loop" 07_blinn_phong phong.c \
     's|real highlight = real_pow(real_fmax(0, vec3_dot(n, h)), p);|real highlight = 1; for (int i = 0; i < p; i++) highlight *= real_fmax(0, vec3_dot(n, h));|' \
     test_exponent_behaviour "" "p = 2\.5" "fractional p"
+plant "hint: the specular term without the light's intensity" 07_blinn_phong phong.c \
+    's|color_mul(k_s, light->intensity)|k_s|' \
+    test_specular_per_channel "" "intensity I missing"
+# The lights' loop: ambient once, and a blocked light skipped, not the end.
+plant "hint: ambient added with each light" 07_blinn_phong shade_phong.c \
+    's|result = color_add(result, light_contribution(tr, sp, shader, light));|result = color_add(result, color_add(tr->desc->ambient, light_contribution(tr, sp, shader, light)));|' \
+    test_two_lights_add "" "ambient added again with each light"
+plant "hint: the lights' loop stops at a blocked light" 07_blinn_phong shade_phong.c \
+    's|result = color_add(result, light_contribution(tr, sp, shader, light));|& else break;|' \
+    test_two_lights_add "" "loop stopped at the blocked first light"
+# Chapter 08: reflect keeps |d| and the sign; the mirror ray turns about sp->n,
+# starts from t = 0 and carries k_m.
+plant "hint: reflect of a normalized d" 08_mirrors mirror.c \
+    's|return vec3_sub(d, vec3_scale(n, 2 \* vec3_dot(d, n)));|vec3 u = vec3_normalize(d); return vec3_sub(u, vec3_scale(n, 2 * vec3_dot(u, n)));|' \
+    test_reflect_known "" "d normalized"
+plant "hint: reflect gives -r" 08_mirrors mirror.c \
+    's|return vec3_sub(d, vec3_scale(n, 2 \* vec3_dot(d, n)));|return vec3_sub(vec3_scale(n, 2 * vec3_dot(d, n)), d);|' \
+    test_reflect_known "" "-r: r = d - 2"
+plant "hint: the mirror ray about the geometric normal" 08_mirrors mirror.c \
+    's|reflect(sp->r.d, sp->n)|reflect(sp->r.d, sp->hit.normal)|' \
+    test_mirror_ray_reaches_probe "" "about hit\.normal"
+plant "hint: the mirror ray traced from t_min > 0" 08_mirrors mirror.c \
+    's|mirror, 0, REAL_INFINITY|mirror, (real)1e-4, REAL_INFINITY|' \
+    test_mirror_ray_policy_from_knobs "" "t_min above 0"
+plant "hint: path_next asked with 1 instead of k_m" 08_mirrors mirror.c \
+    's|path_next(tr, depth, k_m, \&next)|path_next(tr, depth, color_make(k_m.r * 0 + 1, 1, 1), \&next)|' \
+    test_mirror_ray_reaches_probe "" "path_next asked with 1 instead of k_m"
+# Chapter 09: refract's rounding and r; Fresnel's squares; Schlick's terms; the glass rays.
+plant "hint: cos^2(theta_t) not grouped for r = 1" 09_refraction refract.c \
+    's|(1 - r \* r) + r \* r \* (cos_i \* cos_i)|1 - r * r * (1 - cos_i * cos_i)|' \
+    test_refract_equal_indices "" "not 1 - r\^2 \(1 - cos\^2\(theta_i\)\), which rounds"
+plant "hint: d not scaled by r in T" 09_refraction refract.c \
+    's|vec3_scale(d, r)|d|' \
+    test_snell_law "" "d not scaled by r"
+plant "hint: Fresnel's amplitudes averaged, then squared" 09_refraction fresnel.c \
+    's|(r_s \* r_s + r_p \* r_p) / 2|((r_s + r_p) / 2) * ((r_s + r_p) / 2)|' \
+    test_fresnel_exact_values "" "amplitudes averaged, then squared"
+plant "hint: Fresnel's amplitudes not squared" 09_refraction fresnel.c \
+    's|(r_s \* r_s + r_p \* r_p) / 2|(r_s + r_p) / 2|' \
+    test_fresnel_exact_values "" "not squared: they are amplitudes"
+plant "hint: Schlick's R_0 not squared" 09_refraction fresnel.c \
+    's|real R_0 = r \* r;|real R_0 = r;|' \
+    test_schlick_cosines "" "R_0 not squared"
+plant "hint: Schlick's power 4" 09_refraction fresnel.c \
+    's|m \* m \* m \* m \* m|m * m * m * m|' \
+    test_schlick_cosines "" "power is 5"
+plant "hint: Schlick without 1 - R_0" 09_refraction fresnel.c \
+    's|R_0 + (1 - R_0) \* m|R_0 + m|' \
+    test_schlick_cosines "" "\(1 - R_0\) missing"
+plant "hint: depth + 1 given to the glass rays" 09_refraction shade_glass.c \
+    's|R, depth, rays|R, depth + 1, rays|; s|T, depth, rays|T, depth + 1, rays|' \
+    test_glass_weights "" "depth \+ 1 given"
+plant "hint: the transmitted ray along d" 09_refraction shade_glass.c \
+    's|e.T, T, depth|sp->r.d, T, depth|' \
+    test_slab_returns_entry_direction "" "cast along d, not bent"
+plant "hint: the reflected glass ray with weight 1 - R" 09_refraction shade_glass.c \
+    's|mirror_radiance(tr, sp, R, depth|mirror_radiance(tr, sp, T, depth|' \
+    test_glass_weights "" "not 1 - R, which is 0 here"
 # Glass: R and 1 - R swapped; each ray's path coefficient 1 instead of its weight.
 plant "hint: the glass weights swapped" 09_refraction shade_glass.c \
     's|L = color_mul(R, mirror_radiance|L = color_mul(T, mirror_radiance|; s|color_mul(T, transmitted_radiance|color_mul(R, transmitted_radiance|' \

@@ -64,6 +64,7 @@ static void expect_pixel(int i, int j, int nx, int ny, real du, real dv)
         {(i + 0.5) / nx, "du ignored: the loop passes the sample's place inside the pixel, use it, not 0.5"},
         {(i + (double)dv) / nx, "du and dv swapped: du goes with i"},
         {(double)du / nx, "integer division: i / n_x is 0 in C for ints; convert i to real before dividing"},
+        {(i + (double)du) / ny, "u divided by n_y: u goes with n_x, the image's width in pixels"},
         {(nx - 1 - i + (double)du) / nx, "u flipped: i = 0 is the left column, at u near 0"},
     };
     const suspect sv[] = {
@@ -74,6 +75,7 @@ static void expect_pixel(int i, int j, int nx, int ny, real du, real dv)
         {(j + 0.5) / ny, "dv ignored: the loop passes the sample's place inside the pixel, use it, not 0.5"},
         {(j + (double)du) / ny, "du and dv swapped: dv goes with j"},
         {(double)dv / ny, "integer division: j / n_y is 0 in C for ints; convert j to real before dividing"},
+        {(j + (double)dv) / nx, "v divided by n_x: v goes with n_y, the image's height in pixels"},
         {(ny - 1 - j + (double)dv) / ny,
          "v flipped: j = 0 is the bottom row, at v near 0 (the PNG writer flips the rows, not you)"},
     };

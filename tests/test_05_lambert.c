@@ -53,6 +53,8 @@ static void test_irradiance_facing(void **state)
         {0, "nothing from a light straight above: l points from the point towards the light, light.pos - point"},
         {10 / 6.25, "k_d missing: the surface reflects k_d of the irradiance"},
         {0.3 / 6.25, "the light's intensity I missing: L_d = k_d max(0, n . l) I / r^2"},
+        {0.3 * 10 / sqrt(2.5), "r^2 taken as the length |light.pos - point|, not its square (l = (light.pos - point) "
+                               "/ r then is not a unit vector either)"},
         {0.3 / acos(-1.0) * 10 / 6.25, "divided by pi: the scene's diffuseColor is k_d = R / pi already"},
         {(0.3 + 10) / 6.25, "k_d added to I: multiply them, channel by channel (color_mul)"},
     };

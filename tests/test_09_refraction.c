@@ -83,15 +83,14 @@ static void test_refract_equal_indices(void **state)
                      "grazing; take cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i), r = eta_i / eta_t, from the "
                      "cosine",
                      input);
-        assert_vec3_why(d, T, 4 * REAL_EPSILON, input,
-                        "T = r d + (r cos(theta_i) - cos(theta_t)) n, which is d for r = 1; cos(theta_t) = "
-                        "sqrt(1 - |S_t|^2) with |S_t|^2 from the vector d + cos(theta_i) n loses 1 - |S_t|^2 near "
-                        "grazing: take cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i) from the cosine",
-                        NULL, 0);
-        assert_close_why(cos_i, cos_t, 4 * REAL_EPSILON * cos_i, describe("%s: cos_t", input),
-                         "cos^2(theta_t) = 1 - r^2 (1 - cos^2(theta_i)) rounds 1 - cos^2(theta_i) and back: group it "
-                         "as (1 - r^2) + r^2 cos^2(theta_i), which for r = 1 is cos^2(theta_i) exactly",
-                         NULL, 0);
+        /* both are off when cos(theta_t) is not exactly cos(theta_i) */
+        const char *grouping = "T = r d + (r cos(theta_i) - cos(theta_t)) n is d for r = 1 only when cos(theta_t) "
+                               "comes out as cos(theta_i) exactly: take cos^2(theta_t) = (1 - r^2) + r^2 "
+                               "cos^2(theta_i), grouped so; not 1 - r^2 (1 - cos^2(theta_i)), which rounds "
+                               "1 - cos^2(theta_i) and back, nor 1 - |S_t|^2 with |S_t|^2 from the vector d + "
+                               "cos(theta_i) n, which loses 1 - |S_t|^2 near grazing";
+        assert_vec3_why(d, T, 4 * REAL_EPSILON, input, grouping, NULL, 0);
+        assert_close_why(cos_i, cos_t, 4 * REAL_EPSILON * cos_i, describe("%s: cos_t", input), grouping, NULL, 0);
     }
 }
 
@@ -628,9 +627,12 @@ static void test_glass_weights(void **state)
     if (rays[RAY_REFLECTED] != 1 || rays[RAY_REFRACTED] != 0)
         fail_msg("shade_glass, a ray from inside at 60 degrees, past the critical angle of 41.8\n"
                  "    expected 1 reflected ray and no refracted one\n    got      %d and %d\n"
-                 "    likely mistake: a transmitted ray traced past the critical angle (glass_at says it does not "
-                 "transmit: R = 1)",
-                 (int)rays[RAY_REFLECTED], (int)rays[RAY_REFRACTED]);
+                 "    likely mistake: %s",
+                 (int)rays[RAY_REFLECTED], (int)rays[RAY_REFRACTED],
+                 rays[RAY_REFRACTED] != 0 ? "a transmitted ray traced past the critical angle (glass_at says it does "
+                                            "not transmit: R = 1)"
+                                          : "the reflected ray not cast with R = 1: its coefficient is its weight R "
+                                            "(mirror_radiance(tr, sp, R, ...)), not 1 - R, which is 0 here");
     /* --min-weight 0.97, above R = 0.04 and 1 - R = 0.96: neither ray is cast */
     knobs = knobs_of(1, (real)0.97);
     uint64_t cut[RAY_KINDS] = {0};
