@@ -72,6 +72,12 @@ plant "hint: v divided by n_x" 01_camera_rays pixel.c \
 plant "hint: a tangent ray refused by disc > 0" 02_sphere sphere.c \
     's|if (!(disc >= 0))$|if (!(disc > 0))|' \
     test_textbook "" "tangent ray is a hit" "not disc > 0"
+plant "hint: C with + R^2" 02_sphere sphere.c \
+    '0,/real C = vec3_dot(f, f) - s->radius \* s->radius;/s//real C = vec3_dot(f, f) + s->radius * s->radius;/' \
+    test_roots_textbook "" "R\^2 is subtracted, not added"
+plant "hint: a factor 4 in disc = B^2 - A C" 02_sphere sphere.c \
+    's|B \* B - A \* C|B * B - 4 * A * C|' \
+    test_roots_textbook "" "no factor 4"
 plant "hint: l with t_m of the wrong sign" 02_sphere sphere.c \
     's|vec3_scale(r.d, -B / A)|vec3_scale(r.d, B / A)|' \
     test_roots_robust "" "the sign of t_m is wrong"

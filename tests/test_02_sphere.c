@@ -230,11 +230,17 @@ static void expect_roots(const sphere *s, ray r, sphere_formula f, double tolera
         return;
     }
     if (!found) {
-        /* no roots where there are two: the robust discriminant's mistakes that make it negative here */
+        /* no roots where there are two: the discriminant's mistakes that make it negative here, the robust
+         * form's (the first three above) or the textbook's */
+        const suspect_vec3 textbook[] = {
+            {pair(A, B, C + 2 * R2), "C = f.f - R^2: R^2 is subtracted, not added"},
+            {pair(A, B, 4 * C), "disc = B^2 - A C: with B = d.f (half the usual b) there is no factor 4"},
+        };
+        const suspect_vec3 *no_root = f == SPHERE_ROBUST ? mistakes : textbook;
         char why[600] = "";
-        for (size_t k = 0; f == SPHERE_ROBUST && k < 3; k++)
-            if (mistakes[k].value.x != mistakes[k].value.x)
-                snprintf(why + strlen(why), sizeof why - strlen(why), "%s%s", *why ? "; or " : "", mistakes[k].mistake);
+        for (size_t k = 0; k < (f == SPHERE_ROBUST ? 3 : N(textbook)); k++)
+            if (no_root[k].value.x != no_root[k].value.x)
+                snprintf(why + strlen(why), sizeof why - strlen(why), "%s%s", *why ? "; or " : "", no_root[k].mistake);
         fail_msg("%s\n    expected roots %.17g and %.17g\n    got      false (no roots)\n    likely mistake: %s", in,
                  (double)expected.x, (double)expected.y,
                  *why ? why : "the discriminant's sign: disc = B^2 - A C (textbook) or A (R^2 - l.l) (robust)");
