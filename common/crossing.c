@@ -180,8 +180,58 @@ bool triangle_crossing_certain_exact(const vec3 *a, const vec3 *b, const vec3 *c
     return scaled_edges(a, b, c, r, e1, e2, d, f) && decided(e1, e2, d, f);
 }
 
+/* clearly_decided on the data as they are, unscaled, with twice its
+ * constant: where every coordinate is finite and below 2^100 (their
+ * magnitudes sum below it), this test and decided on the scaled edges
+ * compute their determinants from the same numbers up to powers of two, and
+ * each errs from the exact value by at most 4 u' P (u' = 2^-52, the double
+ * arithmetic of both; P <= 6 E1 E2 W for M, 6 E1 E2 F for N, with the
+ * largest |components| of the exact edges) plus what roundings below the
+ * normal doubles add.  So decided's |N| is at least this test's less
+ * 48 u' E1 E2 F <= 48 eps E1 E2 F (eps = REAL_EPSILON >= u'), and its |M|
+ * this test's less 48 u' E1 E2 W; decided's bounds are at most those
+ * clearly_decided adds up (48 eps E1 E2 F and 96 eps E1 E2 W (2 F + L), to
+ * the factor 1 + 2^-20).  The constant 96 eps (1 + 2^-18) here covers both
+ * computations' rounding: the second condition's loss, TRIANGLE_POINT_SLACK
+ * L 48 u' E1 E2 W = 6 u' E1 E2 W L, is a sixteenth of what doubling adds.
+ * Roundings below the normal doubles: here at most 2^-1075 each, multiplied
+ * by at most three factors below 2^103, under 2^-750 in all; in decided
+ * (scaled by 2^-ev, 2^-ed with ev, ed <= 101) under 2^-1000 in its units,
+ * 2^-1000 2^(3 ev + ed) <= 2^-596 in these; the term 2^-250 covers both.
+ * So where this is true, decided on the scaled edges is true (and the data
+ * are finite, which scaled_edges requires); data beyond 2^100 or so small
+ * that |N| or TRIANGLE_POINT_SLACK L |M| falls below 2^-250 go the scaled
+ * way. */
+bool triangle_crossing_clear(const vec3 *va, const vec3 *vb, const vec3 *vc, ray r)
+{
+    const double a[3] = {(double)va->x, (double)va->y, (double)va->z};
+    const double b[3] = {(double)vb->x, (double)vb->y, (double)vb->z};
+    const double c[3] = {(double)vc->x, (double)vc->y, (double)vc->z};
+    const double p[3] = {(double)r.p.x, (double)r.p.y, (double)r.p.z};
+    const double d[3] = {(double)r.d.x, (double)r.d.y, (double)r.d.z};
+    double sum = 0;
+    for (int i = 0; i < 3; i++)
+        sum += fabs(a[i]) + fabs(b[i]) + fabs(c[i]) + fabs(p[i]) + fabs(d[i]);
+    if (!(sum < 0x1p100)) /* also infinity and NaN */
+        return false;
+    double e1[3], e2[3], f[3];
+    for (int i = 0; i < 3; i++) {
+        e1[i] = a[i] - b[i];
+        e2[i] = a[i] - c[i];
+        f[i] = a[i] - p[i];
+    }
+    const double k = 96 * (double)REAL_EPSILON * (1 + 0x1p-18); /* exact: 3 + 3 2^-18 fits in 53 bits */
+    double m = fabs(det_of(e1, e2, d)), n = fabs(det_of(e1, e2, f));
+    double big_e1 = biggest(e1), big_e2 = biggest(e2), big_w = biggest(d), big_f = biggest(f);
+    double big_l = larger(big_e1, big_e2), e12 = big_e1 * big_e2;
+    return n > k * (e12 * big_f) + 0x1p-250 &&
+           2 * k * (e12 * big_w * (2 * big_f + big_l)) + 0x1p-250 < TRIANGLE_POINT_SLACK * big_l * m;
+}
+
 bool triangle_crossing_certain(const vec3 *a, const vec3 *b, const vec3 *c, ray r)
 {
+    if (triangle_crossing_clear(a, b, c, r))
+        return true;
     double e1[3], e2[3], d[3], f[3];
     return scaled_edges(a, b, c, r, e1, e2, d, f) && (clearly_decided(e1, e2, d, f) || decided(e1, e2, d, f));
 }
