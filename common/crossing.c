@@ -209,17 +209,15 @@ bool triangle_crossing_clear(const vec3 *va, const vec3 *vb, const vec3 *vc, ray
     const double c[3] = {(double)vc->x, (double)vc->y, (double)vc->z};
     const double p[3] = {(double)r.p.x, (double)r.p.y, (double)r.p.z};
     const double d[3] = {(double)r.d.x, (double)r.d.y, (double)r.d.z};
-    double sum = 0;
-    for (int i = 0; i < 3; i++)
-        sum += fabs(a[i]) + fabs(b[i]) + fabs(c[i]) + fabs(p[i]) + fabs(d[i]);
+    /* written out, not in loops: the arrays then stay in registers */
+    double sum = (fabs(a[0]) + fabs(a[1]) + fabs(a[2])) + (fabs(b[0]) + fabs(b[1]) + fabs(b[2])) +
+                 (fabs(c[0]) + fabs(c[1]) + fabs(c[2])) + (fabs(p[0]) + fabs(p[1]) + fabs(p[2])) +
+                 (fabs(d[0]) + fabs(d[1]) + fabs(d[2]));
     if (!(sum < 0x1p100)) /* also infinity and NaN */
         return false;
-    double e1[3], e2[3], f[3];
-    for (int i = 0; i < 3; i++) {
-        e1[i] = a[i] - b[i];
-        e2[i] = a[i] - c[i];
-        f[i] = a[i] - p[i];
-    }
+    const double e1[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+    const double e2[3] = {a[0] - c[0], a[1] - c[1], a[2] - c[2]};
+    const double f[3] = {a[0] - p[0], a[1] - p[1], a[2] - p[2]};
     const double k = 96 * (double)REAL_EPSILON * (1 + 0x1p-18); /* exact: 3 + 3 2^-18 fits in 53 bits */
     double m = fabs(det_of(e1, e2, d)), n = fabs(det_of(e1, e2, f));
     double big_e1 = biggest(e1), big_e2 = biggest(e2), big_w = biggest(d), big_f = biggest(f);
