@@ -119,7 +119,9 @@ static bool decided(const double e1[3], const double e2[3], const double d[3], c
 /* end snippet */
 
 /* A quick sufficient test for decided, which the common case (a clear hit)
- * passes at a fraction of the cost.  Each of the six terms of a P is at
+ * passes at a fraction of the cost: |N| > k E1 E2 F + tiny and
+ * 2 k E1 E2 W (2 F + L) + tiny < TRIANGLE_POINT_SLACK L |M| (bounded_by_largest,
+ * which triangle_crossing_clear also calls with its own k and tiny).  Each of the six terms of a P is at
  * most the product of the three largest |components|: P_M <= 6 E1 E2 W,
  * P_N <= 6 E1 E2 F, P_beta <= 6 F E2 W, P_gamma <= 6 E1 F W, so that
  *   8 eps P_N <= 48 eps E1 E2 F,
@@ -130,13 +132,19 @@ static bool decided(const double e1[3], const double e2[3], const double d[3], c
  * 2^-1075 absolutely: 2^-1000 covers all of them.  The right-hand side,
  * TRIANGLE_POINT_SLACK L |M|, and |N| are computed as there.  So where this is true,
  * decided is; where not (and for NaN), decided decides. */
-static bool clearly_decided(const double e1[3], const double e2[3], const double d[3], const double f[3])
+static inline bool bounded_by_largest(const double e1[3], const double e2[3], const double d[3], const double f[3],
+                                      double k, double tiny)
 {
-    const double k = 48 * (double)REAL_EPSILON * (1 + 0x1p-20); /* exact: 3 + 3 2^-20 fits in 53 bits */
     double m = fabs(det_of(e1, e2, d)), n = fabs(det_of(e1, e2, f));
     double big_e1 = biggest(e1), big_e2 = biggest(e2), big_w = biggest(d), big_f = biggest(f);
     double big_l = larger(big_e1, big_e2), e12 = big_e1 * big_e2;
-    return n > k * (e12 * big_f) + 0x1p-1000 && 2 * k * (e12 * big_w * (2 * big_f + big_l)) + 0x1p-1000 < TRIANGLE_POINT_SLACK * big_l * m;
+    return n > k * (e12 * big_f) + tiny && 2 * k * (e12 * big_w * (2 * big_f + big_l)) + tiny < TRIANGLE_POINT_SLACK * big_l * m;
+}
+
+static bool clearly_decided(const double e1[3], const double e2[3], const double d[3], const double f[3])
+{
+    /* k exact: 3 + 3 2^-20 fits in 53 bits */
+    return bounded_by_largest(e1, e2, d, f, 48 * (double)REAL_EPSILON * (1 + 0x1p-20), 0x1p-1000);
 }
 
 /* 0 when every component of v is finite (x - x is then exactly 0), NaN
@@ -218,12 +226,8 @@ bool triangle_crossing_clear(const vec3 *va, const vec3 *vb, const vec3 *vc, ray
     const double e1[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
     const double e2[3] = {a[0] - c[0], a[1] - c[1], a[2] - c[2]};
     const double f[3] = {a[0] - p[0], a[1] - p[1], a[2] - p[2]};
-    const double k = 96 * (double)REAL_EPSILON * (1 + 0x1p-18); /* exact: 3 + 3 2^-18 fits in 53 bits */
-    double m = fabs(det_of(e1, e2, d)), n = fabs(det_of(e1, e2, f));
-    double big_e1 = biggest(e1), big_e2 = biggest(e2), big_w = biggest(d), big_f = biggest(f);
-    double big_l = larger(big_e1, big_e2), e12 = big_e1 * big_e2;
-    return n > k * (e12 * big_f) + 0x1p-250 &&
-           2 * k * (e12 * big_w * (2 * big_f + big_l)) + 0x1p-250 < TRIANGLE_POINT_SLACK * big_l * m;
+    /* k exact: 3 + 3 2^-18 fits in 53 bits */
+    return bounded_by_largest(e1, e2, d, f, 96 * (double)REAL_EPSILON * (1 + 0x1p-18), 0x1p-250);
 }
 
 bool triangle_crossing_certain(const vec3 *a, const vec3 *b, const vec3 *c, ray r)
