@@ -39,10 +39,11 @@ bool triangle_crossing_certain_exact(const vec3 *a, const vec3 *b, const vec3 *c
 
 /* The first of those tests, on the data as they are stored (no scaling by
  * powers of two): true only where triangle_crossing_certain_exact is true,
- * for any input, and true for a clear crossing (a hit well inside a
- * triangle that is not a sliver, a ray not nearly in its plane) whose
- * coordinates are below 2^100 and whose determinants are far above 2^-250
- * (crossing.c proves both).  Where it is false the scaled test decides. */
+ * for any input (crossing.c proves it), and true for a clear crossing (a
+ * triangle that is not a sliver, a ray not nearly in its plane, an origin
+ * not nearly in it) whose coordinates' magnitudes sum below 2^100 and whose
+ * determinants are far above 2^-250 (its suite counts those it takes).
+ * Where it is false the scaled test decides. */
 bool triangle_crossing_clear(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
 
 #endif
