@@ -42,7 +42,8 @@ typedef struct {
 #define FAST_GRID_DEFAULT_SPLIT 48
 
 /* An entry whose `surface` is FAST_GRID_SUB + s stands for the cell's own
- * grid, subs[s]: the only entry of a cell that has one. */
+ * grid, subs[s]: the first entry of a cell that has one, followed by the
+ * surfaces that span the cell (which its grid leaves out). */
 #define FAST_GRID_SUB 0x80000000u
 
 /* A surface's box inside a cell is kept in steps of 1/FAST_GRID_BOX_STEPS of the

@@ -255,17 +255,20 @@ static inline void consider(const fast_grid_entry *entry, const cull_frame *f, b
  * culling: most are large surfaces (a floor's triangles are listed in every
  * cell under it), culled again in every cell until tested once, where a
  * test settles them for the rest of the ray.  A cell with a grid of
- * its own (two levels) lists that grid alone: the ray marches through it. */
+ * its own (two levels) lists that grid first: the ray marches through it,
+ * then takes the cell's other entries, the surfaces that span the cell. */
 static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, search *s, const ray_frame *rf,
                               march_state *ms)
 {
-    const uint32_t first = g->start[m->cell], last = g->start[m->cell + 1];
+    uint32_t first = g->start[m->cell];
+    const uint32_t last = g->start[m->cell + 1];
     if (first == last)
         return;
     const fast_grid_entry *const refs = g->refs;
     if (refs[first].surface >= FAST_GRID_SUB) {
         march(&g->subs[refs[first].surface - FAST_GRID_SUB], s, rf, ms);
-        return;
+        if (++first == last)
+            return; /* no surface spans the cell beside its grid */
     }
     const bool cull = g->cull, use_mailbox = g->mailbox;
     if (!cull || last - first < SIFT_FROM) {
