@@ -246,6 +246,30 @@ static double coordinate(real s, int n)
     return x != x ? 0 : fmax(-limit, fmin(limit, (double)x));
 }
 
+/* Each component of got within tolerance of expected (as assert_vec3_why judges it). */
+static int vec3_within(vec3 expected, vec3 got, double tolerance)
+{
+    return fabs((double)(got.x - expected.x)) <= tolerance && fabs((double)(got.y - expected.y)) <= tolerance &&
+           fabs((double)(got.z - expected.z)) <= tolerance;
+}
+
+/* A lookup reads the texels texel_index gives, so a lookup that is wrong
+ * where texel_index is wrong is the wrap's mistake, not the lookup's: when
+ * the student's texel_index(kind, i, n) is not the wrapped index, says so
+ * (the index of the `axis` a right lookup asks for, what texel_index gave,
+ * and the test that names the wrap's mistake); else NULL. */
+static const char *wrap_mistake(texture_kind kind, long long i, int n, const char *axis)
+{
+    int got = texel_index(kind, i, n);
+    long long expected = wrapped(kind, i, n);
+    if (got == expected)
+        return NULL;
+    return describe("the wrap, not the lookup: the %s index %lld of a texture %d texels %s is texel %lld, but "
+                    "texel_index(%s, %lld, %d) gives %d (test_texel_index_%s names the wrap's mistake)",
+                    axis, i, n, axis[0] == 'c' ? "wide" : "high", expected, kind_name(kind), i, n, got,
+                    kind == TEXTURE_REPEAT ? "repeat" : "clamp");
+}
+
 /* texture_nearest(tex, uv) on a `numbered` texture reads texel (x, y); a
  * failure names the texel read (its colour says which) and the mistake. */
 static void expect_nearest(const scene_texture *tex, mesh_uv uv, int x, int y)
@@ -279,12 +303,20 @@ static void expect_nearest(const scene_texture *tex, mesh_uv uv, int x, int y)
                                       "int overflowed; keep it a long long"
                                     : "texel (0, 0) whatever (u, v): the exercise is still to do"},
     };
-    assert_vec3_why(numbered_colour(x, y), vec3_make(c.r, c.g, c.b), TOL(1),
-                    describe("texture_nearest(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = %.9g; "
-                             "texel (i, j) is (10 i, 10 j, 7) / 255: expected texel (%d, %d)",
-                             kind_name(k), TW, TH, (double)uv.u, (double)uv.v, X, Y, x, y),
-                    "column (long long)(x + 1/2), row (long long)(y + 1/2), each wrapped by texel_index", mistakes,
-                    sizeof mistakes / sizeof mistakes[0]);
+    vec3 expected = numbered_colour(x, y), got = vec3_make(c.r, c.g, c.b);
+    const char *input = describe("texture_nearest(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = "
+                                 "%.9g; texel (i, j) is (10 i, 10 j, 7) / 255: expected texel (%d, %d)",
+                                 kind_name(k), TW, TH, (double)uv.u, (double)uv.v, X, Y, x, y);
+    /* a wrong texel where texel_index is wrong: the wrap is named, not a rounding */
+    const char *wrap = NULL;
+    if (!vec3_within(expected, got, TOL(1)) && !(wrap = wrap_mistake(k, cx, TW, "column")))
+        wrap = wrap_mistake(k, cy, TH, "row");
+    if (wrap)
+        assert_vec3_why(expected, got, TOL(1), input, wrap, NULL, 0);
+    else
+        assert_vec3_why(expected, got, TOL(1), input,
+                        "column (long long)(x + 1/2), row (long long)(y + 1/2), each wrapped by texel_index", mistakes,
+                        sizeof mistakes / sizeof mistakes[0]);
 }
 
 /* Nearest: texel (x, y) is centred on u = x / W, v = 1 - y / H (v up, rows
@@ -403,13 +435,12 @@ static vec3 bilinear_as(const scene_texture *tex, double x, double y, bilinear_v
     return vec3_add(vec3_scale(top, (real)(1 - wt)), vec3_scale(bottom, (real)wt));
 }
 
-/* texture_bilinear(tex, uv) against the blend computed here; a failure names
- * the input and the mistake whose value was got.  x = u W and y = (1 - v) H
- * are computed as texture.c does; the fractions s, t then agree to a
- * rounding of x and y (eps |x| / 2 and eps |y| / 2: the weights move by
- * that much, the texels being in [0, 1]), and the result to that plus a few
- * roundings of size 1: 32 eps 4 + 2 eps (|x| + |y|), twice the bound. */
-static void expect_bilinear(const scene_texture *tex, mesh_uv uv)
+/* texture_bilinear(tex, uv) is `expected` within `tolerance` (`known` says
+ * how the test knows it); a failure names the input and the mistake whose
+ * value was got, or the wrap when texel_index is wrong for a texel the
+ * blend needs. */
+static void expect_bilinear_is(const scene_texture *tex, mesh_uv uv, vec3 expected, double tolerance,
+                               const char *known)
 {
     static const char *const why[BILINEAR_VARIANTS] = {
         [BILINEAR_MINUS_HALF] = "x - 1/2 (texel centres at x + 1/2): in this course texel i's centre is at x = i, "
@@ -442,13 +473,37 @@ static void expect_bilinear(const scene_texture *tex, mesh_uv uv)
         mistakes[n++] = (suspect_vec3){bilinear_as(tex, x, y, (bilinear_variant)v), why[v]};
     mistakes[n++] = (suspect_vec3){texel_vec3(tex, 0, 0), "texel (0, 0) whatever (u, v): the exercise is still to do"};
     color c = texture_bilinear(tex, uv);
-    assert_vec3_why(bilinear_as(tex, x, y, BILINEAR_RIGHT), vec3_make(c.r, c.g, c.b),
-                    TOL(4) + 2 * REAL_EPSILON * (fabs(x) + fabs(y)),
-                    describe("texture_bilinear(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = %.9g",
-                             kind_name(tex->kind), tex->image.width, tex->image.height, (double)uv.u, (double)uv.v,
-                             x, y),
-                    "x0 = floor(x), y0 = floor(y), s = x - x0, t = y - y0; blend T(x0, y0), T(x0 + 1, y0) by s, the "
-                    "same for row y0 + 1, then the two rows by t", mistakes, n);
+    vec3 got = vec3_make(c.r, c.g, c.b);
+    const char *input =
+        describe("texture_bilinear(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = %.9g%s%s",
+                 kind_name(tex->kind), tex->image.width, tex->image.height, (double)uv.u, (double)uv.v, x, y,
+                 known ? "; " : "", known ? known : "");
+    /* a wrong blend where texel_index is wrong for one of the four texels: the wrap is named */
+    const char *wrap = NULL;
+    long long x0 = (long long)floor(x), y0 = (long long)floor(y);
+    for (int k = 0; k < 4 && !wrap && !vec3_within(expected, got, tolerance); k++)
+        wrap = k < 2 ? wrap_mistake(tex->kind, x0 + k, tex->image.width, "column")
+                     : wrap_mistake(tex->kind, y0 + k - 2, tex->image.height, "row");
+    if (wrap)
+        assert_vec3_why(expected, got, tolerance, input, wrap, NULL, 0);
+    else
+        assert_vec3_why(expected, got, tolerance, input,
+                        "x0 = floor(x), y0 = floor(y), s = x - x0, t = y - y0; blend T(x0, y0), T(x0 + 1, y0) by s, "
+                        "the same for row y0 + 1, then the two rows by t",
+                        mistakes, n);
+}
+
+/* texture_bilinear(tex, uv) against the blend computed here.  x = u W and
+ * y = (1 - v) H are computed as texture.c does; the fractions s, t then
+ * agree to a rounding of x and y (eps |x| / 2 and eps |y| / 2: the weights
+ * move by that much, the texels being in [0, 1]), and the result to that
+ * plus a few roundings of size 1: 32 eps 4 + 2 eps (|x| + |y|), twice the
+ * bound. */
+static void expect_bilinear(const scene_texture *tex, mesh_uv uv)
+{
+    double x = coordinate(uv.u, tex->image.width), y = coordinate(1 - uv.v, tex->image.height);
+    expect_bilinear_is(tex, uv, bilinear_as(tex, x, y, BILINEAR_RIGHT), TOL(4) + 2 * REAL_EPSILON * (fabs(x) + fabs(y)),
+                       NULL);
 }
 
 /* Bilinear: at a texel's centre the texel itself; between centres the
@@ -461,26 +516,26 @@ static void test_bilinear(void **state)
     scene_texture tex = numbered(TEXTURE_CLAMP);
     for (int k = 0; k < 200; k++) {
         double x = uniform() * (TW - 1), y = uniform() * (TH - 1); /* between the first and last centres */
-        color c = texture_bilinear(&tex, (mesh_uv){(real)(x / TW), (real)(1 - y / TH)});
-        assert_close(10 * x / 255, c.r, TOL(16));
-        assert_close(10 * y / 255, c.g, TOL(16));
-        assert_close(7 / 255.0, c.b, TOL(4));
+        vec3 linear = vec3_make((real)(10 * x / 255), (real)(10 * y / 255), (real)(7 / 255.0));
+        expect_bilinear_is(&tex, (mesh_uv){(real)(x / TW), (real)(1 - y / TH)}, linear, TOL(16),
+                           "texel (i, j) is (10 i, 10 j, 7) / 255, linear in i and j, so the blend at (x, y) is "
+                           "(10 x, 10 y, 7) / 255");
     }
     expect_bilinear(&tex, (mesh_uv){(real)(3.0 / TW), (real)(1 - 1.0 / TH)});
     /* half-way between the last column and the one after it */
     real u = (real)((TW - 0.5) / TW), v = (real)(1 - 1.0 / TH);
-    color clamped = texture_bilinear(&tex, (mesh_uv){u, v});
-    assert_close(10 * (TW - 1) / 255.0, clamped.r, TOL(4));
+    expect_bilinear_is(&tex, (mesh_uv){u, v}, numbered_colour(TW - 1, 1), TOL(4),
+                       "clamped, the column after the last is the last: texel (4, 1) alone");
     scene_texture repeat = numbered(TEXTURE_REPEAT);
-    color wrapped = texture_bilinear(&repeat, (mesh_uv){u, v});
-    assert_close(0.5 * 10 * (TW - 1) / 255.0, wrapped.r, TOL(4)); /* (last + first) / 2, the first is 0 */
-    assert_close(10 / 255.0, wrapped.g, TOL(4));
-    /* nearest and bilinear agree at every centre */
+    vec3 last_first = vec3_scale(vec3_add(numbered_colour(TW - 1, 1), numbered_colour(0, 1)), (real)0.5);
+    expect_bilinear_is(&repeat, (mesh_uv){u, v}, last_first, TOL(4),
+                       "repeated, the column after the last is the first: (texel (4, 1) + texel (0, 1)) / 2");
+    /* at every centre the texel itself (s = t = 0, up to the rounding of x = u W) */
     for (int y = 0; y < TH; y++)
         for (int x = 0; x < TW; x++) {
             mesh_uv at = {(real)((double)x / TW), (real)(1 - (double)y / TH)};
-            color n = texture_lookup(&repeat, at, TEXTURE_NEAREST), b = texture_lookup(&repeat, at, TEXTURE_BILINEAR);
-            assert_vec3_close(vec3_make(n.r, n.g, n.b), vec3_make(b.r, b.g, b.b), TOL(4));
+            expect_bilinear_is(&repeat, at, numbered_colour(x, y), TOL(4),
+                               describe("at the centre of texel (%d, %d), that texel alone", x, y));
         }
 }
 
