@@ -883,9 +883,14 @@ static void test_textured_sphere(void **state)
     int x = (int)(u * 16 + 0.5) % 16, y = (int)((1 - v) * 8 + 0.5) % 8;
     const unsigned char *texel = desc.textures[tk].image.rgb + (y * 16 + x) * 3;
     /* the light straight above the point: cos = 1, r = 3, I / r^2 = 1 */
-    assert_close(texel[0] / 255.0, L.r, 1e3 * REAL_EPSILON);
-    assert_close(texel[1] / 255.0, L.g, 1e3 * REAL_EPSILON);
-    assert_close(texel[2] / 255.0, L.b, 1e3 * REAL_EPSILON);
+    assert_vec3_why(vec3_make((real)(texel[0] / 255.0), (real)(texel[1] / 255.0), (real)(texel[2] / 255.0)),
+                    vec3_make(L.r, L.g, L.b), 1e3 * REAL_EPSILON,
+                    describe("a textured sphere lit straight above the point at u = %.9g, v = %.9g: texel (%d, %d) of "
+                             "16 x 8",
+                             u, v, x, y),
+                    "the diffuse colour is the texel texture_nearest reads at the sphere's (u, v): column (long "
+                    "long)(u W + 1/2), row (long long)((1 - v) H + 1/2) (test_nearest names its mistakes)",
+                    NULL, 0);
     assert_false(texel[0] == texel[1] && texel[1] == texel[2]); /* a coloured texel, not magenta, not grey */
     scene_free(&desc);
 }
