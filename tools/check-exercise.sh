@@ -23,18 +23,20 @@
 #     ("EXERCISE name:" of the solution, "TODO name:" of the skeleton), or
 #     calls a static function that does (the compiler inlines it), in
 #     solutions/NN_name/FILE.c when there is one (the instructor's copy),
-#     else in the student's file; the given code of an exercise file
-#     (chapter 10's interpolate_uv) compiles the same for everyone;
+#     else as reference/exercise-functions.txt lists them (a student's copy
+#     and the autograder: tools/handout.sh writes it from solutions/, so a
+#     submission without its TODO comments is compared all the same), else
+#     in the student's file; the given code of an exercise file (chapter
+#     10's interpolate_uv) compiles the same for everyone;
 #   - of at least MIN_INSTRUCTIONS (40) instructions in the reference: a
 #     shorter one is a formula of a line or two, which correct solutions
 #     written otherwise compile to the same code (two of four ways of writing
 #     interpolate_vec3's one line give the reference's 30 instructions).
+#
+# check-exercise.sh --list FILE.c... prints "NN_name/FILE.c function" for
+# each exercise function of the solution files given (what handout.sh keeps).
 set -u
 MIN_INSTRUCTIONS=40
-reference=${1:?usage: check-exercise.sh REFERENCE SOURCE_DIR OBJECT_DIR FILE.c...}
-sources=${2:?} objects=${3:?}
-case $reference in /*) ;; *) reference=$(pwd)/$reference ;; esac
-shift 3
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 status=0
@@ -82,6 +84,19 @@ exercise_functions() {
                 if (marked[order[k]] && !static_[order[k]]) print order[k]
         }' "$1" | sort -u
 }
+if [ "${1:-}" = --list ]; then
+    shift
+    for file in "$@"; do
+        exercise_functions "$file" | sed "s|^|$(basename "$(dirname "$file")")/$(basename "$file") |"
+    done
+    exit 0
+fi
+reference=${1:?usage: check-exercise.sh REFERENCE SOURCE_DIR OBJECT_DIR FILE.c...}
+sources=${2:?} objects=${3:?}
+case $reference in /*) ;; *) reference=$(pwd)/$reference ;; esac
+shift 3
+# In a student's copy, the exercise functions as handout.sh listed them from solutions/.
+listed=$(dirname "$(dirname "$reference")")/exercise-functions.txt
 # The instructions of function $2 in object $1, without addresses, bytes or relocation targets.
 instructions() {
     objdump -d --no-show-raw-insn --disassemble="$2" "$1" 2>/dev/null |
@@ -120,8 +135,14 @@ for file in "$@"; do
         continue
     fi
     marked=solutions/${sources##*/}/$file
-    [ -f "$marked" ] || marked=$src
-    for f in $(exercise_functions "$marked" | grep -xF -- "$allowed"); do
+    if [ -f "$marked" ]; then
+        exercise=$(exercise_functions "$marked")
+    elif [ -f "$listed" ]; then
+        exercise=$(awk -v f="${sources##*/}/$file" '$1 == f { print $2 }' "$listed")
+    else
+        exercise=$(exercise_functions "$src")
+    fi
+    for f in $(printf '%s\n' "$exercise" | grep -xF -- "$allowed"); do
         theirs=$(instructions "$ref" "$f")
         [ "$(printf '%s\n' "$theirs" | grep -c .)" -ge "$MIN_INSTRUCTIONS" ] || continue
         mine=$(instructions "$obj" "$f")
