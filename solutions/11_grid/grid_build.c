@@ -30,7 +30,8 @@ void grid_resolution(const double extent[3], long surfaces, double density, long
         }
         if (cells <= (double)max_cells)
             return;
-        s *= 0.99 * pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1)); /* rounding overshot the cap */
+        /* too many cells: shrink s, by a tenth at most, and round again */
+        s *= fmax(0.9, 0.99 * pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1)));
     }
     /* STUB
     (void)extent, (void)surfaces, (void)density, (void)max_cells;
