@@ -50,7 +50,7 @@ void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int 
         /* where the box starts and ends, in cells from the grid's low corner */
         real f_lo = (vec3_axis(box_lo, a) - vec3_axis(g->lo, a)) / vec3_axis(g->cell, a);
         real f_hi = (vec3_axis(box_hi, a) - vec3_axis(g->lo, a)) / vec3_axis(g->cell, a);
-        first[a] = real_to_index(-real_floor(-f_lo) - 1, 0, g->n[a]); /* ceil(f_lo) - 1 */
+        first[a] = real_to_index(real_ceil(f_lo) - 1, 0, g->n[a]);
         last[a] = real_to_index(real_floor(f_hi), -1, g->n[a] - 1);
     }
     /* STUB
