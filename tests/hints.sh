@@ -101,6 +101,21 @@ for t in test_interpolate_uv test_vertex_normal test_smooth_shading; do
         's|vec3_scale(A_b, beta)), vec3_scale(A_c, gamma)|vec3_scale(A_b, gamma)), vec3_scale(A_c, beta)|' \
         "$t" "" "likely mistake: beta and gamma swapped"
 done
+# Chapter 11: the resolution without the cap, with a shrink of a half a try,
+# with the cube root for a flat scene; the entry with no case for inv_d = 0
+# (a ray along an axis then visits no cell: the entry named, not dda_step).
+plant "hint: the resolution over the cap" 11_grid grid_build.c \
+    's|if (cells <= (double)max_cells)|if (cells > 0)|' \
+    test_resolution "" "cap 990" "likely mistake: the cap"
+plant "hint: the resolution shrinks too far" 11_grid grid_build.c \
+    's|s \*= fmax(0.9, 0.99 \* pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1)));|s *= 0.5;|' \
+    test_resolution "" "got      10 x 2 x 5" "by a tenth at most a try"
+plant "hint: the cube root for a flat scene" 11_grid grid_build.c \
+    's|pow(fmax(wanted, 1) / volume, 1.0 / spanned)|pow(fmax(wanted, 1) / volume, 1.0 / 3)|' \
+    test_resolution "" "flat scene" "not the cube root"
+plant "hint: the entry with no case for inv_d = 0" 11_grid grid_march.c \
+    's|if (inv_d\[a\] == 0) {|if (inv_d[a] == 0 \&\& t0 == NULL) {|' \
+    test_dda_axis_steps "dda_step along" "0 cells" "likely mistake: enter: a component d_a = \+0 or -0"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"
