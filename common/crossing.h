@@ -33,8 +33,17 @@
 bool triangle_crossing_certain(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
 
 /* The same answer, always computed in full: triangle_crossing_certain first
- * tries a cheaper sufficient test and calls this one only where that test
- * cannot decide.  (The tests compare the two.) */
+ * tries cheaper sufficient tests and calls this one only where they cannot
+ * decide.  (The tests compare the two.) */
 bool triangle_crossing_certain_exact(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
+
+/* The first of those tests, on the data as they are stored (no scaling by
+ * powers of two): true only where triangle_crossing_certain_exact is true,
+ * for any input (crossing.c proves it), and true for a clear crossing (a
+ * triangle that is not a sliver, a ray not nearly in its plane, an origin
+ * not nearly in it) whose coordinates' magnitudes sum below 2^100 and whose
+ * determinants are far above 2^-250 (its suite counts those it takes).
+ * Where it is false the scaled test decides. */
+bool triangle_crossing_clear(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
 
 #endif

@@ -75,6 +75,26 @@ static bool is_square(long n)
     return root * root == n;
 }
 
+/* Whether v is inside the range of number knob k (knob.choices); if not, the message names the
+ * option, the value and the range. */
+static bool in_range(const knob *k, const char *what, double v, const char *value, const char *program, FILE *err)
+{
+    if (!k->choices)
+        return true;
+    const char *low = k->choices[0], *high = k->choices[1];
+    bool above = low[0] == '>';
+    double lowest = strtod(low + above, NULL), highest = high ? strtod(high, NULL) : INFINITY;
+    if ((above ? v > lowest : v >= lowest) && v <= highest)
+        return true;
+    if (above)
+        option_error(err, program, "--%s: '%s' is not %s above %s%s%s", k->name, value, what, low + 1,
+                     high ? " and at most " : "", high ? high : "");
+    else
+        option_error(err, program, "--%s: '%s' is not %s from %s%s%s", k->name, value, what, low,
+                     high ? " to " : " up", high ? high : "");
+    return false;
+}
+
 static bool set_knob(const knob *k, const char *value, const char *program, FILE *err)
 {
     switch (k->kind) {
@@ -97,6 +117,8 @@ static bool set_knob(const knob *k, const char *value, const char *program, FILE
             option_error(err, program, "--%s: '%s' is not an integer", k->name, value);
             return false;
         }
+        if (!in_range(k, "an integer", (double)v, value, program, err))
+            return false;
         *(int *)k->target = (int)v;
         return true;
     }
@@ -108,6 +130,8 @@ static bool set_knob(const knob *k, const char *value, const char *program, FILE
             option_error(err, program, "--%s: '%s' is not a finite number", k->name, value);
             return false;
         }
+        if (!in_range(k, "a number", (double)(real)v, value, program, err)) /* the value the knob will hold */
+            return false;
         *(real *)k->target = (real)v;
         return true;
     }

@@ -47,7 +47,9 @@ typedef struct {
     const char *name;            /* the long option, without the dashes */
     knob_kind kind;
     void *target;                /* holds the default on entry */
-    const char *const *choices;  /* KNOB_CHOICE: the words, NULL-terminated */
+    const char *const *choices;  /* KNOB_CHOICE: the words, NULL-terminated; KNOB_INT, KNOB_REAL: NULL (any
+                                  * value) or the range, {lowest, highest} or {lowest, NULL}, numbers in words,
+                                  * inclusive but for a lowest written ">x" (above x) */
     const char *help;
 } knob;
 

@@ -21,6 +21,7 @@ typedef float real;
 #define real_abs fabsf
 #define real_pow powf
 #define real_floor floorf
+#define real_ceil ceilf
 #define real_fmax fmaxf
 #define real_fmin fminf
 #define real_copysign copysignf
@@ -35,6 +36,7 @@ typedef double real;
 #define real_abs fabs
 #define real_pow pow
 #define real_floor floor
+#define real_ceil ceil
 #define real_fmax fmax
 #define real_fmin fmin
 #define real_copysign copysign

@@ -1,6 +1,7 @@
 #include "texture_image.h"
 
 #include <limits.h>
+#include <stdatomic.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
@@ -117,4 +118,17 @@ void texture_image_free(texture_image *t)
 {
     stbi_image_free(t->rgb);
     *t = (texture_image){0};
+}
+
+color texture_image_outside(const texture_image *t, int x, int y)
+{
+    int cx = x < 0 ? 0 : x >= t->width ? t->width - 1 : x;
+    int cy = y < 0 ? 0 : y >= t->height ? t->height - 1 : y;
+    static atomic_flag told = ATOMIC_FLAG_INIT;
+    if (!atomic_flag_test_and_set(&told))
+        fprintf(stderr,
+                "texture_image_texel: texel (%d, %d) is outside the %d x %d image (columns 0 to %d, rows 0 to %d): "
+                "an index not wrapped into the image; texel (%d, %d) read instead\n",
+                x, y, t->width, t->height, t->width - 1, t->height - 1, cx, cy);
+    return texture_image_texel(t, cx, cy);
 }

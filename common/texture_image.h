@@ -42,10 +42,18 @@ int texture_image_load(const char *path, texture_image *t, char *err, size_t err
 
 void texture_image_free(texture_image *t);
 
+/* The edge texel nearest to (x, y), an index outside the image; the first
+ * such read of the process says on stderr which index, in which image. */
+color texture_image_outside(const texture_image *t, int x, int y);
+
 /* The texel at column x, row y from the top (0 <= x < width, 0 <= y <
- * height), each channel byte / 255: the stored value, with no gamma taken off. */
+ * height), each channel byte / 255: the stored value, with no gamma taken off.
+ * An index outside the image (a column or row not wrapped into it) is never
+ * read: texture_image_outside clamps it and says so. */
 static inline color texture_image_texel(const texture_image *t, int x, int y)
 {
+    if (x < 0 || x >= t->width || y < 0 || y >= t->height)
+        return texture_image_outside(t, x, y);
     const unsigned char *p = t->rgb + ((size_t)y * (size_t)t->width + (size_t)x) * 3;
     return color_make((real)p[0] / 255, (real)p[1] / 255, (real)p[2] / 255);
 }

@@ -195,6 +195,41 @@ plant "hint: the glass weights swapped" 09_refraction shade_glass.c \
 plant "hint: the glass rays traced with coefficient 1" 09_refraction shade_glass.c \
     's|mirror_radiance(tr, sp, R, depth|mirror_radiance(tr, sp, color_make(1, 1, 1), depth|; s|transmitted_radiance(tr, sp, e.T, T, depth|transmitted_radiance(tr, sp, e.T, color_make(1, 1, 1), depth|' \
     test_glass_weights "" "min-weight 0\\.97" "coefficient other than its weight"
+# Chapter 10: a wrap that leaves C's negative remainder is named as the wrap in
+# the lookups, not as their rounding; the lookups' own mistakes are named.
+plant "hint: a repeat wrap without the fix for a negative %, in nearest" 10_interpolation texture.c \
+    's|return (int)(m < 0 ? m + n : m);|return (int)m;|' \
+    test_nearest_quirk "dropped the fraction" "the wrap, not the lookup" "texel_index\(RepeatTexture, -1, 5\) gives -1"
+plant "hint: a repeat wrap without the fix for a negative %, in bilinear" 10_interpolation texture.c \
+    's|return (int)(m < 0 ? m + n : m);|return (int)m;|' \
+    test_bilinear_random "" "the wrap, not the lookup" "test_texel_index_repeat"
+plant "hint: nearest without + 1/2" 10_interpolation texture.c \
+    's|(long long)(x + (real)0.5)|(long long)x|; s|(long long)(y + (real)0.5)|(long long)y|' \
+    test_nearest "the wrap" "dropped the fraction without adding 1/2 first"
+plant "hint: bilinear's weights along x swapped" 10_interpolation texture.c \
+    's|texture_image_texel(img, x0, y0), 1 - s)|texture_image_texel(img, x0, y0), s)|; s|texture_image_texel(img, x1, y0), s)|texture_image_texel(img, x1, y0), 1 - s)|; s|texture_image_texel(img, x0, y1), 1 - s)|texture_image_texel(img, x0, y1), s)|; s|texture_image_texel(img, x1, y1), s)|texture_image_texel(img, x1, y1), 1 - s)|' \
+    test_bilinear "" "likely mistake: the weights along x swapped"
+# interpolate_vec3 with beta and gamma swapped: named by the tests of the given code that calls it.
+for t in test_interpolate_uv test_vertex_normal test_smooth_shading; do
+    plant "hint: beta and gamma swapped, in $t" 10_interpolation interpolate.c \
+        's|vec3_scale(A_b, beta)), vec3_scale(A_c, gamma)|vec3_scale(A_b, gamma)), vec3_scale(A_c, beta)|' \
+        "$t" "" "likely mistake: beta and gamma swapped"
+done
+# Chapter 11: the resolution without the cap, with a shrink of a half a try,
+# with the cube root for a flat scene; the entry with no case for inv_d = 0
+# (a ray along an axis then visits no cell: the entry named, not dda_step).
+plant "hint: the resolution over the cap" 11_grid grid_build.c \
+    's|if (cells <= (double)max_cells)|if (cells > 0)|' \
+    test_resolution "" "cap 990" "likely mistake: the cap"
+plant "hint: the resolution shrinks too far" 11_grid grid_build.c \
+    's|s \*= fmax(0.9, 0.99 \* pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1)));|s *= 0.5;|' \
+    test_resolution "" "got      10 x 2 x 5" "by a tenth at most a try"
+plant "hint: the cube root for a flat scene" 11_grid grid_build.c \
+    's|pow(fmax(wanted, 1) / volume, 1.0 / spanned)|pow(fmax(wanted, 1) / volume, 1.0 / 3)|' \
+    test_resolution "" "flat scene" "not the cube root"
+plant "hint: the entry with no case for inv_d = 0" 11_grid grid_march.c \
+    's|if (inv_d\[a\] == 0) {|if (inv_d[a] == 0 \&\& t0 == NULL) {|' \
+    test_dda_axis_steps "dda_step along" "0 cells" "likely mistake: enter: a component d_a = \+0 or -0"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"

@@ -32,17 +32,41 @@ static vec3 random_vec3(double size)
     return vec3_make(x, y, z);
 }
 
+/* Each component of got within tolerance of expected (as assert_vec3_why judges it). */
+static int vec3_within(vec3 expected, vec3 got, double tolerance)
+{
+    return fabs((double)(got.x - expected.x)) <= tolerance && fabs((double)(got.y - expected.y)) <= tolerance &&
+           fabs((double)(got.z - expected.z)) <= tolerance;
+}
+
+/* The suspects of in[0..n) whose value is got's (within tolerance), each
+ * text once (several variants of one mistake may give the same texel), into
+ * out; returns how many. */
+static size_t matching_once(suspect_vec3 *out, const suspect_vec3 *in, size_t n, vec3 got, double tolerance)
+{
+    size_t kept = 0;
+    for (size_t k = 0; k < n; k++) {
+        int seen = !vec3_within(in[k].value, got, tolerance);
+        for (size_t j = 0; j < kept && !seen; j++)
+            seen = out[j].mistake == in[k].mistake;
+        if (!seen)
+            out[kept++] = in[k];
+    }
+    return kept;
+}
+
 /* ---- barycentric interpolation ---------------------------------------------------------------- */
 
-/* interpolate_vec3(A_a, A_b, A_c, beta, gamma) is `expected` within
- * `tolerance`; a failure names the input and the mistake whose value was got. */
-static void expect_interpolate(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma, vec3 expected, double tolerance)
+/* The values typical mistakes of interpolate_vec3 give for A_a, A_b, A_c at
+ * (beta, gamma), and what to say about each. */
+#define INTERPOLATE_MISTAKES 12
+static void interpolate_mistakes(suspect_vec3 mistakes[INTERPOLATE_MISTAKES], vec3 A_a, vec3 A_b, vec3 A_c, real beta,
+                                 real gamma)
 {
-    vec3 got = interpolate_vec3(A_a, A_b, A_c, beta, gamma);
     real alpha = 1 - beta - gamma;
 #define MIX(wa, wb, wc) vec3_add(vec3_add(vec3_scale(A_a, (wa)), vec3_scale(A_b, (wb))), vec3_scale(A_c, (wc)))
     const char *wrong_vertex = "the weights belong to the wrong vertices: alpha A_a + beta A_b + gamma A_c";
-    const suspect_vec3 mistakes[] = {
+    const suspect_vec3 all[INTERPOLATE_MISTAKES] = {
         {MIX(alpha, gamma, beta), "beta and gamma swapped: beta weighs vertex b, gamma vertex c"},
         {MIX(beta, alpha, gamma), "alpha and beta swapped: alpha = 1 - beta - gamma weighs vertex a"},
         {MIX(gamma, beta, alpha), "alpha and gamma swapped: alpha = 1 - beta - gamma weighs vertex a"},
@@ -58,12 +82,31 @@ static void expect_interpolate(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gam
         {A_a, "A_a whatever beta and gamma: the exercise is still to do"},
     };
 #undef MIX
+    for (int k = 0; k < INTERPOLATE_MISTAKES; k++)
+        mistakes[k] = all[k];
+}
+
+/* "A_a = (x, y, z), A_b = ..., A_c = ..., beta = b, gamma = c": an interpolation's input, for a message. */
+static const char *interpolate_input(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma)
+{
+    return describe("A_a = (%.9g, %.9g, %.9g), A_b = (%.9g, %.9g, %.9g), A_c = (%.9g, %.9g, %.9g), beta = %.17g, "
+                    "gamma = %.17g",
+                    (double)A_a.x, (double)A_a.y, (double)A_a.z, (double)A_b.x, (double)A_b.y, (double)A_b.z,
+                    (double)A_c.x, (double)A_c.y, (double)A_c.z, (double)beta, (double)gamma);
+}
+
+static const char *const interpolate_hint = "A = (1 - beta - gamma) A_a + beta A_b + gamma A_c";
+
+/* interpolate_vec3(A_a, A_b, A_c, beta, gamma) is `expected` within
+ * `tolerance`; a failure names the input and the mistake whose value was got. */
+static void expect_interpolate(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma, vec3 expected, double tolerance)
+{
+    vec3 got = interpolate_vec3(A_a, A_b, A_c, beta, gamma);
+    suspect_vec3 mistakes[INTERPOLATE_MISTAKES];
+    interpolate_mistakes(mistakes, A_a, A_b, A_c, beta, gamma);
     assert_vec3_why(expected, got, tolerance,
-                    describe("interpolate_vec3(A_a = (%.9g, %.9g, %.9g), A_b = (%.9g, %.9g, %.9g), A_c = (%.9g, %.9g, "
-                             "%.9g), beta = %.17g, gamma = %.17g)",
-                             (double)A_a.x, (double)A_a.y, (double)A_a.z, (double)A_b.x, (double)A_b.y, (double)A_b.z,
-                             (double)A_c.x, (double)A_c.y, (double)A_c.z, (double)beta, (double)gamma),
-                    "A = (1 - beta - gamma) A_a + beta A_b + gamma A_c", mistakes, sizeof mistakes / sizeof mistakes[0]);
+                    describe("interpolate_vec3(%s)", interpolate_input(A_a, A_b, A_c, beta, gamma)), interpolate_hint,
+                    mistakes, INTERPOLATE_MISTAKES);
 }
 
 /* At the vertices the attribute is the vertex's own, exactly (weights 1, 0,
@@ -108,23 +151,42 @@ static void test_interpolate_random(void **state)
         vec3 sum = vec3_add(interpolate_vec3(A[0], A[1], A[2], beta, gamma),
                             interpolate_vec3(B[0], B[1], B[2], beta, gamma));
         vec3 of_sum = interpolate_vec3(vec3_add(A[0], B[0]), vec3_add(A[1], B[1]), vec3_add(A[2], B[2]), beta, gamma);
-        assert_vec3_close(sum, of_sum, TOL(8));
+        assert_vec3_why(sum, of_sum, TOL(8),
+                        describe("interpolate_vec3 of A + B against interpolate_vec3 of A plus of B, at beta = %.17g, "
+                                 "gamma = %.17g",
+                                 (double)beta, (double)gamma),
+                        "the interpolation is linear in the attributes: each vertex's value times its weight, "
+                        "nothing added or multiplied that depends on the values",
+                        NULL, 0);
     }
 }
 
-/* Texture coordinates interpolate the same way (u and v each). */
+/* interpolate_uv(a, b, c, beta, gamma) is (u, v) within `tolerance`.
+ * interpolate_uv is given: it interpolates (u, v, 0) with interpolate_vec3,
+ * so a failure names interpolate_vec3's mistake (its values as (u, v, 0)). */
+static void expect_uv(mesh_uv a, mesh_uv b, mesh_uv c, real beta, real gamma, double u, double v, double tolerance)
+{
+    mesh_uv got = interpolate_uv(a, b, c, beta, gamma);
+    vec3 A_a = {a.u, a.v, 0}, A_b = {b.u, b.v, 0}, A_c = {c.u, c.v, 0};
+    suspect_vec3 mistakes[INTERPOLATE_MISTAKES];
+    interpolate_mistakes(mistakes, A_a, A_b, A_c, beta, gamma);
+    assert_vec3_why(vec3_make((real)u, (real)v, 0), vec3_make(got.u, got.v, 0), tolerance,
+                    describe("interpolate_uv (given: interpolate_vec3 of (u, v, 0)) with %s, as (u, v, 0)",
+                             interpolate_input(A_a, A_b, A_c, beta, gamma)),
+                    interpolate_hint, mistakes, INTERPOLATE_MISTAKES);
+}
+
+/* Texture coordinates interpolate the same way (u and v each): at vertex b
+ * exactly b's, inside the blend (a few roundings of values up to 2.5). */
 static void test_interpolate_uv(void **state)
 {
     (void)state;
     mesh_uv a = {0.125, 0.75}, b = {2.5, -1.25}, c = {-0.375, 0.5};
-    mesh_uv at_b = interpolate_uv(a, b, c, 1, 0);
-    assert_close(2.5, at_b.u, 0);
-    assert_close(-1.25, at_b.v, 0);
+    expect_uv(a, b, c, 1, 0, 2.5, -1.25, 0);
     for (int k = 0; k < 100; k++) {
         real beta = between(0, 1), gamma = between(0, 1 - beta), alpha = 1 - beta - gamma;
-        mesh_uv uv = interpolate_uv(a, b, c, beta, gamma);
-        assert_close(alpha * a.u + beta * b.u + gamma * c.u, uv.u, TOL(4));
-        assert_close(alpha * a.v + beta * b.v + gamma * c.v, uv.v, TOL(4));
+        expect_uv(a, b, c, beta, gamma, alpha * a.u + beta * b.u + gamma * c.u, alpha * a.v + beta * b.v + gamma * c.v,
+                  TOL(4));
     }
 }
 
@@ -246,6 +308,23 @@ static double coordinate(real s, int n)
     return x != x ? 0 : fmax(-limit, fmin(limit, (double)x));
 }
 
+/* A lookup reads the texels texel_index gives, so a lookup that is wrong
+ * where texel_index is wrong is the wrap's mistake, not the lookup's: when
+ * the student's texel_index(kind, i, n) is not the wrapped index, says so
+ * (the index of the `axis` a right lookup asks for, what texel_index gave,
+ * and the test that names the wrap's mistake); else NULL. */
+static const char *wrap_mistake(texture_kind kind, long long i, int n, const char *axis)
+{
+    int got = texel_index(kind, i, n);
+    long long expected = wrapped(kind, i, n);
+    if (got == expected)
+        return NULL;
+    return describe("the wrap, not the lookup: the %s index %lld of a texture %d texels %s is texel %lld, but "
+                    "texel_index(%s, %lld, %d) gives %d (test_texel_index_%s names the wrap's mistake)",
+                    axis, i, n, axis[0] == 'c' ? "wide" : "high", expected, kind_name(kind), i, n, got,
+                    kind == TEXTURE_REPEAT ? "repeat" : "clamp");
+}
+
 /* texture_nearest(tex, uv) on a `numbered` texture reads texel (x, y); a
  * failure names the texel read (its colour says which) and the mistake. */
 static void expect_nearest(const scene_texture *tex, mesh_uv uv, int x, int y)
@@ -279,12 +358,21 @@ static void expect_nearest(const scene_texture *tex, mesh_uv uv, int x, int y)
                                       "int overflowed; keep it a long long"
                                     : "texel (0, 0) whatever (u, v): the exercise is still to do"},
     };
-    assert_vec3_why(numbered_colour(x, y), vec3_make(c.r, c.g, c.b), TOL(1),
-                    describe("texture_nearest(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = %.9g; "
-                             "texel (i, j) is (10 i, 10 j, 7) / 255: expected texel (%d, %d)",
-                             kind_name(k), TW, TH, (double)uv.u, (double)uv.v, X, Y, x, y),
-                    "column (long long)(x + 1/2), row (long long)(y + 1/2), each wrapped by texel_index", mistakes,
-                    sizeof mistakes / sizeof mistakes[0]);
+    vec3 expected = numbered_colour(x, y), got = vec3_make(c.r, c.g, c.b);
+    const char *input = describe("texture_nearest(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = "
+                                 "%.9g; texel (i, j) is (10 i, 10 j, 7) / 255: expected texel (%d, %d)",
+                                 kind_name(k), TW, TH, (double)uv.u, (double)uv.v, X, Y, x, y);
+    /* a wrong texel where texel_index is wrong: the wrap is named, not a rounding */
+    const char *wrap = NULL;
+    if (!vec3_within(expected, got, TOL(1)) && !(wrap = wrap_mistake(k, cx, TW, "column")))
+        wrap = wrap_mistake(k, cy, TH, "row");
+    suspect_vec3 named[sizeof mistakes / sizeof mistakes[0]];
+    size_t n = matching_once(named, mistakes, sizeof mistakes / sizeof mistakes[0], got, TOL(1));
+    if (wrap)
+        assert_vec3_why(expected, got, TOL(1), input, wrap, NULL, 0);
+    else
+        assert_vec3_why(expected, got, TOL(1), input,
+                        "column (long long)(x + 1/2), row (long long)(y + 1/2), each wrapped by texel_index", named, n);
 }
 
 /* Nearest: texel (x, y) is centred on u = x / W, v = 1 - y / H (v up, rows
@@ -403,13 +491,12 @@ static vec3 bilinear_as(const scene_texture *tex, double x, double y, bilinear_v
     return vec3_add(vec3_scale(top, (real)(1 - wt)), vec3_scale(bottom, (real)wt));
 }
 
-/* texture_bilinear(tex, uv) against the blend computed here; a failure names
- * the input and the mistake whose value was got.  x = u W and y = (1 - v) H
- * are computed as texture.c does; the fractions s, t then agree to a
- * rounding of x and y (eps |x| / 2 and eps |y| / 2: the weights move by
- * that much, the texels being in [0, 1]), and the result to that plus a few
- * roundings of size 1: 32 eps 4 + 2 eps (|x| + |y|), twice the bound. */
-static void expect_bilinear(const scene_texture *tex, mesh_uv uv)
+/* texture_bilinear(tex, uv) is `expected` within `tolerance` (`known` says
+ * how the test knows it); a failure names the input and the mistake whose
+ * value was got, or the wrap when texel_index is wrong for a texel the
+ * blend needs. */
+static void expect_bilinear_is(const scene_texture *tex, mesh_uv uv, vec3 expected, double tolerance,
+                               const char *known)
 {
     static const char *const why[BILINEAR_VARIANTS] = {
         [BILINEAR_MINUS_HALF] = "x - 1/2 (texel centres at x + 1/2): in this course texel i's centre is at x = i, "
@@ -442,13 +529,37 @@ static void expect_bilinear(const scene_texture *tex, mesh_uv uv)
         mistakes[n++] = (suspect_vec3){bilinear_as(tex, x, y, (bilinear_variant)v), why[v]};
     mistakes[n++] = (suspect_vec3){texel_vec3(tex, 0, 0), "texel (0, 0) whatever (u, v): the exercise is still to do"};
     color c = texture_bilinear(tex, uv);
-    assert_vec3_why(bilinear_as(tex, x, y, BILINEAR_RIGHT), vec3_make(c.r, c.g, c.b),
-                    TOL(4) + 2 * REAL_EPSILON * (fabs(x) + fabs(y)),
-                    describe("texture_bilinear(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = %.9g",
-                             kind_name(tex->kind), tex->image.width, tex->image.height, (double)uv.u, (double)uv.v,
-                             x, y),
-                    "x0 = floor(x), y0 = floor(y), s = x - x0, t = y - y0; blend T(x0, y0), T(x0 + 1, y0) by s, the "
-                    "same for row y0 + 1, then the two rows by t", mistakes, n);
+    vec3 got = vec3_make(c.r, c.g, c.b);
+    const char *input =
+        describe("texture_bilinear(%s %dx%d, u = %.9g, v = %.9g): x = u W = %.9g, y = (1 - v) H = %.9g%s%s",
+                 kind_name(tex->kind), tex->image.width, tex->image.height, (double)uv.u, (double)uv.v, x, y,
+                 known ? "; " : "", known ? known : "");
+    /* a wrong blend where texel_index is wrong for one of the four texels: the wrap is named */
+    const char *wrap = NULL;
+    long long x0 = (long long)floor(x), y0 = (long long)floor(y);
+    for (int k = 0; k < 4 && !wrap && !vec3_within(expected, got, tolerance); k++)
+        wrap = k < 2 ? wrap_mistake(tex->kind, x0 + k, tex->image.width, "column")
+                     : wrap_mistake(tex->kind, y0 + k - 2, tex->image.height, "row");
+    if (wrap)
+        assert_vec3_why(expected, got, tolerance, input, wrap, NULL, 0);
+    else
+        assert_vec3_why(expected, got, tolerance, input,
+                        "x0 = floor(x), y0 = floor(y), s = x - x0, t = y - y0; blend T(x0, y0), T(x0 + 1, y0) by s, "
+                        "the same for row y0 + 1, then the two rows by t",
+                        mistakes, n);
+}
+
+/* texture_bilinear(tex, uv) against the blend computed here.  x = u W and
+ * y = (1 - v) H are computed as texture.c does; the fractions s, t then
+ * agree to a rounding of x and y (eps |x| / 2 and eps |y| / 2: the weights
+ * move by that much, the texels being in [0, 1]), and the result to that
+ * plus a few roundings of size 1: 32 eps 4 + 2 eps (|x| + |y|), twice the
+ * bound. */
+static void expect_bilinear(const scene_texture *tex, mesh_uv uv)
+{
+    double x = coordinate(uv.u, tex->image.width), y = coordinate(1 - uv.v, tex->image.height);
+    expect_bilinear_is(tex, uv, bilinear_as(tex, x, y, BILINEAR_RIGHT), TOL(4) + 2 * REAL_EPSILON * (fabs(x) + fabs(y)),
+                       NULL);
 }
 
 /* Bilinear: at a texel's centre the texel itself; between centres the
@@ -461,26 +572,26 @@ static void test_bilinear(void **state)
     scene_texture tex = numbered(TEXTURE_CLAMP);
     for (int k = 0; k < 200; k++) {
         double x = uniform() * (TW - 1), y = uniform() * (TH - 1); /* between the first and last centres */
-        color c = texture_bilinear(&tex, (mesh_uv){(real)(x / TW), (real)(1 - y / TH)});
-        assert_close(10 * x / 255, c.r, TOL(16));
-        assert_close(10 * y / 255, c.g, TOL(16));
-        assert_close(7 / 255.0, c.b, TOL(4));
+        vec3 linear = vec3_make((real)(10 * x / 255), (real)(10 * y / 255), (real)(7 / 255.0));
+        expect_bilinear_is(&tex, (mesh_uv){(real)(x / TW), (real)(1 - y / TH)}, linear, TOL(16),
+                           "texel (i, j) is (10 i, 10 j, 7) / 255, linear in i and j, so the blend at (x, y) is "
+                           "(10 x, 10 y, 7) / 255");
     }
     expect_bilinear(&tex, (mesh_uv){(real)(3.0 / TW), (real)(1 - 1.0 / TH)});
     /* half-way between the last column and the one after it */
     real u = (real)((TW - 0.5) / TW), v = (real)(1 - 1.0 / TH);
-    color clamped = texture_bilinear(&tex, (mesh_uv){u, v});
-    assert_close(10 * (TW - 1) / 255.0, clamped.r, TOL(4));
+    expect_bilinear_is(&tex, (mesh_uv){u, v}, numbered_colour(TW - 1, 1), TOL(4),
+                       "clamped, the column after the last is the last: texel (4, 1) alone");
     scene_texture repeat = numbered(TEXTURE_REPEAT);
-    color wrapped = texture_bilinear(&repeat, (mesh_uv){u, v});
-    assert_close(0.5 * 10 * (TW - 1) / 255.0, wrapped.r, TOL(4)); /* (last + first) / 2, the first is 0 */
-    assert_close(10 / 255.0, wrapped.g, TOL(4));
-    /* nearest and bilinear agree at every centre */
+    vec3 last_first = vec3_scale(vec3_add(numbered_colour(TW - 1, 1), numbered_colour(0, 1)), (real)0.5);
+    expect_bilinear_is(&repeat, (mesh_uv){u, v}, last_first, TOL(4),
+                       "repeated, the column after the last is the first: (texel (4, 1) + texel (0, 1)) / 2");
+    /* at every centre the texel itself (s = t = 0, up to the rounding of x = u W) */
     for (int y = 0; y < TH; y++)
         for (int x = 0; x < TW; x++) {
             mesh_uv at = {(real)((double)x / TW), (real)(1 - (double)y / TH)};
-            color n = texture_lookup(&repeat, at, TEXTURE_NEAREST), b = texture_lookup(&repeat, at, TEXTURE_BILINEAR);
-            assert_vec3_close(vec3_make(n.r, n.g, n.b), vec3_make(b.r, b.g, b.b), TOL(4));
+            expect_bilinear_is(&repeat, at, numbered_colour(x, y), TOL(4),
+                               describe("at the centre of texel (%d, %d), that texel alone", x, y));
         }
 }
 
@@ -541,8 +652,54 @@ static void test_sphere_uv(void **state)
 
 /* ---- the shading normal -------------------------------------------------------------------- */
 
+/* The values interpolate_vec3's mistakes give for the unit normals N at
+ * (beta, gamma), normalized: what vertex_normal gives with each. */
+static void normal_mistakes(suspect_vec3 mistakes[INTERPOLATE_MISTAKES], const vec3 N[3], real beta, real gamma)
+{
+    interpolate_mistakes(mistakes, N[0], N[1], N[2], beta, gamma);
+    for (int k = 0; k < INTERPOLATE_MISTAKES; k++)
+        if (vec3_length_squared(mistakes[k].value) > 0)
+            mistakes[k].value = vec3_normalize(mistakes[k].value);
+}
+
+static const char *const normal_hint = "vertex_normal (given) normalizes interpolate_vec3 of the corner normals: "
+                                       "interpolate_vec3 must give (1 - beta - gamma) n_a + beta n_b + gamma n_c "
+                                       "(test_interpolate_vertices_edges names its mistakes)";
+
+/* vertex_normal(m, f, beta, gamma) has a normal when `has` says so, and
+ * then it is `expected` within `tolerance`.  vertex_normal is given, so a
+ * failure names interpolate_vec3's mistake whose normal was got. */
+static void expect_vertex_normal(const mesh *m, const mesh_face *f, real beta, real gamma, int has, vec3 expected,
+                                 double tolerance)
+{
+    vec3 N[3], n = {0, 0, 0};
+    for (int k = 0; k < 3; k++)
+        N[k] = f->vn[k] >= 0 ? m->normals[f->vn[k]] : vec3_make(0, 0, 0);
+    int got = vertex_normal(m, f, beta, gamma, &n);
+    suspect_vec3 mistakes[INTERPOLATE_MISTAKES], named[INTERPOLATE_MISTAKES];
+    normal_mistakes(mistakes, N, beta, gamma);
+    const char *input = describe("vertex_normal(corner normals %s%s)", interpolate_input(N[0], N[1], N[2], beta, gamma),
+                                 f->vn[0] < 0 || f->vn[1] < 0 || f->vn[2] < 0 ? ", a corner without vn" : "");
+    const char *why = has ? "a corner's normal, or a blend of unit normals that do not cancel, is a normal; the blend "
+                            "came out the zero vector or not finite: check interpolate_vec3 "
+                            "(test_interpolate_vertices_edges names its mistakes)"
+                          : f->vn[0] < 0 || f->vn[1] < 0 || f->vn[2] < 0
+                                ? "a face with a corner without a normal is shaded flat (vertex_normal is given)"
+                                : matching_once(named, mistakes, INTERPOLATE_MISTAKES, n, TOL(8))
+                                      ? named[0].mistake
+                                      : "the corner normals cancel here, so their blend is the zero vector and the face "
+                                        "is shaded flat; interpolate_vec3 gave another blend: A = (1 - beta - gamma) "
+                                        "A_a + beta A_b + gamma A_c";
+    assert_close_why(has, got, 0, describe("%s: 1 with a normal, 0 without; got n = (%.9g, %.9g, %.9g)", input,
+                                           (double)n.x, (double)n.y, (double)n.z),
+                     why, NULL, 0);
+    if (has)
+        assert_vec3_why(expected, n, tolerance, input, normal_hint, mistakes, INTERPOLATE_MISTAKES);
+}
+
 /* The interpolated normal at a face's corners is the corner's normal, in
- * between the normalized blend; a face with a corner without vn has none. */
+ * between the normalized blend; a face with a corner without vn has none,
+ * nor has a point where the corner normals cancel. */
 static void test_vertex_normal(void **state)
 {
     (void)state;
@@ -550,23 +707,19 @@ static void test_vertex_normal(void **state)
                        vec3_normalize(vec3_make(0.3, -0.2, 1))};
     mesh m = {.normals = normals, .n_normals = 3};
     mesh_face f = {{0, 1, 2}, {-1, -1, -1}, {0, 1, 2}};
-    vec3 n;
-    for (int corner = 0; corner < 3; corner++) {
-        assert_true(vertex_normal(&m, &f, corner == 1, corner == 2, &n));
-        assert_vec3_close(normals[corner], n, TOL(4));
-    }
+    for (int corner = 0; corner < 3; corner++)
+        expect_vertex_normal(&m, &f, corner == 1, corner == 2, 1, normals[corner], TOL(4));
     for (int k = 0; k < 100; k++) {
         real beta = between(0, 1), gamma = between(0, 1 - beta), alpha = 1 - beta - gamma;
         vec3 blend = vec3_add(vec3_add(vec3_scale(normals[0], alpha), vec3_scale(normals[1], beta)),
                               vec3_scale(normals[2], gamma));
-        assert_true(vertex_normal(&m, &f, beta, gamma, &n));
-        assert_vec3_close(vec3_normalize(blend), n, TOL(8));
+        expect_vertex_normal(&m, &f, beta, gamma, 1, vec3_normalize(blend), TOL(8));
     }
     mesh_face flat = {{0, 1, 2}, {-1, -1, -1}, {0, -1, 2}};
-    assert_false(vertex_normal(&m, &flat, (real)0.2, (real)0.3, &n));
+    expect_vertex_normal(&m, &flat, (real)0.2, (real)0.3, 0, vec3_make(0, 0, 0), 0);
     vec3 opposite[3] = {{0, 0, 1}, {0, 0, -1}, {0, 0, 1}}; /* cancel at beta = 1/2, gamma = 0 */
     mesh cancel = {.normals = opposite, .n_normals = 3};
-    assert_false(vertex_normal(&cancel, &f, (real)0.5, 0, &n));
+    expect_vertex_normal(&cancel, &f, (real)0.5, 0, 0, vec3_make(0, 0, 0), 0);
 }
 
 /* The geometric normal decides the side; a mirror direction below the
@@ -659,17 +812,43 @@ static void test_smooth_shading(void **state)
          * over edges of size ~3: ~100 roundings relative; n and the cosine
          * inherit that; a margin of 20. */
         double tol = 2e3 * REAL_EPSILON;
+        /* what interpolate_vec3's mistakes give: their normal, on the viewer's side of the face */
+        vec3 n_g = vec3_normalize(vec3_cross(vec3_sub(b, a), vec3_sub(c, a)));
+        if (vec3_dot(n_g, vec3_sub(eye, p)) < 0)
+            n_g = vec3_neg(n_g);
+        suspect_vec3 normals[INTERPOLATE_MISTAKES];
+        normal_mistakes(normals, m.normals, beta, gamma);
+        const char *input = describe("chapter 10's stage: a triangle with corner normals %s, the eye ray to the point "
+                                     "at (beta, gamma), %s",
+                                     interpolate_input(m.normals[0], m.normals[1], m.normals[2], beta, gamma),
+                                     rgb ? "RGBNormals: (n + 1) / 2" : "Lambertian: k_d I max(0, n . l) / r^2");
+        const char *hint = "the shading normal is vertex_normal's (given): interpolate_vec3 of the corner normals, "
+                           "normalized; interpolate_vec3 must give (1 - beta - gamma) n_a + beta n_b + gamma n_c";
         if (rgb) {
-            assert_close((n.x + 1) / 2, L.r, tol);
-            assert_close((n.y + 1) / 2, L.g, tol);
-            assert_close((n.z + 1) / 2, L.b, tol);
+            suspect_vec3 shown[INTERPOLATE_MISTAKES];
+            for (int k = 0; k < INTERPOLATE_MISTAKES; k++) {
+                vec3 n_k = shading_normal(normals[k].value, n_g);
+                shown[k] = (suspect_vec3){vec3_scale(vec3_add(n_k, vec3_make(1, 1, 1)), (real)0.5), normals[k].mistake};
+            }
+            assert_vec3_why(vec3_scale(vec3_add(n, vec3_make(1, 1, 1)), (real)0.5), vec3_make(L.r, L.g, L.b), tol, input,
+                            hint, shown, INTERPOLATE_MISTAKES);
         } else {
             vec3 to_light = vec3_sub(light.position, p);
             real r2 = vec3_length_squared(to_light);
-            real cosine = vec3_dot(n, vec3_scale(to_light, 1 / real_sqrt(r2)));
-            assert_close(0.3 * 20 * cosine / r2, L.r, tol * 0.3 * 20 / r2);
-            assert_close(0.1 * 20 * cosine / r2, L.b, tol * 0.1 * 20 / r2);
-            assert_int_equal(1, rays[RAY_SHADOW]);
+            vec3 l = vec3_scale(to_light, 1 / real_sqrt(r2));
+            real cosine = vec3_dot(n, l);
+            suspect red[INTERPOLATE_MISTAKES], blue[INTERPOLATE_MISTAKES];
+            for (int k = 0; k < INTERPOLATE_MISTAKES; k++) {
+                double cos_k = fmax(0, (double)vec3_dot(shading_normal(normals[k].value, n_g), l));
+                red[k] = (suspect){0.3 * 20 * cos_k / r2, normals[k].mistake};
+                blue[k] = (suspect){0.1 * 20 * cos_k / r2, normals[k].mistake};
+            }
+            assert_close_why(0.3 * 20 * cosine / r2, L.r, tol * 0.3 * 20 / r2, describe("%s: red", input), hint, red,
+                             INTERPOLATE_MISTAKES);
+            assert_close_why(0.1 * 20 * cosine / r2, L.b, tol * 0.1 * 20 / r2, describe("%s: blue", input), hint, blue,
+                             INTERPOLATE_MISTAKES);
+            assert_close_why(1, rays[RAY_SHADOW], 0, describe("%s: shadow rays cast", input),
+                             "one shadow ray to the one light (chapter 06's shading, given here)", NULL, 0);
         }
         scene_free(&desc);
     }
@@ -704,9 +883,14 @@ static void test_textured_sphere(void **state)
     int x = (int)(u * 16 + 0.5) % 16, y = (int)((1 - v) * 8 + 0.5) % 8;
     const unsigned char *texel = desc.textures[tk].image.rgb + (y * 16 + x) * 3;
     /* the light straight above the point: cos = 1, r = 3, I / r^2 = 1 */
-    assert_close(texel[0] / 255.0, L.r, 1e3 * REAL_EPSILON);
-    assert_close(texel[1] / 255.0, L.g, 1e3 * REAL_EPSILON);
-    assert_close(texel[2] / 255.0, L.b, 1e3 * REAL_EPSILON);
+    assert_vec3_why(vec3_make((real)(texel[0] / 255.0), (real)(texel[1] / 255.0), (real)(texel[2] / 255.0)),
+                    vec3_make(L.r, L.g, L.b), 1e3 * REAL_EPSILON,
+                    describe("a textured sphere lit straight above the point at u = %.9g, v = %.9g: texel (%d, %d) of "
+                             "16 x 8",
+                             u, v, x, y),
+                    "the diffuse colour is the texel texture_nearest reads at the sphere's (u, v): column (long "
+                    "long)(u W + 1/2), row (long long)((1 - v) H + 1/2) (test_nearest names its mistakes)",
+                    NULL, 0);
     assert_false(texel[0] == texel[1] && texel[1] == texel[2]); /* a coloured texel, not magenta, not grey */
     scene_free(&desc);
 }

@@ -27,6 +27,46 @@ static const grid_knobs grid_defaults = GRID_KNOBS_DEFAULT; /* chapter 11's rend
 
 /* ---- the knobs ------------------------------------------------------------------------- */
 
+/* The cap, on a box 8 x 2 x 4 (volume 64) with 1000 surfaces at density 8.
+ * Capped at 1000 the first try fits: s0 = (1000 / 64)^(1/3) = 2.5 gives
+ * exactly 20 x 5 x 10.  Capped at 990, s0 = 2.4915 gives 20 x 5 x 10 too,
+ * 1000 cells, above the cap: s shrinks.  The counts jump where e_a s is a
+ * half: x at 19.5 / 8 = 2.4375, z at 9.5 / 4 = 2.375, y at 4.5 / 2 = 2.25,
+ * so the s that fit are those below s_fit = 2.4375 (19 x 5 x 10, 950 cells).
+ * A shrink by a factor from 0.9 to 1 a try (README) ends at s from 0.9 s_fit
+ * = 2.19375 (18 x 4 x 9) up to s_fit: n_x 18 .. 20, n_y 4 .. 5, n_z 9 .. 10,
+ * and at most 990 cells (grid_resolution_range.h says why). */
+static void expect_capped_resolution(void)
+{
+    const double box[3] = {8, 2, 4};
+    int n[3];
+    grid_resolution(box, 1000, 8, 1000, n);
+    if (n[0] != 20 || n[1] != 5 || n[2] != 10)
+        fail_msg("grid_resolution(extent 8 x 2 x 4, 1000 surfaces, density 8, cap 1000)\n    expected 20 x 5 x 10 "
+                 "cells\n    got      %d x %d x %d\n    likely mistake: %s",
+                 n[0], n[1], n[2],
+                 (double)n[0] * n[1] * n[2] > 1000 ? "the cap: while n_x n_y n_z is above it, shrink s and round again"
+                 : "s = (min(lambda N, cap) / (e_x e_y e_z))^(1/3) cells per unit, n_a = round(e_a s), and the "
+                   "first try fits here");
+    grid_resolution(box, 1000, 8, 990, n);
+    const int lowest[3] = {18, 4, 9}, highest[3] = {20, 5, 10};
+    const double cells = (double)n[0] * n[1] * n[2];
+    bool inside = cells <= 990;
+    for (int a = 0; a < 3; a++)
+        inside = inside && n[a] >= lowest[a] && n[a] <= highest[a];
+    if (!inside)
+        fail_msg("grid_resolution(extent 8 x 2 x 4, 1000 surfaces, density 8, cap 990)\n    expected 18 .. 20 x 4 .. 5 "
+                 "x 9 .. 10 cells, at most 990 (the reference: 19 x 5 x 10)\n    got      %d x %d x %d = %.0f\n    "
+                 "likely mistake: %s",
+                 n[0], n[1], n[2], cells,
+                 cells > 990 ? "the cap: while n_x n_y n_z is above it, shrink s and round again (20 x 5 x 10 rounds "
+                               "past it)"
+                 : n[0] < lowest[0] || n[1] < lowest[1] || n[2] < lowest[2]
+                     ? "s shrinks by a tenth at most a try (a factor from 0.9 to 1), from the s of min(lambda N, cap) "
+                       "cells"
+                     : "one s for every axis, n_a = round(e_a s): the cells stay cubic");
+}
+
 /* The resolution follows the density and the box's shape, within the cap. */
 static void test_resolution(void **state)
 {
@@ -50,12 +90,8 @@ static void test_resolution(void **state)
     assert_true(g.n_refs >= 1000 && g.n_refs <= 8000);
     assert_true(grid_memory(&g) >= (size_t)(g.n_cells + 1 + g.n_refs) * 4);
     grid_free(&g);
-    opt.max_cells = 1000; /* the cap wins: about 1000 cells, in the same proportions */
-    build_grid(&g, &list, opt);
-    assert_true(g.n_cells <= 1000 && g.n_cells >= 700);
-    assert_true(g.n[0] >= 3 * g.n[1] && g.n[0] <= 5 * g.n[1]);
-    grid_free(&g);
     surface_list_free(&list);
+    expect_capped_resolution();
     /* A flat scene: 32 x 16 small triangles in the plane y = 3.25, x from 0
      * to 8 and z from 0 to 4 (exact in binary).  y has no extent: one cell,
      * and x and z share 2 x 512 cells, s = (1024 / (8 x 4))^(1/2) = sqrt 32:
@@ -318,7 +354,8 @@ static void test_dda_cells(void **state)
  * (the negative ones with -0 components), past its own sphere (t_min =
  * twice the radius): the hit is the next sphere along that axis, as the
  * linear scan finds.  A failure names the axis and the direction, which is
- * what a wrong index or plane gets wrong. */
+ * what a wrong index or plane gets wrong; a ray that visits no cell, though
+ * it starts inside the grid's box, names the entry (its zero components). */
 static void test_dda_axis_steps(void **state)
 {
     (void)state;
@@ -347,9 +384,21 @@ static void test_dda_axis_steps(void **state)
                     continue;
                 ray r = {list.items[s].sphere.center, sign > 0 ? axes[a] : vec3_neg(axes[a])};
                 hit_record want, got;
+                grid_counts counts = {0, 0};
                 bool fw = surfaces_intersect(&list, r, 2 * radius, REAL_INFINITY, &want);
-                bool fg = grid_intersect(&g, r, 2 * radius, REAL_INFINITY, &got);
+                bool fg = grid_intersect_counted(&g, r, 2 * radius, REAL_INFINITY, &got, &counts);
                 assert_true(fw && want.surface == s + sign * (a == 0 ? 1 : a == 1 ? m[0] : m[0] * m[1]));
+                /* The ray starts inside the grid's box, so the march visits at least its first cell
+                 * whatever dda_step does: no cell at all is the entry's mistake. */
+                if (counts.cells == 0)
+                    fail_msg("grid_intersect_counted(ray from sphere %d's centre, inside the grid's box, along "
+                             "%c%c, t_min = %g)\n    expected sphere %d, at least 1 cell visited\n    got      %s, "
+                             "0 cells\n    likely mistake: enter: a component d_a = +0 or -0 (inv_d_a = 0, here "
+                             "along the two axes other than %c) never crosses a face of axis a; the ray stays inside "
+                             "that slab (lo_a <= p_a <= hi_a) and the axis must not narrow [t0, t1] ((lo_a - p_a) "
+                             "inv_d_a = 0 is no crossing)",
+                             s, sign > 0 ? '+' : '-', "xyz"[a], (double)(2 * radius), want.surface,
+                             fg ? "a hit" : "no hit", "xyz"[a]);
                 if (!same_hit(fw, &want, fg, &got))
                     fail_msg("grid_intersect(ray from sphere %d's centre (%.17g, %.17g, %.17g) along %c%c, t_min = "
                              "%g) through a grid of %d x %d x %d cells\n    expected sphere %d at t = %.17g\n"

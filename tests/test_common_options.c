@@ -14,11 +14,16 @@ typedef struct {
 static int quality = 0;
 static int depth = 5;
 static real epsilon = (real)1e-3;
+static int cells = 8;
+static real density = 2;
 static const char *const quality_choices[] = {"robust", "textbook", NULL};
+static const char *const cells_range[] = {"1", "64", NULL}, *const density_range[] = {">0", NULL};
 static const knob knobs[] = {
     {"sphere", KNOB_CHOICE, &quality, quality_choices, "sphere formula"},
     {"depth", KNOB_INT, &depth, NULL, "recursion depth"},
     {"epsilon", KNOB_REAL, &epsilon, NULL, "shadow ray offset"},
+    {"cells", KNOB_INT, &cells, cells_range, "an integer with a range"},
+    {"density", KNOB_REAL, &density, density_range, "a number above 0"},
 };
 
 /* Parses a NULL-terminated argument list, capturing what is printed. */
@@ -36,7 +41,7 @@ static parsed parse(const char *first, ...)
     memset(&p, 0, sizeof p);
     FILE *out = fmemopen(p.out, sizeof p.out - 1, "w");
     FILE *err = fmemopen(p.err, sizeof p.err - 1, "w");
-    p.result = options_parse(argc, argv, "test renderer", "test.png", knobs, 3, &p.opt, out, err);
+    p.result = options_parse(argc, argv, "test renderer", "test.png", knobs, (int)(sizeof knobs / sizeof knobs[0]), &p.opt, out, err);
     fclose(out);
     fclose(err);
     return p;
@@ -103,6 +108,8 @@ static void test_bad_values_name_the_option(void **state)
         {"-n", "-4", "--samples"},   {"-j", "0", "--threads"},    {"-j", "two", "--threads"},
         {"--seed", "-1", "--seed"},  {"--sphere", "exact", "--sphere"}, {"--depth", "1.5", "--depth"},
         {"--epsilon", "nan", "--epsilon"}, {"--nonfinite", "zero", "--nonfinite"},
+        {"--cells", "0", "--cells"},       {"--cells", "65", "--cells"},     {"--density", "0", "--density"},
+        {"--density", "-2", "--density"},
     };
     for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
         parsed p = parse("build/07_blinn_phong/render", bad[k][0], bad[k][1], NULL);
@@ -140,6 +147,30 @@ static void test_knobs_set_their_targets(void **state)
     quality = 0;
     depth = 5;
     epsilon = (real)1e-3;
+}
+
+/* A number knob with a range (knob.choices): its ends are inside it (an exclusive end is not), a
+ * value outside it is an option error that names the option, the value and the range. */
+static void test_knob_ranges(void **state)
+{
+    (void)state;
+    parsed p = parse("render", "--cells=1", "--density=1e-30", NULL);
+    assert_int_equal(OPTIONS_OK, p.result);
+    assert_int_equal(1, cells);
+    assert_close(1e-30, density, 1e-30 * REAL_EPSILON);
+    p = parse("render", "--cells=64", NULL);
+    assert_int_equal(OPTIONS_OK, p.result);
+    assert_int_equal(64, cells);
+    p = parse("render", "--cells=65", NULL);
+    assert_int_equal(OPTIONS_ERROR, p.result);
+    assert_string_equal("render: --cells: '65' is not an integer from 1 to 64 (see --help)\n", p.err);
+    p = parse("render", "--density=0", NULL);
+    assert_int_equal(OPTIONS_ERROR, p.result);
+    assert_string_equal("render: --density: '0' is not a number above 0 (see --help)\n", p.err);
+    p = parse("render", "--density=1e-60", NULL); /* 0 in the float build: the value the knob would hold */
+    assert_int_equal(REAL_MIN > 1e-60 ? OPTIONS_ERROR : OPTIONS_OK, p.result);
+    cells = 8;
+    density = 2;
 }
 
 static void test_help_lists_options_knobs_and_defaults(void **state)
@@ -182,6 +213,7 @@ static const graded_test tests[] = {
     GRADED(test_bad_values_name_the_option, 0),
     GRADED(test_unknown_option_missing_value_and_extra_scene, 0),
     GRADED(test_knobs_set_their_targets, 0),
+    GRADED(test_knob_ranges, 0),
     GRADED(test_help_lists_options_knobs_and_defaults, 0),
     GRADED(test_two_parses_in_a_row, 0),
 };

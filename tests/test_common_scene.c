@@ -369,6 +369,9 @@ static void test_texture_images_are_decoded_in_full(void **state)
     color c = texture_image_texel(t, 5, 7);
     /* byte / 255, one rounding of a quotient: within REAL_EPSILON / 2 relative */
     assert_close(rgb[(7 * W + 5) * 3 + 1] / 255.0, c.g, REAL_EPSILON);
+    /* an index outside the image reads the edge texel nearest to it (and says so on stderr) */
+    assert_close(rgb[(7 * W + 0) * 3 + 1] / 255.0, texture_image_texel(t, -1, 7).g, REAL_EPSILON);
+    assert_close(rgb[((H - 1) * W + W - 1) * 3] / 255.0, texture_image_texel(t, W, H + 5).r, REAL_EPSILON);
     scene_free(&s);
     /* the same file cut to 100 bytes: its header still reads as 32 x 24 */
     FILE *f = fopen(path, "r+b");

@@ -133,6 +133,27 @@ static void test_parity_is_range_safe(void **state)
     assert_false(real_is_odd((real)NAN));
 }
 
+/* The ceiling and the floor in the build's type (a cell's first and last
+ * index, chapter 11): every value here is exact in float, so the answers are
+ * exact too, and the ceiling of a negative value above -1 is -0. */
+static void test_ceil_and_floor(void **state)
+{
+    (void)state;
+    assert_int_equal(sizeof(real), sizeof real_ceil((real)1.5));
+    assert_int_equal(sizeof(real), sizeof real_floor((real)1.5));
+    assert_close(3, real_ceil((real)2.25), 0);
+    assert_close(-2, real_ceil((real)-2.25), 0);
+    assert_close(3, real_ceil((real)3), 0);
+    assert_close(8388608, real_ceil((real)8388607.5), 0); /* 2^23 - 1/2, the last half float */
+    assert_true(real_ceil((real)-0.5) == 0 && signbit(real_ceil((real)-0.5)));
+    assert_close(-3, real_floor((real)-2.25), 0);
+    assert_close(2, real_floor((real)2.25), 0);
+    for (int k = -40; k <= 40; k++) { /* ceil x = -floor(-x), in steps of 1/8 */
+        const real x = (real)k / 8;
+        assert_close(-real_floor(-x), real_ceil(x), 0);
+    }
+}
+
 static const graded_test tests[] = {
     GRADED(test_right_handed_axes, 0),
     GRADED(test_cross_is_perpendicular_and_anticommutative, 0),
@@ -143,5 +164,6 @@ static const graded_test tests[] = {
     GRADED(test_ray_at, 0),
     GRADED(test_length_and_normalize_of_huge_and_tiny_vectors, 0),
     GRADED(test_parity_is_range_safe, 0),
+    GRADED(test_ceil_and_floor, 0),
 };
 SUITE_MAIN("common_vec", tests)

@@ -16,12 +16,27 @@
 # A refusal is one line on stdout naming the file and what was found, and
 # the exit status is 1.  An exercise function whose instructions are the
 # reference's, one for one, is flagged on stdout ("matches the compiled
-# reference"; it is graded as usual: the instructor decides).
+# reference"; it is graded as usual: the instructor decides).  The flag is for
+# the reference compiled from its own source (a copy of solutions/), so it
+# compares only:
+#   - exercise functions: those whose body holds an exercise's comment
+#     ("EXERCISE name:" of the solution, "TODO name:" of the skeleton), or
+#     calls a static function that does (the compiler inlines it), in
+#     solutions/NN_name/FILE.c when there is one (the instructor's copy),
+#     else as reference/exercise-functions.txt lists them (a student's copy
+#     and the autograder: tools/handout.sh writes it from solutions/, so a
+#     submission without its TODO comments is compared all the same), else
+#     in the student's file; the given code of an exercise file (chapter
+#     10's interpolate_uv) compiles the same for everyone;
+#   - of at least MIN_INSTRUCTIONS (40) instructions in the reference: a
+#     shorter one is a formula of a line or two, which correct solutions
+#     written otherwise compile to the same code (two of four ways of writing
+#     interpolate_vec3's one line give the reference's 30 instructions).
+#
+# check-exercise.sh --list FILE.c... prints "NN_name/FILE.c function" for
+# each exercise function of the solution files given (what handout.sh keeps).
 set -u
-reference=${1:?usage: check-exercise.sh REFERENCE SOURCE_DIR OBJECT_DIR FILE.c...}
-sources=${2:?} objects=${3:?}
-case $reference in /*) ;; *) reference=$(pwd)/$reference ;; esac
-shift 3
+MIN_INSTRUCTIONS=40
 tmp=$(mktemp -d) || exit 1
 trap 'rm -rf "$tmp"' EXIT
 status=0
@@ -34,6 +49,54 @@ reference_object() {
         (cd "$tmp" && ar p "$reference" "$1" >"ref-$1") && echo "$tmp/ref-$1"
     fi
 }
+# exercise_functions FILE.c: the global functions of the file that hold an
+# exercise's comment or call (through static functions) a static function
+# that does, one a line.  A
+# definition starts at a line that begins with neither a blank, a comment
+# nor a preprocessor line, names a function (NAME() and does not end in ";";
+# it ends at a "}" that begins a line.
+exercise_functions() {
+    awk '
+        function name_of(line) {
+            sub(/\(.*/, "", line)
+            n = split(line, w, /[^A-Za-z0-9_]+/)
+            return w[n] != "" ? w[n] : w[n - 1]
+        }
+        /^[A-Za-z_]/ && /[A-Za-z0-9_] *\(/ && !/; *$/ && !/^(typedef|struct|enum|union)[^A-Za-z0-9_]/ {
+            f = name_of($0); static_[f] = $0 ~ /^static[^A-Za-z0-9_]/; body[f] = ""; order[++count] = f
+        }
+        f != "" { body[f] = body[f] " " $0 }
+        f != "" && /\/\* *(EXERCISE|TODO) [A-Za-z0-9_ -]+:/ { marked[f] = 1 }
+        /^}/ { f = "" }
+        END { # marked too: what calls a marked static function, through any number of static calls
+            do {
+                changed = 0
+                for (k = 1; k <= count; k++) {
+                    g = order[k]
+                    for (h in marked)
+                        if (!marked[g] && static_[h] && match(body[g], "(^|[^A-Za-z0-9_])" h " *\\(")) {
+                            marked[g] = 1
+                            changed = 1
+                        }
+                }
+            } while (changed)
+            for (k = 1; k <= count; k++)
+                if (marked[order[k]] && !static_[order[k]]) print order[k]
+        }' "$1" | sort -u
+}
+if [ "${1:-}" = --list ]; then
+    shift
+    for file in "$@"; do
+        exercise_functions "$file" | sed "s|^|$(basename "$(dirname "$file")")/$(basename "$file") |"
+    done
+    exit 0
+fi
+reference=${1:?usage: check-exercise.sh REFERENCE SOURCE_DIR OBJECT_DIR FILE.c...}
+sources=${2:?} objects=${3:?}
+case $reference in /*) ;; *) reference=$(pwd)/$reference ;; esac
+shift 3
+# In a student's copy, the exercise functions as handout.sh listed them from solutions/.
+listed=$(dirname "$(dirname "$reference")")/exercise-functions.txt
 # The instructions of function $2 in object $1, without addresses, bytes or relocation targets.
 instructions() {
     objdump -d --no-show-raw-insn --disassemble="$2" "$1" 2>/dev/null |
@@ -71,9 +134,19 @@ for file in "$@"; do
         status=1
         continue
     fi
-    for f in $allowed; do
+    marked=solutions/${sources##*/}/$file
+    if [ -f "$marked" ]; then
+        exercise=$(exercise_functions "$marked")
+    elif [ -f "$listed" ]; then
+        exercise=$(awk -v f="${sources##*/}/$file" '$1 == f { print $2 }' "$listed")
+    else
+        exercise=$(exercise_functions "$src")
+    fi
+    for f in $(printf '%s\n' "$exercise" | grep -xF -- "$allowed"); do
+        theirs=$(instructions "$ref" "$f")
+        [ "$(printf '%s\n' "$theirs" | grep -c .)" -ge "$MIN_INSTRUCTIONS" ] || continue
         mine=$(instructions "$obj" "$f")
-        if [ -n "$mine" ] && [ "$mine" = "$(instructions "$ref" "$f")" ]; then
+        if [ -n "$mine" ] && [ "$mine" = "$theirs" ]; then
             echo "$src: $f matches the compiled reference instruction for instruction (flagged for the instructor; graded as usual)"
         fi
     done

@@ -52,6 +52,8 @@ rm -rf "$dest/tests/hostile" # the attacks on the autograder hold a correct chap
 [ -e .gitignore ] && cp .gitignore "$dest/"
 cp "$double_libs"/lib*.a "$dest/reference/double/" || exit 1
 cp "$float_libs"/lib*.a "$dest/reference/float/" || exit 1
+# Which functions are exercises, for tools/check-exercise.sh in a copy without solutions/.
+tools/check-exercise.sh --list solutions/[0-9][0-9]_*/*.c >"$dest/reference/exercise-functions.txt" || exit 1
 # The copy's README.md starts with what a student does in it, before the
 # repository's first section.
 student_text=$(cat <<'TEXT'
@@ -116,6 +118,7 @@ cat >"$dest/reference/README.md" <<'TEXT'
 compiled (for `REAL=double` and `REAL=float`).  `make grade CHAPTER=NN` grades your chapter NN with these
 libraries standing in for the other chapters, so a mistake in one chapter costs points in that chapter
 only.  `make STUDENT=0` builds every renderer from them: the reference images, to compare with yours.
+`exercise-functions.txt` names the functions you write, file by file.
 TEXT
 if ! leak_check "$dest"; then
     rm -rf "$dest"

@@ -61,8 +61,8 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
 {
     *g = (grid){.list = list};
     if (!(opt.density > 0) || opt.max_cells < 1 || opt.max_cells > (1L << 30)) {
-        snprintf(err, err_size, "grid: density must be > 0 and the cell cap 1 .. 2^30 (got %g, %ld)", opt.density,
-                 opt.max_cells);
+        snprintf(err, err_size, "grid: --grid-density must be above 0, --grid-cells 1 .. 2^30 (got %g, %ld)",
+                 opt.density, opt.max_cells);
         return -1;
     }
     /* The box of the surfaces with finite bounds, widened by the margin (none: no cells). */

@@ -7,14 +7,14 @@
 #include "04_many_shapes/closest_hit.h"
 
 static const char *const accel_choices[] = {"grid", "list", NULL};
+static const char *const density_range[] = {">0", NULL}, *const cells_range[] = {"1", "1073741824", NULL}; /* 2^30 */
 
 int grid_knob_rows(grid_knobs *k, knob *rows, stage_knobs *aimed)
 {
     int n = interp_knob_rows(&k->interp, rows, aimed); /* chapters 06-10's first */
-    rows[n++] = (knob){"grid-density", KNOB_REAL, &k->density, NULL, "grid cells per surface"};
-    rows[n++] = (knob){"grid-cells", KNOB_INT, &k->max_cells, NULL, "the most cells the grid may have"};
-    rows[n++] = (knob){"accel", KNOB_CHOICE, &k->accel, accel_choices,
-                       "grid, or chapter 04's linear scan over the list"};
+    rows[n++] = (knob){"grid-density", KNOB_REAL, &k->density, density_range, "grid cells per surface, above 0"};
+    rows[n++] = (knob){"grid-cells", KNOB_INT, &k->max_cells, cells_range, "the cap on the grid's cells, 1 to 2^30"};
+    rows[n++] = (knob){"accel", KNOB_CHOICE, &k->accel, accel_choices, "grid, or chapter 04's linear scan"};
     return n;
 }
 

@@ -30,7 +30,8 @@ void grid_resolution(const double extent[3], long surfaces, double density, long
         }
         if (cells <= (double)max_cells)
             return;
-        s *= 0.99 * pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1)); /* rounding overshot the cap */
+        /* too many cells: shrink s, by a tenth at most, and round again */
+        s *= fmax(0.9, 0.99 * pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1)));
     }
     /* STUB
     (void)extent, (void)surfaces, (void)density, (void)max_cells;
@@ -49,7 +50,7 @@ void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int 
         /* where the box starts and ends, in cells from the grid's low corner */
         real f_lo = (vec3_axis(box_lo, a) - vec3_axis(g->lo, a)) / vec3_axis(g->cell, a);
         real f_hi = (vec3_axis(box_hi, a) - vec3_axis(g->lo, a)) / vec3_axis(g->cell, a);
-        first[a] = real_to_index(-real_floor(-f_lo) - 1, 0, g->n[a]); /* ceil(f_lo) - 1 */
+        first[a] = real_to_index(real_ceil(f_lo) - 1, 0, g->n[a]);
         last[a] = real_to_index(real_floor(f_hi), -1, g->n[a] - 1);
     }
     /* STUB
@@ -90,8 +91,8 @@ int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, s
 {
     *g = (grid){.list = list};
     if (!(opt.density > 0) || opt.max_cells < 1 || opt.max_cells > (1L << 30)) {
-        snprintf(err, err_size, "grid: density must be > 0 and the cell cap 1 .. 2^30 (got %g, %ld)", opt.density,
-                 opt.max_cells);
+        snprintf(err, err_size, "grid: --grid-density must be above 0, --grid-cells 1 .. 2^30 (got %g, %ld)",
+                 opt.density, opt.max_cells);
         return -1;
     }
     /* The box of the surfaces with finite bounds, widened by the margin (none: no cells). */

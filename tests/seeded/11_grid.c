@@ -4,6 +4,7 @@
  * from it through the grid of a scene drawn from it (seeded_surfaces.h
  * says why that tolerance). */
 #include "11_grid/grid.h"
+#include "grid_resolution_range.h"
 #include "seeded_surfaces.h"
 
 static void seeded_cell_range(unsigned long *rng)
@@ -35,8 +36,12 @@ static void seeded_cell_range(unsigned long *rng)
     }
 }
 
-/* The resolution of boxes drawn from the seed, one axis flat now and then:
- * integers, so the answers must be equal. */
+/* The resolution of boxes drawn from the seed, one axis flat now and then,
+ * the cap binding now and then: integers.  When the first try fits the cap,
+ * the README's formula gives them exactly, so they must equal the
+ * reference's; after a shrink the README allows any of a range
+ * (grid_resolution_range.h), so the answers are how far each count lies
+ * outside its range and how far the product exceeds the cap: 0, exactly. */
 static void seeded_resolution(unsigned long *rng)
 {
     for (int k = 0; k < 12; k++) {
@@ -50,8 +55,17 @@ static void seeded_resolution(unsigned long *rng)
         grid_resolution(extent, surfaces, density, cap, n);
         const char *in = describe("grid_resolution(extent %.9g x %.9g x %.9g, %ld surfaces, density %.9g, cap %ld)",
                                   extent[0], extent[1], extent[2], surfaces, density, cap);
+        const grid_resolution_range allowed = grid_resolution_allowed(extent, surfaces, density, cap);
         for (int a = 0; a < 3; a++)
-            suite_answer(describe("%s: n[%d]", in, a), n[a], 0);
+            if (allowed.capped)
+                suite_answer(describe("%s: how far n[%d] lies outside %d .. %d, the counts of a shrink by 0.9 to 1 a "
+                                      "try",
+                                      in, a, allowed.lowest[a], allowed.highest[a]),
+                             fmax(0, fmax(allowed.lowest[a] - n[a], n[a] - allowed.highest[a])), 0);
+            else
+                suite_answer(describe("%s: n[%d]", in, a), n[a], 0);
+        if (allowed.capped)
+            suite_answer(describe("%s: cells above the cap", in), fmax(0, (double)n[0] * n[1] * n[2] - (double)cap), 0);
     }
 }
 

@@ -236,12 +236,16 @@ int fast_grid_fill(fast_grid *g, const uint32_t *subset, long n, bool leap, char
     g->inv_cell = vec3_make(1 / g->cell.x, 1 / g->cell.y, 1 / g->cell.z);
     for (int a = 0; a < 3; a++) {
         g->lo_a[a] = get(g->lo, a);
+        g->hi_a[a] = get(g->hi, a);
         g->cell_a[a] = get(g->cell, a);
         g->inv_cell_a[a] = get(g->inv_cell, a);
         g->per_unit[a] = FAST_GRID_BOX_STEPS / (g->cell_a[a] + 2 * g->margin);
         g->frame_step[a] = (g->cell_a[a] + 2 * g->margin) / FAST_GRID_BOX_STEPS;
     }
     g->n_cells = (long)g->n[0] * g->n[1] * g->n[2];
+    g->stride[0] = 1;
+    g->stride[1] = g->n[0];
+    g->stride[2] = (long)g->n[0] * g->n[1];
     /* The cell boundaries, one table for the three axes: the march reads them
      * instead of computing lo_a + k cell_a at every crossing (the same values).
      * A leap looks up to `beyond` cells beyond the grid's faces: the table goes

@@ -23,8 +23,9 @@ void fast_grid_resolution(const double extent[3], long surfaces, double density,
 int fast_grid_fill(fast_grid *g, const uint32_t *subset, long n, bool leap, char *err, size_t err_size);
 
 /* Two levels: each cell of g that lists more than opt.split surfaces gets a
- * grid of its own over its box and those surfaces, and lists that grid
- * alone (an entry FAST_GRID_SUB + its index in g->subs).  0, or -1 with the
+ * grid of its own over its box and those surfaces but the ones that span
+ * the cell along two axes (a floor), and lists that grid (an entry
+ * FAST_GRID_SUB + its index in g->subs) and then those.  0, or -1 with the
  * problem in err. */
 int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_size);
 

@@ -42,7 +42,8 @@ typedef struct {
 #define FAST_GRID_DEFAULT_SPLIT 48
 
 /* An entry whose `surface` is FAST_GRID_SUB + s stands for the cell's own
- * grid, subs[s]: the only entry of a cell that has one. */
+ * grid, subs[s]: the first entry of a cell that has one, followed by the
+ * surfaces that span the cell (which its grid leaves out). */
 #define FAST_GRID_SUB 0x80000000u
 
 /* A surface's box inside a cell is kept in steps of 1/FAST_GRID_BOX_STEPS of the
@@ -66,7 +67,8 @@ struct fast_grid {
     vec3 lo, hi;              /* the grid's box: the surfaces' bounding box, widened by `margin` */
     vec3 cell;                /* the size of one cell along x, y and z */
     vec3 inv_cell;            /* 1 / cell */
-    real lo_a[3], cell_a[3];  /* lo and cell again, as arrays the march indexes by axis */
+    real lo_a[3], hi_a[3];    /* lo and hi again, as arrays the march indexes by axis */
+    real cell_a[3];           /* cell, as an array */
     real inv_cell_a[3];       /* inv_cell, as an array */
     real per_unit[3];         /* FAST_GRID_BOX_STEPS / (cell_a + 2 margin): steps of a cell's frame per unit of length */
     real frame_step[3];       /* (cell_a + 2 margin) / FAST_GRID_BOX_STEPS: the length of one step of a cell's frame */
@@ -74,6 +76,7 @@ struct fast_grid {
                                * k = -beyond .. n_a + beyond (a leap's cube may reach beyond the grid) */
     int beyond;               /* the largest side of a leap's cube: 255, or the largest n_a + 1 if less */
     int n[3];                 /* cells along x, y and z */
+    long stride[3];           /* what a step of one cell along x, y, z adds to a cell's place: 1, n_x, n_x n_y */
     /* The cells' lists, flat (compressed sparse rows): the surfaces of cell
      * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],
      * in increasing index. */

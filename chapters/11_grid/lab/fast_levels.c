@@ -7,7 +7,10 @@
  * cull.  Kalojanov, Billeter and Slusallek ("Two-level grids for ray tracing
  * on GPUs", 2011) give each cell a grid of its own, sized by what it holds;
  * here only the cells that list more than `split` surfaces get one, the
- * most crowded first, within a memory budget.
+ * most crowded first, within a memory budget.  A surface that spans the
+ * cell along two axes (the floor under the wire cube) stays in the cell's
+ * list after its grid: in the grid it would fill every cell of a layer and
+ * stretch the grid's box over the whole cell.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -61,6 +64,22 @@ static int build_sub(fast_grid *sub, const fast_grid *g, const uint32_t *subset,
         return 1;
     }
     return 0;
+}
+
+/* Whether surface s spans cell idx of g along two axes or more: its box
+ * (widened by the margin) covers the cell's frame there, as a floor covers
+ * every cell under it.  Such a surface stays in the cell's own list beside
+ * the cell's grid, which then fits the other surfaces alone. */
+static bool spans_cell(const fast_grid *g, const surface *s, const int idx[3])
+{
+    vec3 lo, hi;
+    fast_grid_surface_bounds(s, &lo, &hi);
+    const real s_lo[3] = {lo.x, lo.y, lo.z}, s_hi[3] = {hi.x, hi.y, hi.z};
+    int covered = 0;
+    for (int a = 0; a < 3; a++)
+        covered += s_lo[a] - g->margin <= g->plane[a][idx[a]] - g->margin &&
+                   s_hi[a] + g->margin >= g->plane[a][idx[a] + 1] + g->margin;
+    return covered >= 2;
 }
 
 /* A cell that lists more than `split` surfaces, and the grid it got (-1: none). */
@@ -118,11 +137,17 @@ int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_s
     budget = budget > (1u << 20) ? budget : (1u << 20);
     for (k = 0; k < n_crowded && spent < budget; k++) {
         const long c = crowded[k].cell;
-        for (uint32_t q = 0; q < crowded[k].count; q++)
-            subset[q] = g->refs[g->start[c] + q].surface;
         const int idx[3] = {(int)(c % g->n[0]), (int)(c / g->n[0] % g->n[1]), (int)(c / g->n[0] / g->n[1])};
+        long n_rest = 0;
+        for (uint32_t q = 0; q < crowded[k].count; q++) {
+            uint32_t surface = g->refs[g->start[c] + q].surface;
+            if (!spans_cell(g, &g->list->items[surface], idx))
+                subset[n_rest++] = surface;
+        }
+        if (n_rest == 0)
+            continue;
         fast_grid *sub = &g->subs[g->n_subs];
-        int kept = build_sub(sub, g, subset, crowded[k].count, idx, opt, err, err_size);
+        int kept = build_sub(sub, g, subset, n_rest, idx, opt, err, err_size);
         if (kept < 0) {
             free(crowded);
             free(subset);
@@ -138,8 +163,15 @@ int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_s
         }
     }
     free(subset);
+    fast_grid_entry *spanning = malloc(((size_t)most + 1) * sizeof *spanning);
+    if (!spanning) {
+        free(crowded);
+        snprintf(err, err_size, "grid: out of memory");
+        return -1;
+    }
     /* Each cell's list moves down to where the lists before it end now: a
-     * cell with a grid of its own lists that grid alone. */
+     * cell with a grid of its own lists that grid first, then the surfaces
+     * that span it (copied aside first: the list may move onto itself). */
     qsort(crowded, (size_t)n_crowded, sizeof *crowded, by_cell);
     uint32_t written = 0, from = g->start[0];
     k = 0;
@@ -149,7 +181,14 @@ int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_s
         while (k < n_crowded && crowded[k].cell < c)
             k++;
         if (k < n_crowded && crowded[k].cell == c && crowded[k].sub >= 0) {
+            const int idx[3] = {(int)(c % g->n[0]), (int)(c / g->n[0] % g->n[1]), (int)(c / g->n[0] / g->n[1])};
+            uint32_t n_spanning = 0;
+            for (uint32_t q = from; q < to; q++)
+                if (spans_cell(g, &g->list->items[g->refs[q].surface], idx))
+                    spanning[n_spanning++] = g->refs[q];
             g->refs[written++] = (fast_grid_entry){.surface = FAST_GRID_SUB + (uint32_t)crowded[k].sub};
+            memcpy(&g->refs[written], spanning, n_spanning * sizeof *spanning);
+            written += n_spanning;
         } else {
             memmove(&g->refs[written], &g->refs[from], count * sizeof *g->refs);
             written += count;
@@ -159,6 +198,7 @@ int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_s
     g->start[g->n_cells] = written;
     g->n_refs = written;
     free(crowded);
+    free(spanning);
     fast_grid_entry *shrunk = realloc(g->refs, (written ? written : 1) * sizeof *g->refs);
     g->refs = shrunk ? shrunk : g->refs;
     size_t now = fast_grid_memory(g) + most * sizeof *subset;

@@ -19,16 +19,14 @@
 #define SIFT_FROM 8
 
 /* snippet: dda */
-/* The march's state (Amanatides and Woo): the cell the ray is in, the
- * direction of its steps, and the t at which it crosses the next cell
- * boundary along each axis. */
+/* The march's state in one grid (Amanatides and Woo): the cell the ray is
+ * in and the t at which it crosses the next cell boundary along each axis.
+ * The direction of its steps belongs to the ray (ray_frame). */
 typedef struct {
     int i[3];     /* the cell's indices */
-    int step[3];  /* +1 or -1: the sign of d_a; 0 when d_a = 0 (the ray never crosses a boundary of that axis) */
-    real next[3]; /* t of the next boundary crossing along each axis; +infinity when step is 0 */
+    real next[3]; /* t of the next boundary crossing along each axis; +infinity when step_a is 0 */
     long cell;    /* i[0] + n_x (i[1] + n_y i[2]): the cell's place in g->start */
-    int ahead[3]; /* 1 when step_a > 0, else 0: the cell's far boundary along a is plane i_a + ahead_a */
-    long move[3]; /* step_a stride_a (stride: 1, n_x, n_x n_y): what a step along a adds to cell */
+    long move[3]; /* step_a stride_a: what a step along a adds to cell, in this grid */
 } dda;
 /* end snippet */
 
@@ -40,11 +38,25 @@ static inline real crossing(const fast_grid *g, int a, int plane, const real p[3
     return (g->plane[a][plane] - p[a]) * inv_d[a];
 }
 
+/* What the march needs of the ray, made once per ray and shared by both
+ * levels of grid (a sub-grid has its parent's scale, so the same rounding
+ * bounds). */
+typedef struct {
+    real p[3], d[3];
+    real inv_d[3];      /* 1 / d_a; 0 where d_a is +0, -0 or so small that 1 / d_a overflows */
+    bool parallel[3];   /* those axes: the ray never crosses a boundary of theirs */
+    real slack[3];      /* the rounding of a computed crossing of axis a, in t; 0 where inv_d_a = 0 */
+    real reach, d_max;
+    long octant;        /* the octant of d, as g->empty counts it (an axis the ray never crosses may take either) */
+    int step[3];        /* +1 or -1: the sign of d_a; 0 on the axes the ray never crosses */
+    int ahead[3];       /* 1 when step_a > 0, else 0: a cell's far boundary along a is plane i_a + ahead_a */
+} ray_frame;
+
 /* snippet: dda_step */
 /* Leaves the current cell through its boundary of axis a (the nearest one):
  * returns false when that boundary is the grid's own, true after moving to
  * the neighbour. */
-static inline bool dda_step(const fast_grid *g, dda *m, int a, const real p[3], const real inv_d[3])
+static inline bool dda_step(const fast_grid *g, dda *m, int a, const ray_frame *rf)
 {
     /* one step of the 3D-DDA along axis a.
      *     i_a = i_a + step_a                      (the neighbour across the boundary)
@@ -55,11 +67,11 @@ static inline bool dda_step(const fast_grid *g, dda *m, int a, const real p[3], 
      *              (plane i_a + ahead_a; crossing(g, a, plane, p, inv_d) computes it)
      * Compute next_a from the plane each time rather than adding a fixed
      * t step: the sum would gather one rounding per cell. */
-    m->i[a] += m->step[a];
+    m->i[a] += rf->step[a];
     if ((unsigned)m->i[a] >= (unsigned)g->n[a])
         return false;
     m->cell += m->move[a];
-    m->next[a] = crossing(g, a, m->i[a] + m->ahead[a], p, inv_d);
+    m->next[a] = crossing(g, a, m->i[a] + rf->ahead[a], rf->p, rf->inv_d);
     return true;
 }
 /* end snippet */
@@ -102,54 +114,44 @@ static inline int first_cell(const fast_grid *g, int a, real f) { return index_i
  * and kept inside the cube and the grid, so that rounding can only land the
  * ray a cell short (in the empty cube), never a cell too far.  False when
  * the ray leaves the grid through the cube's face. */
-static inline bool dda_leap(const fast_grid *g, dda *m, int side, const real p[3], const real d[3], const real inv_d[3],
-                            real reach, real d_max)
+static inline bool dda_leap(const fast_grid *g, dda *m, int side, const ray_frame *rf)
 {
+    const int *step = rf->step, *ahead = rf->ahead;
+    const real *p = rf->p, *inv_d = rf->inv_d;
     /* The t at which the ray crosses the cube's far face along each axis
      * (infinity on an axis it never crosses); the first of them is the exit. */
     real t_face[3];
     int far_end[3]; /* the index of the cube's last cell along each axis, the cell before its far face */
     for (int a = 0; a < 3; a++) {
-        far_end[a] = m->i[a] + m->step[a] * (side - 1);
-        t_face[a] = m->step[a] ? crossing(g, a, far_end[a] + m->ahead[a], p, inv_d) : REAL_INFINITY;
+        far_end[a] = m->i[a] + step[a] * (side - 1);
+        t_face[a] = step[a] ? crossing(g, a, far_end[a] + ahead[a], p, inv_d) : REAL_INFINITY;
     }
     const int axis = t_face[0] <= t_face[1] ? (t_face[0] <= t_face[2] ? 0 : 2) : (t_face[1] <= t_face[2] ? 1 : 2);
     const real t_exit = t_face[axis];
     if (!(t_exit < REAL_INFINITY)) /* no face ahead (or NaN): nothing to leap to */
         return false;
-    const int beyond = far_end[axis] + m->step[axis];
+    const int beyond = far_end[axis] + step[axis];
     if (beyond < 0 || beyond >= g->n[axis])
         return false; /* the cube's face is beyond the grid's */
-    const real back = reach + 16 * REAL_EPSILON * real_abs(t_exit) * d_max;
+    const real back = rf->reach + 16 * REAL_EPSILON * real_abs(t_exit) * rf->d_max;
     for (int a = 0; a < 3; a++) {
         if (a == axis) {
             m->i[a] = beyond;
-        } else if (m->step[a]) { /* in the cube and in the grid */
-            real f = (p[a] + t_exit * d[a] - g->lo_a[a] - (real)m->step[a] * back) * g->inv_cell_a[a];
-            int lowest = m->step[a] > 0 ? m->i[a] : far_end[a] > 0 ? far_end[a] : 0;
-            int highest = m->step[a] < 0 ? m->i[a] : far_end[a] < g->n[a] - 1 ? far_end[a] : g->n[a] - 1;
+        } else if (step[a]) { /* in the cube and in the grid */
+            real f = (p[a] + t_exit * rf->d[a] - g->lo_a[a] - (real)step[a] * back) * g->inv_cell_a[a];
+            int lowest = step[a] > 0 ? m->i[a] : far_end[a] > 0 ? far_end[a] : 0;
+            int highest = step[a] < 0 ? m->i[a] : far_end[a] < g->n[a] - 1 ? far_end[a] : g->n[a] - 1;
             m->i[a] = index_in(f, lowest, highest);
         } else {
             continue; /* the ray stays in its slab of cells along a */
         }
-        m->next[a] = crossing(g, a, m->i[a] + m->ahead[a], p, inv_d);
+        m->next[a] = crossing(g, a, m->i[a] + ahead[a], p, inv_d);
     }
-    m->cell = m->i[0] + (long)g->n[0] * (m->i[1] + (long)g->n[1] * m->i[2]);
+    m->cell = m->i[0] + g->stride[1] * m->i[1] + g->stride[2] * m->i[2];
     return true;
 }
 /* end snippet */
 
-/* What the march needs of the ray, made once per ray and shared by both
- * levels of grid (a sub-grid has its parent's scale, so the same rounding
- * bounds). */
-typedef struct {
-    real p[3], d[3];
-    real inv_d[3];      /* 1 / d_a; 0 where d_a is +0, -0 or so small that 1 / d_a overflows */
-    bool parallel[3];   /* those axes: the ray never crosses a boundary of theirs */
-    real slack[3];      /* the rounding of a computed crossing of axis a, in t; 0 where inv_d_a = 0 */
-    real reach, d_max;
-    long octant;        /* the octant of d, as g->empty counts it (an axis the ray never crosses may take either) */
-} ray_frame;
 
 /* snippet: enter */
 /* Rounding moves computed crossings by up to a few REAL_EPSILON times the
@@ -172,6 +174,10 @@ static inline void frame_of(ray_frame *f, const fast_grid *g, ray r)
         f->slack[a] = f->reach * real_abs(f->inv_d[a]);
     }
     f->octant = (f->inv_d[0] < 0) | (f->inv_d[1] < 0) << 1 | (f->inv_d[2] < 0) << 2;
+    for (int a = 0; a < 3; a++) {
+        f->step[a] = f->inv_d[a] > 0 ? 1 : f->inv_d[a] < 0 ? -1 : 0;
+        f->ahead[a] = f->step[a] > 0;
+    }
 }
 
 /* Where the ray enters the grid's box: the slabs lo_a <= p_a + t d_a <= hi_a
@@ -180,7 +186,7 @@ static inline void frame_of(ray_frame *f, const fast_grid *g, ray r)
  * and clamped to the grid.  False when the ray misses the box there. */
 static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, real upper, dda *m)
 {
-    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, hi[3] = {g->hi.x, g->hi.y, g->hi.z};
+    const real *lo = g->lo_a, *hi = g->hi_a;
     real t0 = t_min, t1 = upper;
     for (int a = 0; a < 3; a++) {
         if (f->parallel[a]) {
@@ -202,16 +208,13 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
     if (!(t0 <= t1)) /* misses the box, or the window ends before it */
         return false;
     const real back = f->reach + 16 * REAL_EPSILON * real_abs(t0) * f->d_max;
-    const long stride[3] = {1, g->n[0], (long)g->n[0] * g->n[1]};
     for (int a = 0; a < 3; a++) {
-        m->step[a] = f->inv_d[a] > 0 ? 1 : f->inv_d[a] < 0 ? -1 : 0;
-        m->ahead[a] = m->step[a] > 0;
-        m->move[a] = m->step[a] * stride[a];
+        m->move[a] = f->step[a] * g->stride[a];
         real x = f->inv_d[a] != 0 ? f->p[a] + t0 * f->d[a] : f->p[a];
-        m->i[a] = first_cell(g, a, (x - lo[a] - (real)m->step[a] * back) * g->inv_cell_a[a]);
-        m->next[a] = m->step[a] ? crossing(g, a, m->i[a] + m->ahead[a], f->p, f->inv_d) : REAL_INFINITY;
+        m->i[a] = first_cell(g, a, (x - lo[a] - (real)f->step[a] * back) * g->inv_cell_a[a]);
+        m->next[a] = f->step[a] ? crossing(g, a, m->i[a] + f->ahead[a], f->p, f->inv_d) : REAL_INFINITY;
     }
-    m->cell = m->i[0] + (long)g->n[0] * (m->i[1] + (long)g->n[1] * m->i[2]);
+    m->cell = m->i[0] + g->stride[1] * m->i[1] + g->stride[2] * m->i[2];
     return true;
 }
 /* end snippet */
@@ -252,17 +255,20 @@ static inline void consider(const fast_grid_entry *entry, const cull_frame *f, b
  * culling: most are large surfaces (a floor's triangles are listed in every
  * cell under it), culled again in every cell until tested once, where a
  * test settles them for the rest of the ray.  A cell with a grid of
- * its own (two levels) lists that grid alone: the ray marches through it. */
+ * its own (two levels) lists that grid first: the ray marches through it,
+ * then takes the cell's other entries, the surfaces that span the cell. */
 static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, search *s, const ray_frame *rf,
                               march_state *ms)
 {
-    const uint32_t first = g->start[m->cell], last = g->start[m->cell + 1];
+    uint32_t first = g->start[m->cell];
+    const uint32_t last = g->start[m->cell + 1];
     if (first == last)
         return;
     const fast_grid_entry *const refs = g->refs;
     if (refs[first].surface >= FAST_GRID_SUB) {
         march(&g->subs[refs[first].surface - FAST_GRID_SUB], s, rf, ms);
-        return;
+        if (++first == last)
+            return; /* no surface spans the cell beside its grid */
     }
     const bool cull = g->cull, use_mailbox = g->mailbox;
     if (!cull || last - first < SIFT_FROM) {
@@ -312,11 +318,11 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
         if (s->best_t <= m.next[a] - rf->slack[a])
             return;
         if (g->empty && g->empty[8 * m.cell + rf->octant] >= 2) { /* a cube of empty cells ahead: leap over it */
-            if (!dda_leap(g, &m, g->empty[8 * m.cell + rf->octant], rf->p, rf->d, rf->inv_d, rf->reach, rf->d_max))
+            if (!dda_leap(g, &m, g->empty[8 * m.cell + rf->octant], rf))
                 return;
             continue;
         }
-        if (!dda_step(g, &m, a, rf->p, rf->inv_d))
+        if (!dda_step(g, &m, a, rf))
             return;
     }
 }
