@@ -73,7 +73,7 @@ $(foreach c,$(CHAPTERS),$(eval EXERCISES_$c := $(if $(HANDOUT),$(patsubst %.o,%.
 reference = $(if $(EXERCISES_$1),$(if $(HANDOUT),$(REFERENCE_DIR)/lib$1.a,$(call objs,$(addprefix solutions/$1/,$(EXERCISES_$1)))))
 # The objects of chapter $1's stage files: the student's exercise files when $2
 # is 1, else the reference.
-stage_objs = $(call objs,$(filter-out $(if $(filter 1,$2),,$(addprefix chapters/$1/,$(EXERCISES_$1))),$(sort $(filter-out %/render.c,$(wildcard chapters/$1/*.c chapters/$1/scenes/*.c))))) $(if $(filter 1,$2),,$(call reference,$1))
+stage_objs = $(call objs,$(filter-out $(if $(filter 1,$2),,$(addprefix chapters/$1/,$(EXERCISES_$1))),$(sort $(filter-out %/render.c,$(wildcard chapters/$1/*.c chapters/$1/renderer/*.c chapters/$1/scenes/*.c))))) $(if $(filter 1,$2),,$(call reference,$1))
 # The stage objects of chapters 1..$1.
 stages_upto = $(foreach c,$(call upto,$1),$(call stage_objs,$c,$(if $(filter $c $(call num,$c),$(REFERENCE)),0,$(STUDENT))))
 # Links the prerequisites $1: every member of a reference library is linked,

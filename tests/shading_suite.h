@@ -1,6 +1,6 @@
 /* shading_suite.h - what the suites of the shading chapters (05 on) share.
  *
- * A scene is traced as the renderer traces it (shading_stage.h: robust
+ * A scene is traced as the renderer traces it (05_lambert/renderer/shading_stage.h: robust
  * spheres, watertight triangles, the linear scan) with the test's own shade
  * function and knobs.  A scene that cannot be prepared fails the test with
  * the preparation's message.
@@ -13,7 +13,7 @@
 
 #include <stdlib.h>
 
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 #include "display.h"
 #include "image.h"
 #include "render_loop.h"

@@ -6,7 +6,7 @@
 #include "05_lambert/lambert.h"
 #include "05_lambert/shade_lambert.h"
 #include "05_lambert/scenes/shading_scene.h"
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 #include "05_lambert/tracer.h"
 #include "scene_build.h"
 #include "shading_suite.h"

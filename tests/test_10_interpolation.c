@@ -4,7 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 #include "08_mirrors/mirror.h"
 #include "10_interpolation/scenes/interp_scene.h"
 #include "10_interpolation/shade_interp.h"

@@ -19,7 +19,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 #include "07_blinn_phong/shade_phong.h"
 #include "10_interpolation/scenes/sphere_mesh.h"
 #include "11_grid/grid_stage.h"

@@ -2,7 +2,8 @@
 # lesson-lines.sh [--check] - what a student reads and writes, chapter by chapter.
 #
 # For each chapters/NN_name/: the lesson's stage code (the .c and .h files a
-# student opens there, render.c aside), render.c, the lab beside it
+# student opens there, render.c aside), render.c, the renderer that later
+# chapters' programs share (renderer/*.c, renderer/*.h), the lab beside it
 # (lab/*.c, lab/*.h), the README, and the lines the student writes (the
 # non-blank lines of the solutions' exercise regions, tools/skeleton.awk's
 # format).  With --check, fails naming every chapter past its budget and a
@@ -22,7 +23,7 @@ written() {
          s == 3 && /END EXERCISE \*\// { s = 0 }
          END { print n + 0 }' "$@" /dev/null
 }
-# The budget of chapter $1 in column $2 of the table (| chapter | lesson | render.c | why |).
+# The budget of chapter $1 in column $2 of the table (| chapter | lesson | render.c | renderer/ | why |).
 budget() {
     awk -F'|' -v c="$1" -v col="$2" '/<!-- budgets:/ { on = 1 } /<!-- end budgets -->/ { on = 0 }
         on { name = $2; gsub(/ /, "", name); if (name == c) { v = $col; gsub(/ /, "", v); print v } }' "$budgets"
@@ -30,26 +31,29 @@ budget() {
 status=0
 read_all=0
 written_all=0
-printf '%-18s %7s %7s %7s %8s %7s\n' chapter lesson render.c lab written README
+printf '%-18s %7s %7s %9s %7s %8s %7s\n' chapter lesson render.c renderer/ lab written README
 for dir in chapters/[0-9][0-9]_*/; do
     c=$(basename "$dir")
     shopt -s nullglob
     stage=()
     for f in "$dir"*.c "$dir"*.h; do [ "$(basename "$f")" = render.c ] || stage+=("$f"); done
+    shared=("$dir"renderer/*.c "$dir"renderer/*.h)
     lab=("$dir"lab/*.c "$dir"lab/*.h)
     sol=(solutions/"$c"/*.c)
     shopt -u nullglob
     l=$(lines "${stage[@]}")
     r=$(lines "$dir"render.c)
+    s=$( ((${#shared[@]})) && lines "${shared[@]}" || echo 0)
     b=$( ((${#lab[@]})) && lines "${lab[@]}" || echo 0)
     w=$( ((${#sol[@]})) && written "${sol[@]}" || echo 0)
     m=$(lines "$dir"README.md)
-    printf '%-18s %7d %7d %7d %8d %7d\n' "$c" "$l" "$r" "$b" "$w" "$m"
+    printf '%-18s %7d %7d %9d %7d %8d %7d\n' "$c" "$l" "$r" "$s" "$b" "$w" "$m"
     read_all=$((read_all + l))
     written_all=$((written_all + w))
     lesson_max=$(budget "$c" 3)
     render_max=$(budget "$c" 4)
-    if [ -z "$lesson_max" ] || [ -z "$render_max" ]; then
+    shared_max=$(budget "$c" 5)
+    if [ -z "$lesson_max" ] || [ -z "$render_max" ] || [ -z "$shared_max" ]; then
         echo "$c: no budget in $budgets (\"Lesson and lab\")" >&2
         status=1
         continue
@@ -60,6 +64,10 @@ for dir in chapters/[0-9][0-9]_*/; do
     fi
     if [ "$r" -gt "$render_max" ]; then
         echo "$c: render.c is $r lines, past its budget of $render_max ($budgets)" >&2
+        status=1
+    fi
+    if [ "$s" -gt "$shared_max" ]; then
+        echo "$c: the shared renderer (renderer/) is $s lines, past its budget of $shared_max ($budgets)" >&2
         status=1
     fi
 done

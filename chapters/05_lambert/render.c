@@ -8,7 +8,7 @@
  * Knobs: --sphere (chapter 02), --triangle (chapter 03).
  */
 #include "05_lambert/shade_lambert.h"
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 
 int main(int argc, char **argv)
 {

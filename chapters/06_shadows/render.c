@@ -7,7 +7,7 @@
  * Knobs: --sphere (chapter 02), --triangle (chapter 03), --shadow-eps.
  * The chapter's lab (lab/README.md) measures acne and leaks of each policy.
  */
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 #include "06_shadows/shade_shadows.h"
 
 int main(int argc, char **argv)

@@ -8,7 +8,7 @@
  * (chapter 06), --phong=course|lecture (is the specular term multiplied by
  * max(0, n . l)?  The course's images: no).
  */
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 #include "07_blinn_phong/shade_phong.h"
 
 int main(int argc, char **argv)

@@ -10,7 +10,7 @@
  * --min-weight.  The chapter's lab (lab/README.md) measures how often a
  * convex mirror sees itself under each policy.
  */
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 #include "08_mirrors/scenes/mirror_scene.h"
 #include "08_mirrors/shade_glazed.h"
 

@@ -10,7 +10,7 @@
  * (lab/README.md) prints R against the angle and where the precision gives
  * out.
  */
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 #include "09_refraction/scenes/glass_scene.h"
 #include "09_refraction/shade_glass.h"
 

@@ -9,7 +9,7 @@
  * --fresnel (chapter 09), --normals=interpolated|geometric,
  * --texture-filter=nearest|bilinear, --below-surface=flip|keep.
  */
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 #include "10_interpolation/scenes/interp_scene.h"
 #include "10_interpolation/shade_interp.h"
 

@@ -5,7 +5,7 @@
 
 #include <stddef.h>
 
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 #include "10_interpolation/shade_interp.h"
 #include "11_grid/grid.h"
 

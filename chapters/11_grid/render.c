@@ -5,7 +5,7 @@
  * that is chapter 10 as it is).  The lab (lab/README.md) measures the grid
  * and adds a faster one.
  */
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 #include "11_grid/grid_stage.h"
 #include "11_grid/scenes/grid_scene.h"
 

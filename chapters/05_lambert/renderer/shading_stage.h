@@ -1,7 +1,7 @@
 /* shading_stage.h - chapter 05: the renderer that chapters 05-11 share: a render.c fills a
  * shading_stage and calls shading_main() (README, "One renderer for every shading chapter"). */
-#ifndef CH05_SHADING_STAGE_H
-#define CH05_SHADING_STAGE_H
+#ifndef CH05_RENDERER_SHADING_STAGE_H
+#define CH05_RENDERER_SHADING_STAGE_H
 
 #include "01_camera_rays/camera.h"
 #include "04_many_shapes/shape_knobs.h"

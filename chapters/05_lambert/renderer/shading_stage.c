@@ -1,5 +1,5 @@
 /* shading_stage.c - chapter 05: the renderer that every shading chapter shares. */
-#include "05_lambert/shading_stage.h"
+#include "05_lambert/renderer/shading_stage.h"
 
 #include <stdio.h>
 #include <stdlib.h>
