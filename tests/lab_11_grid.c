@@ -4,7 +4,7 @@
  * combination of its knobs, then what only the fast grid has: the mailbox
  * (each surface tested once along a ray) and the empty cubes it leaps over.
  */
-#include "11_grid/grid_stage.h"
+#include "11_grid/renderer/grid_stage.h"
 #include "11_grid/lab/fast_query.h"
 
 #define GRID fast_grid

@@ -7,7 +7,7 @@
  * stop rule, against numbers computed another way.
  */
 #include "11_grid/grid.h"
-#include "11_grid/grid_stage.h"
+#include "11_grid/renderer/grid_stage.h"
 
 #define GRID grid
 #define GRID_OPTIONS grid_options

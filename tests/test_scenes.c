@@ -22,7 +22,7 @@
 #include "05_lambert/renderer/shading_stage.h"
 #include "07_blinn_phong/shade_phong.h"
 #include "10_interpolation/scenes/sphere_mesh.h"
-#include "11_grid/grid_stage.h"
+#include "11_grid/renderer/grid_stage.h"
 #include "image_compare.h"
 #include "suite.h"
 

@@ -6,7 +6,7 @@
  * and adds a faster one.
  */
 #include "05_lambert/renderer/shading_stage.h"
-#include "11_grid/grid_stage.h"
+#include "11_grid/renderer/grid_stage.h"
 #include "11_grid/scenes/grid_scene.h"
 
 int main(int argc, char **argv)

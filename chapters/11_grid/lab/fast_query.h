@@ -10,7 +10,7 @@
 
 #include <stdint.h>
 
-#include "11_grid/grid_stage.h"
+#include "11_grid/renderer/grid_stage.h"
 #include "11_grid/lab/fast_grid.h"
 
 /* The lab's knobs: the lesson's (its --accel aside), then the fast grid's. */

@@ -1,7 +1,7 @@
 /* grid_stage.h - chapter 11: the grid as the closest-hit query of chapter 10's stage (README,
  * "What the renderer shows"): chapter 10's images byte for byte, only sooner. */
-#ifndef CH11_GRID_STAGE_H
-#define CH11_GRID_STAGE_H
+#ifndef CH11_RENDERER_GRID_STAGE_H
+#define CH11_RENDERER_GRID_STAGE_H
 
 #include <stddef.h>
 

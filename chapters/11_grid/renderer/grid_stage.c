@@ -1,5 +1,5 @@
 /* grid_stage.c - chapter 11: the grid as the closest-hit query of chapter 10's stage. */
-#include "11_grid/grid_stage.h"
+#include "11_grid/renderer/grid_stage.h"
 
 #include <stdio.h>
 #include <stdlib.h>
