@@ -267,6 +267,14 @@ GRADE_FLOAT ?= 1
 # GRADE_USER=name runs the tests as that user (the autograder; needs root);
 # GRADE_NOTES=file is shown above the results (the autograder's file list).
 GRADE_USER ?=
+# With GRADE_USER, one grading at a time: each kills every process of that
+# user after every test and compiles the student's files as that user, so a
+# second grading waits, saying so, for a lock in /run (root's alone), which
+# flock(1) holds (-o: no test inherits it).  $(call locked,COMMAND)
+grade_lock_file = /run/rt-grade-$(GRADE_USER).lock
+locked = $(if $(GRADE_USER),flock -o -n -E 75 $(grade_lock_file) $1; s=$$?; if [ $$s = 75 ]; then \
+    echo "make grade: another grading runs as '$(GRADE_USER)': waiting for it to end" >&2; \
+    flock -o $(grade_lock_file) $1; else exit $$s; fi,$1)
 GRADE_NOTES ?=
 # The whole grading's time (seconds) and each test's memory (MB): tools/grade.
 GRADE_BUDGET ?= 3600
@@ -302,7 +310,7 @@ $(BUILD)/tools/%: $(BUILD)/obj/tools/%.o
 
 grade:
 	@$(if $(GRADE_CHAPTERS),,echo "make grade: $(if $(CHAPTER),no chapter '$(CHAPTER)' has a test suite,no chapter has a test suite) (chapters with one: $(or $(CHAPTER_TESTS:test_%=%),none))" >&2; exit 2)
-	@$(MAKE) --no-print-directory -s BUILD=$(GRADE_BUILD) STUDENT=0 REAL=double SANITIZE=0 grade-run
+	@$(call locked,$(MAKE) --no-print-directory -s BUILD=$(GRADE_BUILD) STUDENT=0 REAL=double SANITIZE=0 grade-run)
 
 # Run by `grade` in the grading build.  A chapter whose reference suite does
 # not build is not graded; a student's suite that does not compile fails that
