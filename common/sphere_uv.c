@@ -3,7 +3,6 @@
 
 #include <math.h>
 
-/* snippet: sphere_uv */
 mesh_uv sphere_uv(vec3 center, real radius, vec3 point)
 {
     static const double pi = 3.14159265358979323846;
@@ -13,4 +12,3 @@ mesh_uv sphere_uv(vec3 center, real radius, vec3 point)
     double v = 0.5 + asin(y) / pi;                               /* latitude, 0 south, 1 north */
     return (mesh_uv){(real)u, (real)v};
 }
-/* end snippet */

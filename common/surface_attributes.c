@@ -3,7 +3,6 @@
 
 #include "sphere_uv.h"
 
-/* snippet: surface_mesh_face */
 const mesh_face *surface_mesh_face(const scene *desc, int surface, int face, const mesh **m)
 {
     const scene_surface *s = &desc->surfaces[surface];
@@ -12,7 +11,6 @@ const mesh_face *surface_mesh_face(const scene *desc, int surface, int face, con
     *m = &desc->meshes[s->mesh];
     return &(*m)->faces[face];
 }
-/* end snippet */
 
 bool surface_sphere_uv(const scene *desc, int surface, vec3 point, mesh_uv *uv)
 {

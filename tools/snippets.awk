@@ -13,7 +13,11 @@
 # is the region of chapters/01_camera_rays/camera.h (a path from the top of
 # the repository) between the lines `/* snippet: camera */` and
 # `/* end snippet */`, without those lines and without the markers of any
-# region nested in it, without the EXERCISE_STUB(...) lines that
+# region nested in it.  Where the file has no such region, `camera` names a
+# function: the block is its definition (from the line at the margin that
+# names it to the `}` at the margin) with the comment right above it, so a
+# function shown whole needs no markers.  Either way the block is shown
+# without the EXERCISE_STUB(...) lines that
 # tools/skeleton.awk adds to a stub (the text shows the stub as the student
 # should read it), and with the indentation the region's lines share
 # removed.  Blocks may not show solutions/: a student reads the chapters/ file.
@@ -26,6 +30,34 @@ BEGIN { status = 0; inside = 0 }
 function problem(message) {
     printf "%s:%d: snippet %s: %s\n", FILENAME, start_line, where, message > "/dev/stderr"
     status = 1
+}
+
+# The definition of function `name` in `path` with the comment right above
+# it, into lines[1..n] (without EXERCISE_STUB lines); n, or 0 when there is none.
+function definition(path, name, lines,    all, m, k, start, first, n, j) {
+    m = 0
+    while ((getline all[m + 1] < path) > 0) m++
+    close(path)
+    start = 0
+    for (k = 1; k <= m && !start; k++)
+        if (all[k] ~ "^[A-Za-z_].*(^|[^A-Za-z0-9_])" name "\\(" && all[k] !~ /;[ \t]*$/ && all[k] !~ /^(typedef|#)/)
+            start = k
+    if (!start) return 0
+    first = start
+    # the comment that ends right above it
+    if (start > 1 && all[start - 1] ~ /\*\/[ \t]*$/) {
+        for (j = start - 1; j > 1 && all[j] ~ /^ \*/; j--)
+            ;
+        if (all[j] ~ /^\/\*/) first = j
+    }
+    n = 0
+    for (k = first; k <= m; k++) {
+        if (all[k] ~ /^[ \t]*EXERCISE_STUB\(.*\);[ \t]*(\/\*.*\*\/)?[ \t]*$/) continue
+        lines[++n] = all[k]
+        if (k > start && all[k] ~ /^}/) return n
+        if (k == start && all[k] ~ /}[ \t]*$/) return n # a definition on one line
+    }
+    return 0
 }
 
 # The region `name` of `path`, as a fenced block of language `lang`; "" and
@@ -51,7 +83,8 @@ function region(path, name, lang,    line, depth, found, n, k, lines, indent, le
     }
     close(path)
     if (rc < 0) { problem("cannot read " path); return "" }
-    if (!found) { problem("no region /* snippet: " name " */ in " path); return "" }
+    if (!found) n = definition(path, name, lines)
+    if (!found && n == 0) { problem("no region /* snippet: " name " */ and no function " name " in " path); return "" }
     if (depth != 0) { problem("the region " name " in " path " has no /* end snippet */"); return "" }
     indent = -1
     for (k = 1; k <= n; k++) {

@@ -10,7 +10,6 @@
  * huge or tiny components neither overflow nor underflow in the dot product. */
 static vec3 unit(vec3 a) { return vec3_normalize(vec3_scale(a, 1 / vec3_max_abs(a))); }
 
-/* snippet: basis */
 void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
 {
     /* TODO basis: the orthonormal basis u (right), v (up), w (backwards) from viewDir and viewUp
@@ -22,7 +21,6 @@ void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
     *v = vec3_make(0, 0, 0);
     *w = vec3_make(0, 0, 0);
 }
-/* end snippet */
 
 const char *camera_init(camera *cam, const scene_camera *desc)
 {
@@ -59,7 +57,6 @@ bool camera_from_scene(camera *cam, const scene *desc, char *err, size_t err_siz
     return problem == NULL;
 }
 
-/* snippet: camera_ray */
 ray camera_ray(const camera *cam, real u, real v)
 {
     /* TODO rays: the eye ray through (u, v), for both kinds of camera: first the point of the image
@@ -71,4 +68,3 @@ ray camera_ray(const camera *cam, real u, real v)
     EXPLAIN(explain_eye_ray(r));
     return r;
 }
-/* end snippet */

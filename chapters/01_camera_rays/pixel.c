@@ -2,7 +2,6 @@
 #include "01_camera_rays/pixel.h"
 #include "exercise.h"
 
-/* snippet: pixel_to_image */
 void pixel_to_image(int i, int j, int nx, int ny, real du, real dv, real *u, real *v)
 {
     /* TODO pixel: the image position (u, v) in [0, 1]^2 of the sample at (du, dv) inside pixel (i, j)
@@ -16,4 +15,3 @@ void pixel_to_image(int i, int j, int nx, int ny, real du, real dv, real *u, rea
     (void)dv;
     *u = *v = (real)0.5;
 }
-/* end snippet */

@@ -7,7 +7,6 @@ color direction_color(ray r)
     return color_make((d.x + 1) / 2, (d.y + 1) / 2, (d.z + 1) / 2);
 }
 
-/* snippet: floor */
 color floor_color(ray r)
 {
     if (r.d.y < 0 && r.p.y > 0) {
@@ -19,7 +18,6 @@ color floor_color(ray r)
     real up = r.d.y / vec3_length(r.d); /* sky: brighter towards the zenith */
     return color_make((real)0.4 + (real)0.2 * up, (real)0.6 + (real)0.2 * up, (real)0.9);
 }
-/* end snippet */
 
 int ray_view_scene(scene *desc)
 {

@@ -14,7 +14,6 @@
 
 enum { FORMULA_ROBUST, FORMULA_TEXTBOOK, FORMULA_COMPARE };
 static const char *const formula_choices[] = {"robust", "textbook", "compare", NULL};
-/* snippet: trace */
 static color sample(const void *scene, real u, real v, uint64_t *rays)
 {
     const sphere_stage *st = scene;
@@ -31,7 +30,6 @@ static color sample(const void *scene, real u, real v, uint64_t *rays)
     }
     return st->background;
 }
-/* end snippet */
 
 int main(int argc, char **argv)
 {

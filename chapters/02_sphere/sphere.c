@@ -32,7 +32,6 @@ static bool textbook_roots(const sphere *s, ray r, real *t0, real *t1)
  *   - the roots from the stable pair (5): the one of larger magnitude by
  *     adding numbers of the same sign, the other from the product of the
  *     roots, t0 t1 = C / A (Vieta), so neither cancels. */
-/* snippet: robust */
 static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
 {
     vec3 f = vec3_sub(r.p, s->center);
@@ -54,14 +53,12 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     *t0 = *t1 = 0;
     return false;
 }
-/* end snippet */
 
 static bool roots_of(const sphere *s, ray r, sphere_formula formula, real *t0, real *t1)
 {
     return formula == SPHERE_TEXTBOOK ? textbook_roots(s, r, t0, t1) : robust_roots(s, r, t0, t1);
 }
 
-/* snippet: scaled */
 /* Both formulas multiply up to four lengths (A (R^2 - l.l) is |d|^2 R^2 in
  * size), which overflows or underflows for data far from 1 (in float from
  * about 1e9 and 1e-9: real.h, REAL_SAFE_EXPONENT).  The roots do not depend
@@ -83,9 +80,7 @@ bool sphere_roots(const sphere *s, ray r, sphere_formula formula, real *t0, real
     *t1 = (real)ldexp(*t1, m - k);
     return true;
 }
-/* end snippet */
 
-/* snippet: normal */
 vec3 sphere_normal(const sphere *s, vec3 x)
 {
     /* TODO normal: the outward unit normal at the hit point x (README, "Exercises": why not divide
@@ -95,9 +90,7 @@ vec3 sphere_normal(const sphere *s, vec3 x)
     (void)x;
     return vec3_make(0, 0, 0);
 }
-/* end snippet */
 
-/* snippet: nearest */
 bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
 {
     /* TODO nearest: the nearest of the two roots inside the open window (t_min, t_max), the
@@ -110,9 +103,7 @@ bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
     (void)t;
     return false;
 }
-/* end snippet */
 
-/* snippet: intersect */
 bool sphere_intersect(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula, real *t, vec3 *n)
 {
     real t0 = 0, t1 = 0, hit = 0;
@@ -125,4 +116,3 @@ bool sphere_intersect(const sphere *s, ray r, real t_min, real t_max, sphere_for
     *n = sphere_normal(s, ray_at(r, hit));
     return true;
 }
-/* end snippet */

@@ -13,7 +13,6 @@ bool triangle_cramer(const triangle *tri, ray r, real t_min, real t_max, triangl
     return false;
 }
 
-/* snippet: dispatch */
 bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, triangle_test test, triangle_hit *hit)
 {
     /* A d of extreme length: divided by 2^k exactly (real.h), t and the window multiplied by it. */
@@ -36,7 +35,6 @@ bool triangle_intersect(const triangle *tri, ray r, real t_min, real t_max, tria
     *hit = h;
     return true;
 }
-/* end snippet */
 
 vec3 triangle_normal(const triangle *tri)
 {

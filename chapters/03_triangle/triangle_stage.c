@@ -44,13 +44,11 @@ int triangle_stage_closest(const triangle_stage *s, ray r, triangle_test t, tria
     return found;
 }
 
-/* snippet: barycentric_color */
 color barycentric_color(triangle_hit h)
 {
     real alpha = 1 - h.beta - h.gamma;
     return color_make(alpha, h.beta, h.gamma);
 }
-/* end snippet */
 
 color triangle_stage_sample(const void *prepared, real u, real v, uint64_t *rays)
 {

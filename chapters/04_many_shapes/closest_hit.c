@@ -2,7 +2,6 @@
 #include "04_many_shapes/closest_hit.h"
 #include "exercise.h"
 
-/* snippet: surfaces_intersect */
 bool surfaces_intersect(const surface_list *list, ray r, real t_min, real t_max, hit_record *hit)
 {
     /* TODO closest: the closest hit in (t_min, t_max) of all the list's surfaces, found by the
@@ -15,4 +14,3 @@ bool surfaces_intersect(const surface_list *list, ray r, real t_min, real t_max,
     (void)hit;
     return false;
 }
-/* end snippet */

@@ -52,7 +52,6 @@ int surface_list_from_scene(surface_list *list, const scene *desc, char *err, si
     return scene_shapes(desc, add_shape, list, err, err_size);
 }
 
-/* snippet: surface_intersect */
 bool surface_intersect(const surface *s, const surface_list *list, ray r, real t_min, real t_max, hit_record *hit)
 {
     EXPLAIN(explain_surface((int)(s - list->items), s->source, s->face));
@@ -71,7 +70,6 @@ bool surface_intersect(const surface *s, const surface_list *list, ray r, real t
         *hit = surface_hit_record(s, r, th.t, triangle_normal(&s->triangle), th.beta, th.gamma);
     return found;
 }
-/* end snippet */
 
 hit_record surface_hit_record(const surface *s, ray r, real t, vec3 n, real beta, real gamma)
 {

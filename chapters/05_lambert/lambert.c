@@ -2,7 +2,6 @@
 #include "05_lambert/lambert.h"
 #include "exercise.h"
 
-/* snippet: lambert */
 color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)
 {
     /* TODO lambert: the radiance L_d that a matte surface with coefficient k_d at `point`, unit
@@ -14,4 +13,3 @@ color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)
     (void)light;
     return color_make(0, 0, 0);
 }
-/* end snippet */

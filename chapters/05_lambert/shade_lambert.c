@@ -5,7 +5,6 @@
 #include "05_lambert/lambert.h"
 #include "explain.h"
 
-/* snippet: shade_lambert */
 color shade_lambert(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
     (void)depth; /* no ray leaves the surface here: nothing to count */
@@ -19,4 +18,3 @@ color shade_lambert(const tracer *tr, const shading_point *sp, int depth, uint64
     EXPLAIN(explain_light(&tr->desc->lights[0], sp->hit.point, sp->n, sp->v, L_d, false, L_d));
     return L_d;
 }
-/* end snippet */

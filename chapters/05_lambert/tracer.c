@@ -10,15 +10,12 @@ bool closest_hit_linear(const void *accel, ray r, real t_min, real t_max, hit_re
     return surfaces_intersect(accel, r, t_min, t_max, hit);
 }
 
-/* snippet: normal_towards_viewer */
 vec3 normal_towards_viewer(vec3 n, vec3 d)
 {
     /* The viewer is at -d from the point: n faces it when n . (-d) > 0. */
     return vec3_dot(n, d) < 0 ? n : vec3_neg(n);
 }
-/* end snippet */
 
-/* snippet: trace */
 color trace(const tracer *tr, ray r, real t_min, real t_max, int depth, uint64_t *rays)
 {
     EXPLAIN(explain_trace(r, t_min, t_max, depth, tr->weight, rays));
@@ -35,4 +32,3 @@ color trace(const tracer *tr, ray r, real t_min, real t_max, int depth, uint64_t
     EXPLAIN(explain_radiance(L));
     return L;
 }
-/* end snippet */

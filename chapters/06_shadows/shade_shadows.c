@@ -11,7 +11,6 @@ bool light_in_front(const shading_point *sp, const scene_light *light)
     return vec3_dot(sp->n, vec3_sub(light->position, sp->hit.point)) > 0;
 }
 
-/* snippet: shade_shadows */
 color shade_shadows(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
     const scene_shader *shader = sp->shader;
@@ -24,4 +23,3 @@ color shade_shadows(const tracer *tr, const shading_point *sp, int depth, uint64
     EXPLAIN(explain_light(light, sp->hit.point, sp->n, sp->v, L_d, false, L_d));
     return L_d;
 }
-/* end snippet */

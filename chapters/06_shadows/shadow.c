@@ -2,7 +2,6 @@
 #include "06_shadows/shadow.h"
 #include "exercise.h"
 
-/* snippet: light_blocked */
 bool light_blocked(const tracer *tr, const shading_point *sp, vec3 light_pos, eps_policy policy, uint64_t *rays)
 {
     /* TODO shadow: whether the light at light_pos is blocked from sp's point, by the surface itself
@@ -17,4 +16,3 @@ bool light_blocked(const tracer *tr, const shading_point *sp, vec3 light_pos, ep
     (void)rays;
     return false;
 }
-/* end snippet */

@@ -19,7 +19,6 @@ eps_policy tracer_eps(const tracer *tr)
     return (eps_policy)(tr->knobs.spawn ? tr->knobs.spawn : &defaults)->eps;
 }
 
-/* snippet: eps_bound */
 real eps_bound(const shading_point *sp)
 {
     /* The point is p + t d, computed from the ray's origin p and the surface's
@@ -28,7 +27,6 @@ real eps_bound(const shading_point *sp)
     real magnitude = real_fmax(vec3_max_abs(sp->hit.point), vec3_max_abs(sp->r.p));
     return EPS_BOUND_ULPS * REAL_EPSILON * magnitude;
 }
-/* end snippet */
 
 /* snippet: spawn_ray */
 ray spawn_ray(const shading_point *sp, vec3 d, eps_policy policy)

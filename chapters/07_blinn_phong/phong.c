@@ -4,7 +4,6 @@
 
 const char *const phong_form_names[] = {"course", "lecture", NULL};
 
-/* snippet: blinn_phong_specular */
 color blinn_phong_specular(color k_s, real p, vec3 point, vec3 n, vec3 v, const scene_light *light,
                            phong_form form)
 {
@@ -20,4 +19,3 @@ color blinn_phong_specular(color k_s, real p, vec3 point, vec3 n, vec3 v, const 
     (void)form;
     return color_make(0, 0, 0);
 }
-/* end snippet */

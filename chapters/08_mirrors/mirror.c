@@ -5,7 +5,6 @@
 #include "06_shadows/spawn.h"
 #include "08_mirrors/path.h"
 
-/* snippet: reflect */
 vec3 reflect(vec3 d, vec3 n)
 {
     /* TODO reflect: the mirror direction of the ray's direction d (any length) about the unit
@@ -14,9 +13,7 @@ vec3 reflect(vec3 d, vec3 n)
     (void)n;
     return d;
 }
-/* end snippet */
 
-/* snippet: mirror_radiance */
 color mirror_radiance(const tracer *tr, const shading_point *sp, color k_m, int depth, uint64_t *rays)
 {
     /* TODO recursion: L_m, the radiance seen from sp's point in the mirror direction: the reflected
@@ -31,4 +28,3 @@ color mirror_radiance(const tracer *tr, const shading_point *sp, color k_m, int 
     (void)rays;
     return color_make(0, 0, 0);
 }
-/* end snippet */

@@ -19,7 +19,6 @@ const path_knobs *tracer_path_knobs(const tracer *tr)
     return tr->knobs.path ? tr->knobs.path : &defaults;
 }
 
-/* snippet: path_next */
 bool path_next(const tracer *tr, int depth, color k, tracer *next)
 {
     const path_knobs *knobs = tracer_path_knobs(tr);
@@ -37,4 +36,3 @@ bool path_next(const tracer *tr, int depth, color k, tracer *next)
     next->weight = w;
     return true;
 }
-/* end snippet */

@@ -3,7 +3,6 @@
 
 #include "08_mirrors/mirror.h"
 
-/* snippet: shade_glazed */
 color shade_glazed(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
     color L = shade_phong(tr, sp, depth, rays); /* L_a + L_r: chapter 07 */
@@ -13,4 +12,3 @@ color shade_glazed(const tracer *tr, const shading_point *sp, int depth, uint64_
         return L; /* no mirror: no mirror ray */
     return color_add(L, color_mul(k_m, mirror_radiance(tr, sp, k_m, depth, rays))); /* + k_m L_m */
 }
-/* end snippet */

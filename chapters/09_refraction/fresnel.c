@@ -6,7 +6,6 @@
 
 const char *const fresnel_mode_names[] = {"exact", "schlick", NULL};
 
-/* snippet: fresnel_exact */
 real fresnel_exact(real cos_i, real cos_t, real eta_i, real eta_t)
 {
     /* TODO fresnel: Fresnel's reflectance R of unpolarised light from the two cosines and indices
@@ -18,9 +17,7 @@ real fresnel_exact(real cos_i, real cos_t, real eta_i, real eta_t)
     (void)eta_t;
     return 0;
 }
-/* end snippet */
 
-/* snippet: fresnel_schlick */
 real fresnel_schlick(real cos_i, real cos_t, real eta_i, real eta_t)
 {
     /* TODO schlick: Schlick's approximation of R, with the cosine of the right side of the surface
@@ -32,7 +29,6 @@ real fresnel_schlick(real cos_i, real cos_t, real eta_i, real eta_t)
     (void)eta_t;
     return 0;
 }
-/* end snippet */
 
 real fresnel(fresnel_mode mode, real cos_i, real cos_t, real eta_i, real eta_t)
 {

@@ -2,7 +2,6 @@
 #include "09_refraction/refract.h"
 #include "exercise.h"
 
-/* snippet: refract */
 bool refract(vec3 d, vec3 n, real eta_i, real eta_t, vec3 *T, real *cos_t)
 {
     /* TODO refract: the transmitted direction of d through the surface from eta_i into eta_t, or
@@ -17,4 +16,3 @@ bool refract(vec3 d, vec3 n, real eta_i, real eta_t, vec3 *T, real *cos_t)
     *cos_t = 0;
     return false;
 }
-/* end snippet */

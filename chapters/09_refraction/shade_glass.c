@@ -23,7 +23,6 @@ fresnel_mode tracer_fresnel(const tracer *tr)
     return (fresnel_mode)(tr->knobs.glass ? tr->knobs.glass : &defaults)->fresnel;
 }
 
-/* snippet: glass_at */
 glass_event glass_at(const shading_point *sp, real eta, fresnel_mode mode)
 {
     glass_event e;
@@ -37,7 +36,6 @@ glass_event glass_at(const shading_point *sp, real eta, fresnel_mode mode)
     e.R = e.transmits ? fresnel(mode, e.cos_i, e.cos_t, e.eta_i, e.eta_t) : 1; /* TIR reflects it all */
     return e;
 }
-/* end snippet */
 
 color transmitted_radiance(const tracer *tr, const shading_point *sp, vec3 T, color k, int depth, uint64_t *rays)
 {
@@ -49,7 +47,6 @@ color transmitted_radiance(const tracer *tr, const shading_point *sp, vec3 T, co
     return trace(&next, through, 0, REAL_INFINITY, depth + 1, rays);
 }
 
-/* snippet: shade_glass */
 color shade_glass(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
     const scene_shader *shader = sp->shader;
@@ -66,4 +63,3 @@ color shade_glass(const tracer *tr, const shading_point *sp, int depth, uint64_t
     (void)rays;
     return color_make(0, 0, 0);
 }
-/* end snippet */

@@ -2,7 +2,6 @@
 #include "10_interpolation/interpolate.h"
 #include "exercise.h"
 
-/* snippet: interpolate */
 vec3 interpolate_vec3(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma)
 {
     /* TODO interpolate: the attribute at (beta, gamma) of a triangle whose vertices a, b, c carry
@@ -14,7 +13,6 @@ vec3 interpolate_vec3(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma)
     (void)gamma;
     return A_a;
 }
-/* end snippet */
 
 mesh_uv interpolate_uv(mesh_uv A_a, mesh_uv A_b, mesh_uv A_c, real beta, real gamma)
 {

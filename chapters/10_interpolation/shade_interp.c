@@ -38,7 +38,6 @@ typedef struct {
     mesh_uv uv;
 } interp_point;
 
-/* snippet: interp_at */
 /* The interpolated attributes of the point sp (a surface without one keeps what it had). */
 static interp_point interp_at(const tracer *tr, const shading_point *sp)
 {
@@ -59,9 +58,7 @@ static interp_point interp_at(const tracer *tr, const shading_point *sp)
     }
     return ip;
 }
-/* end snippet */
 
-/* snippet: shade_interp */
 color shade_interp(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
     const scene_shader *shader = sp->shader;
@@ -87,4 +84,3 @@ color shade_interp(const tracer *tr, const shading_point *sp, int depth, uint64_
     ip.sp.shader = &textured;
     return shade_glass(tr, &ip.sp, depth, rays);
 }
-/* end snippet */

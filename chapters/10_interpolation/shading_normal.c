@@ -3,7 +3,6 @@
 
 #include "10_interpolation/interpolate.h"
 
-/* snippet: vertex_normal */
 bool vertex_normal(const mesh *m, const mesh_face *f, real beta, real gamma, vec3 *n)
 {
     if (f->vn[0] < 0 || f->vn[1] < 0 || f->vn[2] < 0)
@@ -14,4 +13,3 @@ bool vertex_normal(const mesh *m, const mesh_face *f, real beta, real gamma, vec
     *n = vec3_normalize(blend);
     return true;
 }
-/* end snippet */

@@ -3,7 +3,6 @@
 #include "exercise.h"
 #include "texture_space.h"
 
-/* snippet: texel_index */
 int texel_index(texture_kind kind, long long i, int n)
 {
     /* TODO wrap: the index of the texel that index i reads in a row (or column) of n >= 1
@@ -14,9 +13,7 @@ int texel_index(texture_kind kind, long long i, int n)
     (void)n;
     return 0;
 }
-/* end snippet */
 
-/* snippet: texture_nearest */
 color texture_nearest(const scene_texture *tex, mesh_uv uv)
 {
     const texture_image *img = &tex->image;
@@ -29,9 +26,7 @@ color texture_nearest(const scene_texture *tex, mesh_uv uv)
     (void)y;
     return texture_image_texel(img, 0, 0);
 }
-/* end snippet */
 
-/* snippet: texture_bilinear */
 color texture_bilinear(const scene_texture *tex, mesh_uv uv)
 {
     const texture_image *img = &tex->image;
@@ -44,7 +39,6 @@ color texture_bilinear(const scene_texture *tex, mesh_uv uv)
     (void)y;
     return texture_image_texel(img, 0, 0);
 }
-/* end snippet */
 
 color texture_lookup(const scene_texture *tex, mesh_uv uv, texture_filter filter)
 {

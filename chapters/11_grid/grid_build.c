@@ -6,7 +6,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 
-/* snippet: resolution */
 void grid_resolution(const double extent[3], long surfaces, double density, long max_cells, int n[3])
 {
     /* TODO resolution: the cells along each axis from the density (README, "The grid's box and
@@ -16,9 +15,7 @@ void grid_resolution(const double extent[3], long surfaces, double density, long
     (void)extent, (void)surfaces, (void)density, (void)max_cells;
     n[0] = n[1] = n[2] = 1;
 }
-/* end snippet */
 
-/* snippet: cell_range */
 void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int last[3])
 {
     /* TODO cell_range: the cells the box overlaps along each axis (README, "Listing the
@@ -28,7 +25,6 @@ void grid_cell_range(const grid *g, vec3 box_lo, vec3 box_hi, int first[3], int 
     (void)g, (void)box_lo, (void)box_hi;
     first[0] = first[1] = first[2] = 0, last[0] = last[1] = last[2] = -1;
 }
-/* end snippet */
 
 static box surface_box(const surface *s)
 {
@@ -36,7 +32,6 @@ static box surface_box(const surface *s)
     return s->kind == SHAPE_SPHERE ? box_of_sphere(s->sphere.center, s->sphere.radius) : box_of_triangle(t->a, t->b, t->c);
 }
 
-/* snippet: list_surface */
 /* Surface k goes in every cell its box, widened by the margin, overlaps; without finite bounds, in
  * the last list, which every ray tests. */
 static void list_surface(void *ctx, long k, index_lists_fill *fill)
@@ -55,7 +50,6 @@ static void list_surface(void *ctx, long k, index_lists_fill *fill)
             for (int x = first[0]; x <= last[0]; x++)
                 index_lists_put(fill, x + (long)g->n[0] * (y + (long)g->n[1] * z));
 }
-/* end snippet */
 
 int grid_build(grid *g, const surface_list *list, grid_options opt, char *err, size_t err_size)
 {

@@ -14,7 +14,6 @@ typedef struct {
     uint64_t tests;
 } search;
 
-/* snippet: test_surface */
 /* Surface k against the ray, also AT the best t so far: there it wins when it is earlier in the list. */
 static void test_surface(search *s, uint32_t k)
 {
@@ -26,7 +25,6 @@ static void test_surface(search *s, uint32_t k)
         s->hit = candidate, s->hit.surface = (int)k;
     }
 }
-/* end snippet */
 
 /* The march: the cell i, each axis's step (+1, -1 or 0) and the t of the cell's far boundary along it. */
 typedef struct { int i[3], step[3]; real next[3]; } dda;
@@ -37,7 +35,6 @@ static real crossing(const grid *g, int a, int plane, ray r, const real inv_d[3]
     return (vec3_axis(g->lo, a) + (real)plane * vec3_axis(g->cell, a) - vec3_axis(r.p, a)) * inv_d[a];
 }
 
-/* snippet: enter */
 /* Narrows [*t0, *t1] to where the ray is inside the grid's box, each crossing
  * widened by its axis's slack: false when the ray misses the box. */
 static bool enter_box(const grid *g, ray r, const real inv_d[3], const real slack[3], real *t0, real *t1)
@@ -49,9 +46,7 @@ static bool enter_box(const grid *g, ray r, const real inv_d[3], const real slac
     (void)g, (void)r, (void)inv_d, (void)slack, (void)t0, (void)t1;
     return false;
 }
-/* end snippet */
 
-/* snippet: dda_step */
 /* Moves to the neighbour across the cell's boundary of axis a: false when that boundary is the grid's own. */
 static bool dda_step(const grid *g, dda *m, int a, ray r, const real inv_d[3])
 {
@@ -62,7 +57,6 @@ static bool dda_step(const grid *g, dda *m, int a, ray r, const real inv_d[3])
     (void)g, (void)m, (void)a, (void)r, (void)inv_d, (void)crossing;
     return false;
 }
-/* end snippet */
 
 bool grid_intersect_counted(const grid *g, ray r, real t_min, real t_max, hit_record *hit, grid_counts *counts)
 {

@@ -9,7 +9,6 @@
  * huge or tiny components neither overflow nor underflow in the dot product. */
 static vec3 unit(vec3 a) { return vec3_normalize(vec3_scale(a, 1 / vec3_max_abs(a))); }
 
-/* snippet: basis */
 void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
 {
     /* EXERCISE basis: the orthonormal basis u (right), v (up), w (backwards) from viewDir and viewUp
@@ -25,7 +24,6 @@ void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
     *w = vec3_make(0, 0, 0);
     END EXERCISE */
 }
-/* end snippet */
 
 const char *camera_init(camera *cam, const scene_camera *desc)
 {
@@ -62,7 +60,6 @@ bool camera_from_scene(camera *cam, const scene *desc, char *err, size_t err_siz
     return problem == NULL;
 }
 
-/* snippet: camera_ray */
 ray camera_ray(const camera *cam, real u, real v)
 {
     /* EXERCISE rays: the eye ray through (u, v), for both kinds of camera: first the point of the image
@@ -86,4 +83,3 @@ ray camera_ray(const camera *cam, real u, real v)
     EXPLAIN(explain_eye_ray(r));
     return r;
 }
-/* end snippet */

@@ -1,7 +1,6 @@
 /* pixel.c - chapter 01: from a pixel to a position on the image. */
 #include "01_camera_rays/pixel.h"
 
-/* snippet: pixel_to_image */
 void pixel_to_image(int i, int j, int nx, int ny, real du, real dv, real *u, real *v)
 {
     /* EXERCISE pixel: the image position (u, v) in [0, 1]^2 of the sample at (du, dv) inside pixel (i, j)
@@ -18,4 +17,3 @@ void pixel_to_image(int i, int j, int nx, int ny, real du, real dv, real *u, rea
     *u = *v = (real)0.5;
     END EXERCISE */
 }
-/* end snippet */

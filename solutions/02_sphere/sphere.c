@@ -43,7 +43,6 @@ static bool textbook_roots(const sphere *s, ray r, real *t0, real *t1)
  *   - the roots from the stable pair (5): the one of larger magnitude by
  *     adding numbers of the same sign, the other from the product of the
  *     roots, t0 t1 = C / A (Vieta), so neither cancels. */
-/* snippet: robust */
 static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
 {
     vec3 f = vec3_sub(r.p, s->center);
@@ -77,14 +76,12 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     return false;
     END EXERCISE */
 }
-/* end snippet */
 
 static bool roots_of(const sphere *s, ray r, sphere_formula formula, real *t0, real *t1)
 {
     return formula == SPHERE_TEXTBOOK ? textbook_roots(s, r, t0, t1) : robust_roots(s, r, t0, t1);
 }
 
-/* snippet: scaled */
 /* Both formulas multiply up to four lengths (A (R^2 - l.l) is |d|^2 R^2 in
  * size), which overflows or underflows for data far from 1 (in float from
  * about 1e9 and 1e-9: real.h, REAL_SAFE_EXPONENT).  The roots do not depend
@@ -106,9 +103,7 @@ bool sphere_roots(const sphere *s, ray r, sphere_formula formula, real *t0, real
     *t1 = (real)ldexp(*t1, m - k);
     return true;
 }
-/* end snippet */
 
-/* snippet: normal */
 vec3 sphere_normal(const sphere *s, vec3 x)
 {
     /* EXERCISE normal: the outward unit normal at the hit point x (README, "Exercises": why not divide
@@ -122,9 +117,7 @@ vec3 sphere_normal(const sphere *s, vec3 x)
     return vec3_make(0, 0, 0);
     END EXERCISE */
 }
-/* end snippet */
 
-/* snippet: nearest */
 bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
 {
     /* EXERCISE nearest: the nearest of the two roots inside the open window (t_min, t_max), the
@@ -148,9 +141,7 @@ bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
     return false;
     END EXERCISE */
 }
-/* end snippet */
 
-/* snippet: intersect */
 bool sphere_intersect(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula, real *t, vec3 *n)
 {
     real t0 = 0, t1 = 0, hit = 0;
@@ -163,4 +154,3 @@ bool sphere_intersect(const sphere *s, ray r, real t_min, real t_max, sphere_for
     *n = sphere_normal(s, ray_at(r, hit));
     return true;
 }
-/* end snippet */

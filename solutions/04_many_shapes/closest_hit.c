@@ -1,7 +1,6 @@
 /* closest_hit.c - chapter 04: the first surface along a ray. */
 #include "04_many_shapes/closest_hit.h"
 
-/* snippet: surfaces_intersect */
 bool surfaces_intersect(const surface_list *list, ray r, real t_min, real t_max, hit_record *hit)
 {
     /* EXERCISE closest: the closest hit in (t_min, t_max) of all the list's surfaces, found by the
@@ -27,4 +26,3 @@ bool surfaces_intersect(const surface_list *list, ray r, real t_min, real t_max,
     return false;
     END EXERCISE */
 }
-/* end snippet */

@@ -1,7 +1,6 @@
 /* lambert.c - chapter 05: diffuse light from one point source. */
 #include "05_lambert/lambert.h"
 
-/* snippet: lambert */
 color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)
 {
     /* EXERCISE lambert: the radiance L_d that a matte surface with coefficient k_d at `point`, unit
@@ -19,4 +18,3 @@ color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)
     return color_make(0, 0, 0);
     END EXERCISE */
 }
-/* end snippet */

@@ -1,7 +1,6 @@
 /* shadow.c - chapter 06: is the light blocked? */
 #include "06_shadows/shadow.h"
 
-/* snippet: light_blocked */
 bool light_blocked(const tracer *tr, const shading_point *sp, vec3 light_pos, eps_policy policy, uint64_t *rays)
 {
     /* EXERCISE shadow: whether the light at light_pos is blocked from sp's point, by the surface itself
@@ -24,4 +23,3 @@ bool light_blocked(const tracer *tr, const shading_point *sp, vec3 light_pos, ep
     return false;
     END EXERCISE */
 }
-/* end snippet */

@@ -3,7 +3,6 @@
 
 const char *const phong_form_names[] = {"course", "lecture", NULL};
 
-/* snippet: blinn_phong_specular */
 color blinn_phong_specular(color k_s, real p, vec3 point, vec3 n, vec3 v, const scene_light *light,
                            phong_form form)
 {
@@ -28,4 +27,3 @@ color blinn_phong_specular(color k_s, real p, vec3 point, vec3 n, vec3 v, const 
     return color_make(0, 0, 0);
     END EXERCISE */
 }
-/* end snippet */

@@ -12,7 +12,6 @@ phong_form tracer_phong_form(const tracer *tr)
     return (phong_form)(tr->knobs.phong ? tr->knobs.phong : &defaults)->form;
 }
 
-/* snippet: light_contribution */
 color light_contribution(const tracer *tr, const shading_point *sp, const scene_shader *shader,
                          const scene_light *light)
 {
@@ -26,9 +25,7 @@ color light_contribution(const tracer *tr, const shading_point *sp, const scene_
     EXPLAIN(explain_light(light, sp->hit.point, sp->n, sp->v, L_d, true, L_s));
     return color_add(L_d, L_s);
 }
-/* end snippet */
 
-/* snippet: shade_phong */
 color shade_phong(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
     const scene_shader *shader = sp->shader;
@@ -50,4 +47,3 @@ color shade_phong(const tracer *tr, const shading_point *sp, int depth, uint64_t
     EXPLAIN(explain_ambient(tr->desc->ambient));
     return result;
 }
-/* end snippet */

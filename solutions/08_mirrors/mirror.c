@@ -4,7 +4,6 @@
 #include "06_shadows/spawn.h"
 #include "08_mirrors/path.h"
 
-/* snippet: reflect */
 vec3 reflect(vec3 d, vec3 n)
 {
     /* EXERCISE reflect: the mirror direction of the ray's direction d (any length) about the unit
@@ -15,9 +14,7 @@ vec3 reflect(vec3 d, vec3 n)
     return d;
     END EXERCISE */
 }
-/* end snippet */
 
-/* snippet: mirror_radiance */
 color mirror_radiance(const tracer *tr, const shading_point *sp, color k_m, int depth, uint64_t *rays)
 {
     /* EXERCISE recursion: L_m, the radiance seen from sp's point in the mirror direction: the reflected
@@ -39,4 +36,3 @@ color mirror_radiance(const tracer *tr, const shading_point *sp, color k_m, int 
     return color_make(0, 0, 0);
     END EXERCISE */
 }
-/* end snippet */

@@ -5,7 +5,6 @@
 
 const char *const fresnel_mode_names[] = {"exact", "schlick", NULL};
 
-/* snippet: fresnel_exact */
 real fresnel_exact(real cos_i, real cos_t, real eta_i, real eta_t)
 {
     /* EXERCISE fresnel: Fresnel's reflectance R of unpolarised light from the two cosines and indices
@@ -21,9 +20,7 @@ real fresnel_exact(real cos_i, real cos_t, real eta_i, real eta_t)
     return 0;
     END EXERCISE */
 }
-/* end snippet */
 
-/* snippet: fresnel_schlick */
 real fresnel_schlick(real cos_i, real cos_t, real eta_i, real eta_t)
 {
     /* EXERCISE schlick: Schlick's approximation of R, with the cosine of the right side of the surface
@@ -40,7 +37,6 @@ real fresnel_schlick(real cos_i, real cos_t, real eta_i, real eta_t)
     return 0;
     END EXERCISE */
 }
-/* end snippet */
 
 real fresnel(fresnel_mode mode, real cos_i, real cos_t, real eta_i, real eta_t)
 {

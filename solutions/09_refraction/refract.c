@@ -1,7 +1,6 @@
 /* refract.c - chapter 09: the transmitted direction, and total internal reflection. */
 #include "09_refraction/refract.h"
 
-/* snippet: refract */
 bool refract(vec3 d, vec3 n, real eta_i, real eta_t, vec3 *T, real *cos_t)
 {
     /* EXERCISE refract: the transmitted direction of d through the surface from eta_i into eta_t, or
@@ -28,4 +27,3 @@ bool refract(vec3 d, vec3 n, real eta_i, real eta_t, vec3 *T, real *cos_t)
     return false;
     END EXERCISE */
 }
-/* end snippet */

@@ -22,7 +22,6 @@ fresnel_mode tracer_fresnel(const tracer *tr)
     return (fresnel_mode)(tr->knobs.glass ? tr->knobs.glass : &defaults)->fresnel;
 }
 
-/* snippet: glass_at */
 glass_event glass_at(const shading_point *sp, real eta, fresnel_mode mode)
 {
     glass_event e;
@@ -36,7 +35,6 @@ glass_event glass_at(const shading_point *sp, real eta, fresnel_mode mode)
     e.R = e.transmits ? fresnel(mode, e.cos_i, e.cos_t, e.eta_i, e.eta_t) : 1; /* TIR reflects it all */
     return e;
 }
-/* end snippet */
 
 color transmitted_radiance(const tracer *tr, const shading_point *sp, vec3 T, color k, int depth, uint64_t *rays)
 {
@@ -48,7 +46,6 @@ color transmitted_radiance(const tracer *tr, const shading_point *sp, vec3 T, co
     return trace(&next, through, 0, REAL_INFINITY, depth + 1, rays);
 }
 
-/* snippet: shade_glass */
 color shade_glass(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
     const scene_shader *shader = sp->shader;
@@ -73,4 +70,3 @@ color shade_glass(const tracer *tr, const shading_point *sp, int depth, uint64_t
     return color_make(0, 0, 0);
     END EXERCISE */
 }
-/* end snippet */

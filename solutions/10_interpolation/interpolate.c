@@ -1,7 +1,6 @@
 /* interpolate.c - chapter 10: values stored at vertices, read between them. */
 #include "10_interpolation/interpolate.h"
 
-/* snippet: interpolate */
 vec3 interpolate_vec3(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma)
 {
     /* EXERCISE interpolate: the attribute at (beta, gamma) of a triangle whose vertices a, b, c carry
@@ -16,7 +15,6 @@ vec3 interpolate_vec3(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma)
     return A_a;
     END EXERCISE */
 }
-/* end snippet */
 
 mesh_uv interpolate_uv(mesh_uv A_a, mesh_uv A_b, mesh_uv A_c, real beta, real gamma)
 {

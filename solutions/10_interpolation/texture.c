@@ -2,7 +2,6 @@
 #include "10_interpolation/texture.h"
 #include "texture_space.h"
 
-/* snippet: texel_index */
 int texel_index(texture_kind kind, long long i, int n)
 {
     /* EXERCISE wrap: the index of the texel that index i reads in a row (or column) of n >= 1
@@ -19,9 +18,7 @@ int texel_index(texture_kind kind, long long i, int n)
     return 0;
     END EXERCISE */
 }
-/* end snippet */
 
-/* snippet: texture_nearest */
 color texture_nearest(const scene_texture *tex, mesh_uv uv)
 {
     const texture_image *img = &tex->image;
@@ -38,9 +35,7 @@ color texture_nearest(const scene_texture *tex, mesh_uv uv)
     return texture_image_texel(img, 0, 0);
     END EXERCISE */
 }
-/* end snippet */
 
-/* snippet: texture_bilinear */
 color texture_bilinear(const scene_texture *tex, mesh_uv uv)
 {
     const texture_image *img = &tex->image;
@@ -65,7 +60,6 @@ color texture_bilinear(const scene_texture *tex, mesh_uv uv)
     return texture_image_texel(img, 0, 0);
     END EXERCISE */
 }
-/* end snippet */
 
 color texture_lookup(const scene_texture *tex, mesh_uv uv, texture_filter filter)
 {

@@ -31,7 +31,6 @@ int shapes_add_solids(scene *desc, const int shader[4])
     return 0;
 }
 
-/* snippet: builtin */
 /* Overlapping shapes, each its own flat colour: a floor slab, two spheres
  * that cut into each other, a box pushed into the blue sphere, a triangle
  * standing through the red sphere, and a small RGBNormals sphere. */
@@ -69,4 +68,3 @@ int shapes_scene(scene *desc)
             return -1;
     return 0;
 }
-/* end snippet */

@@ -47,14 +47,12 @@ shading_view *shading_prepare(const shading_stage *stage, const scene *desc, sph
     return view;
 }
 
-/* snippet: shading_sample */
 color shading_sample(const void *view, real u, real v, uint64_t *rays)
 {
     const shading_view *sv = view;
     ++rays[RAY_EYE]; /* it starts at the eye: every hit with t > 0 is in front of it */
     return trace(&sv->tr, camera_ray(&sv->cam, u, v), 0, REAL_INFINITY, 0, rays);
 }
-/* end snippet */
 
 /* renderer.h's prepare: its context is the stage, with the values of every knob. */
 static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)

@@ -13,7 +13,6 @@ static int add_shader(scene *desc, shader_kind kind, color diffuse, color specul
     return scene_add_shader(desc, s);
 }
 
-/* snippet: shading_scene */
 int shading_scene(scene *desc)
 {
     shapes_view(desc); /* chapter 04's camera on chapter 04's layout */
@@ -49,4 +48,3 @@ int shading_scene(scene *desc)
         return -1;
     return 0;
 }
-/* end snippet */

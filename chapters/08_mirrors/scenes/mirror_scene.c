@@ -3,7 +3,6 @@
 
 #include "05_lambert/scenes/shading_scene.h"
 
-/* snippet: mirror_scene */
 int mirror_scene(scene *desc)
 {
     if (shading_scene(desc) != 0)
@@ -16,4 +15,3 @@ int mirror_scene(scene *desc)
     ball->mirror_coefficient = color_make(MIRROR_SCENE_BALL_KM, MIRROR_SCENE_BALL_KM, MIRROR_SCENE_BALL_KM);
     return 0;
 }
-/* end snippet */

@@ -25,7 +25,6 @@ static int add_tile(scene *desc, int shader, real x, real z)
     return scene_add_surface(desc, tri);
 }
 
-/* snippet: glass_scene */
 int glass_scene(scene *desc)
 {
     desc->has_camera = true;
@@ -73,4 +72,3 @@ int glass_scene(scene *desc)
         return -1;
     return 0;
 }
-/* end snippet */

@@ -47,7 +47,6 @@ static int add_sphere(scene *desc, vec3 center, bool normals, int shader)
     return add_mesh(desc, m, shader);
 }
 
-/* snippet: interp_scene */
 int interp_scene(scene *desc)
 {
     desc->has_camera = true;
@@ -97,4 +96,3 @@ int interp_scene(scene *desc)
         return -1;
     return 0;
 }
-/* end snippet */

@@ -25,7 +25,6 @@ static bool grid_closest_hit(const void *g, ray r, real t_min, real t_max, hit_r
 
 static void grid_release(void *g) { grid_free(g), free(g); }
 
-/* snippet: grid_query */
 int grid_query(const void *knobs, const surface_list *list, const scene *desc, hit_query *q, char *err,
                size_t err_size)
 {
@@ -45,4 +44,3 @@ int grid_query(const void *knobs, const surface_list *list, const scene *desc, h
     *q = (hit_query){.closest_hit = grid_closest_hit, .accel = g, .owned = g, .release = grid_release};
     return 0;
 }
-/* end snippet */

@@ -5,7 +5,6 @@
 
 #include "scene_build.h"
 
-/* snippet: builtin */
 /* What grids are for, and where they break: a floor of two huge triangles
  * under a torus of 2304 small ones and a spiral of 1000 small spheres, one
  * big sphere among them, Lambertian (the torus in RGBNormals), lit by two
@@ -83,4 +82,3 @@ int grid_scene(scene *desc)
     scene_surface big = {.kind = SURFACE_SPHERE, .shader = shader[2], .center = {0, 1.6, -4.5}, .radius = 1.6};
     return scene_add_surface(desc, big) < 0 ? -1 : 0;
 }
-/* end snippet */
