@@ -1,7 +1,8 @@
 # The one entry point of the teaching ray tracer.  `make help` lists the targets.
 #
 # Chapters are found by directory: chapters/NN_name/.  Chapter N's renderer
-# links common/ and the stage files (every .c but render.c) of chapters 1..N.
+# links common/ and the stage files (every .c but render.c, with renderer/
+# and scenes/) of chapters 1..N.
 # A stage file that has exercises exists twice: the complete version in
 # solutions/NN_name/ and the student's skeleton in chapters/NN_name/.  By
 # default every build takes the solutions; STUDENT=1 takes the skeletons.

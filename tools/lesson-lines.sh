@@ -2,9 +2,9 @@
 # lesson-lines.sh [--check] - what a student reads and writes, chapter by chapter.
 #
 # For each chapters/NN_name/: the lesson's stage code (the .c and .h files a
-# student opens there, render.c aside), render.c, the renderer that later
-# chapters' programs share (renderer/*.c, renderer/*.h), the lab beside it
-# (lab/*.c, lab/*.h), the README, and the lines the student writes (the
+# student opens there, render.c aside), render.c, the program's given code
+# beside it (renderer/*.c, renderer/*.h: option rows, the shading renderer),
+# the lab (lab/*.c, lab/*.h), the README, and the lines the student writes (the
 # non-blank lines of the solutions' exercise regions, tools/skeleton.awk's
 # format).  With --check, fails naming every chapter past its budget and a
 # course past its read-to-write ratio: the budgets are the table of
@@ -23,7 +23,7 @@ written() {
          s == 3 && /END EXERCISE \*\// { s = 0 }
          END { print n + 0 }' "$@" /dev/null
 }
-# The budget of chapter $1 in column $2 of the table (| chapter | lesson | render.c | renderer/ | why |).
+# The budget of chapter $1 in column $2 of the table (| chapter | lesson | render.c | renderer/ |).
 budget() {
     awk -F'|' -v c="$1" -v col="$2" '/<!-- budgets:/ { on = 1 } /<!-- end budgets -->/ { on = 0 }
         on { name = $2; gsub(/ /, "", name); if (name == c) { v = $col; gsub(/ /, "", v); print v } }' "$budgets"
@@ -67,7 +67,7 @@ for dir in chapters/[0-9][0-9]_*/; do
         status=1
     fi
     if [ "$s" -gt "$shared_max" ]; then
-        echo "$c: the shared renderer (renderer/) is $s lines, past its budget of $shared_max ($budgets)" >&2
+        echo "$c: renderer/ is $s lines, past its budget of $shared_max ($budgets)" >&2
         status=1
     fi
 done

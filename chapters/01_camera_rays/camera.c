@@ -15,8 +15,7 @@ void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
     /* TODO basis: the orthonormal basis u (right), v (up), w (backwards) from viewDir and viewUp
      * (README, "The basis", which also says which products can overflow and how unit() avoids it). */
     EXERCISE_STUB("01_camera_rays", "camera.c", "basis"); /* delete this line when done */
-    (void)view_dir;
-    (void)view_up;
+    (void)view_dir, (void)view_up;
     *u = vec3_make(0, 0, 0);
     *v = vec3_make(0, 0, 0);
     *w = vec3_make(0, 0, 0);
@@ -62,8 +61,7 @@ ray camera_ray(const camera *cam, real u, real v)
     /* TODO rays: the eye ray through (u, v), for both kinds of camera: first the point of the image
      * rectangle that (u, v) names, then the ray of the projection (README, "The rays"). */
     EXERCISE_STUB("01_camera_rays", "camera.c", "rays"); /* delete this line when done */
-    (void)u;
-    (void)v;
+    (void)u, (void)v;
     ray r = {cam->e, vec3_make(0, 0, 0)};
     EXPLAIN(explain_eye_ray(r));
     return r;

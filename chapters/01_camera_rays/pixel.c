@@ -7,11 +7,6 @@ void pixel_to_image(int i, int j, int nx, int ny, real du, real dv, real *u, rea
     /* TODO pixel: the image position (u, v) in [0, 1]^2 of the sample at (du, dv) inside pixel (i, j)
      * (README, "From pixels to the image rectangle"). */
     EXERCISE_STUB("01_camera_rays", "pixel.c", "pixel"); /* delete this line when done */
-    (void)i;
-    (void)j;
-    (void)nx;
-    (void)ny;
-    (void)du;
-    (void)dv;
+    (void)i, (void)j, (void)nx, (void)ny, (void)du, (void)dv;
     *u = *v = (real)0.5;
 }

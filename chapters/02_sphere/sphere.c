@@ -19,8 +19,7 @@ static bool textbook_roots(const sphere *s, ray r, real *t0, real *t1)
     /* TODO textbook: both roots of the quadratic (1) by the lecture's formula (2), or false when it has
      * no real root (README, "The equations"). */
     EXERCISE_STUB("02_sphere", "sphere.c", "textbook"); /* delete this line when done */
-    (void)s;
-    (void)r;
+    (void)s, (void)r;
     *t0 = *t1 = 0;
     return false;
 }
@@ -40,16 +39,14 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     /* TODO robust_discriminant: the discriminant of (1) by the geometric form (3)-(4) (README, "The
      * equations" and "Why two formulas"). */
     EXERCISE_STUB("02_sphere", "sphere.c", "robust_discriminant"); /* delete this line when done */
-    (void)f;
-    (void)B;
+    (void)f, (void)B;
     real disc = -1;
     if (!(disc >= 0)) /* a miss, or NaN from d = 0 */
         return false;
     /* TODO robust_roots: the stable pair of roots (5) with the bound (6) on t1 (README, "The
      * equations", "Stable roots"; the Exercises section warns about B = 0). */
     EXERCISE_STUB("02_sphere", "sphere.c", "robust_roots"); /* delete this line when done */
-    (void)A;
-    (void)disc;
+    (void)A, (void)disc;
     *t0 = *t1 = 0;
     return false;
 }
@@ -86,8 +83,7 @@ vec3 sphere_normal(const sphere *s, vec3 x)
     /* TODO normal: the outward unit normal at the hit point x (README, "Exercises": why not divide
      * by R), never NaN. */
     EXERCISE_STUB("02_sphere", "sphere.c", "normal"); /* delete this line when done */
-    (void)s;
-    (void)x;
+    (void)s, (void)x;
     return vec3_make(0, 0, 0);
 }
 
@@ -96,11 +92,7 @@ bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
     /* TODO nearest: the nearest of the two roots inside the open window (t_min, t_max), the
      * lecture's s.intersect(ray, tMin, tMax) (README, "The code"). */
     EXERCISE_STUB("02_sphere", "sphere.c", "nearest"); /* delete this line when done */
-    (void)t0;
-    (void)t1;
-    (void)t_min;
-    (void)t_max;
-    (void)t;
+    (void)t0, (void)t1, (void)t_min, (void)t_max, (void)t;
     return false;
 }
 

@@ -3,7 +3,7 @@
 #include <stdlib.h>
 #include "01_camera_rays/pixel.h"
 #include "04_many_shapes/flat_shading.h"
-#include "04_many_shapes/shape_knobs.h"
+#include "04_many_shapes/renderer/shape_knobs.h"
 #include "04_many_shapes/scenes/shapes_scene.h"
 #include "renderer.h"
 

@@ -8,6 +8,7 @@
  * The chapter's lab (lab/README.md) measures acne and leaks of each policy.
  */
 #include "05_lambert/renderer/shading_stage.h"
+#include "06_shadows/renderer/options.h"
 #include "06_shadows/shade_shadows.h"
 
 int main(int argc, char **argv)

@@ -9,10 +9,6 @@ bool light_blocked(const tracer *tr, const shading_point *sp, vec3 light_pos, ep
      * segment from the point to the light; the segment leaves the surface by `policy`, and each shadow
      * ray cast is counted (README, "The shadow ray" and "One way out for every secondary ray"). */
     EXERCISE_STUB("06_shadows", "shadow.c", "shadow"); /* delete this line when done */
-    (void)tr;
-    (void)sp;
-    (void)light_pos;
-    (void)policy;
-    (void)rays;
+    (void)tr, (void)sp, (void)light_pos, (void)policy, (void)rays;
     return false;
 }

@@ -5,14 +5,6 @@
 
 const char *const eps_policy_names[] = {"none", "fixed", "bound", NULL};
 
-int spawn_knob_rows(spawn_knobs *k, knob *rows, stage_knobs *aimed)
-{
-    aimed->spawn = k;
-    rows[0] = (knob){"shadow-eps", KNOB_CHOICE, &k->eps, eps_policy_names,
-                     "where secondary rays start: none (the blunder), fixed 1e-3, bound (error bound)"};
-    return 1;
-}
-
 eps_policy tracer_eps(const tracer *tr)
 {
     const spawn_knobs defaults = SPAWN_KNOBS_DEFAULT;

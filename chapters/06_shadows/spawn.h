@@ -49,11 +49,6 @@ typedef struct spawn_knobs {
 /* The defaults, an initializer: the error bound. */
 #define SPAWN_KNOBS_DEFAULT {.eps = EPS_BOUND}
 
-/* The option rows of chapter 06's knobs, aimed at *k, into rows[], and the
- * tracer's knobs at *k too; returns how many rows (every later stage lists
- * them through its own rows function). */
-int spawn_knob_rows(spawn_knobs *k, knob *rows, stage_knobs *aimed);
-
 /* The policy of a tracer with chapter 06's knobs; the default without. */
 eps_policy tracer_eps(const tracer *tr);
 

@@ -9,6 +9,7 @@
  * max(0, n . l)?  The course's images: no).
  */
 #include "05_lambert/renderer/shading_stage.h"
+#include "07_blinn_phong/renderer/options.h"
 #include "07_blinn_phong/shade_phong.h"
 
 int main(int argc, char **argv)

@@ -31,10 +31,6 @@ typedef struct phong_knobs {
 /* The defaults, an initializer: chapter 06's, and the course's form. */
 #define PHONG_KNOBS_DEFAULT {.spawn = SPAWN_KNOBS_DEFAULT, .form = PHONG_COURSE}
 
-/* The option rows of chapters 06-07's knobs, and the tracer's knobs, aimed
- * at *k; returns how many rows. */
-int phong_knob_rows(phong_knobs *k, knob *rows, stage_knobs *aimed);
-
 /* The form of a tracer with chapter 07's knobs; the course's without. */
 phong_form tracer_phong_form(const tracer *tr);
 

@@ -21,10 +21,6 @@ color mirror_radiance(const tracer *tr, const shading_point *sp, color k_m, int 
      * does, counted, and traced one level deeper (README, "Calling trace again" and "Where the mirror
      * ray starts"). */
     EXERCISE_STUB("08_mirrors", "mirror.c", "recursion"); /* delete this line when done */
-    (void)tr;
-    (void)sp;
-    (void)k_m;
-    (void)depth;
-    (void)rays;
+    (void)tr, (void)sp, (void)k_m, (void)depth, (void)rays;
     return color_make(0, 0, 0);
 }

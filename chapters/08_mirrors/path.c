@@ -3,16 +3,6 @@
 
 #include "explain.h"
 
-int path_knob_rows(path_knobs *k, knob *rows, stage_knobs *aimed)
-{
-    int n = phong_knob_rows(&k->phong, rows, aimed); /* chapters 06-07's first */
-    aimed->path = k;
-    rows[n++] = (knob){"depth", KNOB_INT, &k->depth, NULL, "deepest bounce traced (0: eye rays only; at most 256)"};
-    rows[n++] = (knob){"min-weight", KNOB_REAL, &k->min_weight, NULL,
-                       "no ray whose path weight (product of k_m, R, 1 - R along it) is below this (0: off)"};
-    return n;
-}
-
 const path_knobs *tracer_path_knobs(const tracer *tr)
 {
     static const path_knobs defaults = PATH_KNOBS_DEFAULT;

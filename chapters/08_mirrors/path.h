@@ -49,10 +49,6 @@ typedef struct path_knobs {
 /* --depth beyond this counts as this: the recursion must not exhaust the stack. */
 #define PATH_MAX_DEPTH 256
 
-/* The option rows of chapters 06-08's knobs, and the tracer's knobs, aimed
- * at *k; returns how many rows. */
-int path_knob_rows(path_knobs *k, knob *rows, stage_knobs *aimed);
-
 /* The knobs of a tracer with chapter 08's knobs; the defaults without. */
 const path_knobs *tracer_path_knobs(const tracer *tr);
 

@@ -11,6 +11,7 @@
  * convex mirror sees itself under each policy.
  */
 #include "05_lambert/renderer/shading_stage.h"
+#include "08_mirrors/renderer/options.h"
 #include "08_mirrors/scenes/mirror_scene.h"
 #include "08_mirrors/shade_glazed.h"
 

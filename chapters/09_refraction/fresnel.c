@@ -11,10 +11,7 @@ real fresnel_exact(real cos_i, real cos_t, real eta_i, real eta_t)
     /* TODO fresnel: Fresnel's reflectance R of unpolarised light from the two cosines and indices
      * (README, "How much is reflected: Fresnel"). */
     EXERCISE_STUB("09_refraction", "fresnel.c", "fresnel"); /* delete this line when done */
-    (void)cos_i;
-    (void)cos_t;
-    (void)eta_i;
-    (void)eta_t;
+    (void)cos_i, (void)cos_t, (void)eta_i, (void)eta_t;
     return 0;
 }
 
@@ -23,10 +20,7 @@ real fresnel_schlick(real cos_i, real cos_t, real eta_i, real eta_t)
     /* TODO schlick: Schlick's approximation of R, with the cosine of the right side of the surface
      * (README, "How much is reflected: Fresnel"). */
     EXERCISE_STUB("09_refraction", "fresnel.c", "schlick"); /* delete this line when done */
-    (void)cos_i;
-    (void)cos_t;
-    (void)eta_i;
-    (void)eta_t;
+    (void)cos_i, (void)cos_t, (void)eta_i, (void)eta_t;
     return 0;
 }
 

@@ -9,9 +9,7 @@ bool refract(vec3 d, vec3 n, real eta_i, real eta_t, vec3 *T, real *cos_t)
      * angle, grazing ones too (README, "The transmitted direction", "In floating point" and "Total
      * internal reflection"; refract.h says what *T and *cos_t hold). */
     EXERCISE_STUB("09_refraction", "refract.c", "refract"); /* delete this line when done */
-    (void)n;
-    (void)eta_i;
-    (void)eta_t;
+    (void)n, (void)eta_i, (void)eta_t;
     *T = d;
     *cos_t = 0;
     return false;

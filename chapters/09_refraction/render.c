@@ -11,6 +11,7 @@
  * out.
  */
 #include "05_lambert/renderer/shading_stage.h"
+#include "09_refraction/renderer/options.h"
 #include "09_refraction/scenes/glass_scene.h"
 #include "09_refraction/shade_glass.h"
 

@@ -8,15 +8,6 @@
 #include "09_refraction/refract.h"
 #include "explain.h"
 
-int glass_knob_rows(glass_knobs *k, knob *rows, stage_knobs *aimed)
-{
-    int n = path_knob_rows(&k->path, rows, aimed); /* chapters 06-08's first */
-    aimed->glass = k;
-    rows[n++] = (knob){"fresnel", KNOB_CHOICE, &k->fresnel, fresnel_mode_names,
-                       "glass reflectance: exact (Fresnel's equations) or schlick (Schlick's approximation)"};
-    return n;
-}
-
 fresnel_mode tracer_fresnel(const tracer *tr)
 {
     const glass_knobs defaults = GLASS_KNOBS_DEFAULT;
@@ -59,7 +50,6 @@ color shade_glass(const tracer *tr, const shading_point *sp, int depth, uint64_t
      * only the rays that carry light (README, "The glass shader"; mirror.h and shade_glass.h say what
      * mirror_radiance and transmitted_radiance trace). */
     EXERCISE_STUB("09_refraction", "shade_glass.c", "glass"); /* delete this line when done */
-    (void)depth;
-    (void)rays;
+    (void)depth, (void)rays;
     return color_make(0, 0, 0);
 }

@@ -25,10 +25,6 @@ typedef struct glass_knobs {
 /* The defaults, an initializer: chapter 08's, and Fresnel's exact equations. */
 #define GLASS_KNOBS_DEFAULT {.path = PATH_KNOBS_DEFAULT, .fresnel = FRESNEL_EXACT}
 
-/* The option rows of chapters 06-09's knobs, and the tracer's knobs, aimed
- * at *k; returns how many rows. */
-int glass_knob_rows(glass_knobs *k, knob *rows, stage_knobs *aimed);
-
 /* The Fresnel mode of a tracer with chapter 09's knobs; exact without. */
 fresnel_mode tracer_fresnel(const tracer *tr);
 

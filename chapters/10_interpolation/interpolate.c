@@ -7,10 +7,7 @@ vec3 interpolate_vec3(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma)
     /* TODO interpolate: the attribute at (beta, gamma) of a triangle whose vertices a, b, c carry
      * A_a, A_b, A_c (README, "Values at vertices, read in between"). */
     EXERCISE_STUB("10_interpolation", "interpolate.c", "interpolate"); /* delete this line when done */
-    (void)A_b;
-    (void)A_c;
-    (void)beta;
-    (void)gamma;
+    (void)A_b, (void)A_c, (void)beta, (void)gamma;
     return A_a;
 }
 

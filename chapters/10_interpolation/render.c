@@ -10,6 +10,7 @@
  * --texture-filter=nearest|bilinear, --below-surface=flip|keep.
  */
 #include "05_lambert/renderer/shading_stage.h"
+#include "10_interpolation/renderer/options.h"
 #include "10_interpolation/scenes/interp_scene.h"
 #include "10_interpolation/shade_interp.h"
 

@@ -9,6 +9,7 @@
 
 typedef enum { NORMALS_INTERPOLATED, NORMALS_GEOMETRIC } normal_source; /* geometric: the mesh's vn ignored */
 typedef enum { BELOW_FLIP, BELOW_KEEP } below_policy; /* a mirror direction below the geometric surface */
+extern const char *const texture_filter_names[]; /* --texture-filter's words, in texture_filter's order */
 
 /* The knobs of chapter 10: chapter 09's, then its own three. */
 typedef struct interp_knobs {
@@ -21,15 +22,6 @@ typedef struct interp_knobs {
 /* The defaults: chapter 09's, interpolated normals, the nearest texel (the course's images), flipped. */
 #define INTERP_KNOBS_DEFAULT \
     {.earlier = GLASS_KNOBS_DEFAULT, .normals = NORMALS_INTERPOLATED, .filter = TEXTURE_NEAREST, .below = BELOW_FLIP}
-
-/* The option rows of chapters 06-10's knobs, and the tracer's knobs, aimed at *k; returns how many rows. */
-int interp_knob_rows(interp_knobs *k, knob *rows, stage_knobs *aimed);
-
-/* The scene features chapter 10 models (a shading_stage's `modelled`); chapter 11 models the same. */
-#define INTERP_MODELLED                                                                                             \
-    (FEATURE_SPHERES | FEATURE_TRIANGLES | FEATURE_BOXES | FEATURE_MESHES | FEATURE_SHADERS | FEATURE_RGB_NORMALS | \
-     FEATURE_LIGHTS | FEATURE_SHADOWS | FEATURE_MANY_LIGHTS | FEATURE_PHONG | FEATURE_AMBIENT | FEATURE_MIRRORS |  \
-     FEATURE_GLASS | FEATURE_TEXTURES | FEATURE_VERTEX_NORMALS)
 
 /* A shade_fn: the shading of chapter 09 with the interpolated normal and the
  * textured diffuse colour (tr->knobs.interp, or the defaults). */

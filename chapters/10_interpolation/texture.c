@@ -8,9 +8,7 @@ int texel_index(texture_kind kind, long long i, int n)
     /* TODO wrap: the index of the texel that index i reads in a row (or column) of n >= 1
      * texels, for either kind of texture, for any i (README, "Texture space"). */
     EXERCISE_STUB("10_interpolation", "texture.c", "wrap"); /* delete this line when done */
-    (void)kind;
-    (void)i;
-    (void)n;
+    (void)kind, (void)i, (void)n;
     return 0;
 }
 
@@ -22,8 +20,7 @@ color texture_nearest(const scene_texture *tex, mesh_uv uv)
     /* TODO nearest: the colour of the texel nearest to (x, y), found as the course's solution
      * finds it, wrapped by the texture's kind (README, "Nearest and bilinear"). */
     EXERCISE_STUB("10_interpolation", "texture.c", "nearest"); /* delete this line when done */
-    (void)x;
-    (void)y;
+    (void)x, (void)y;
     return texture_image_texel(img, 0, 0);
 }
 
@@ -35,8 +32,7 @@ color texture_bilinear(const scene_texture *tex, mesh_uv uv)
     /* TODO bilinear: the colour blended from the four texels whose centres surround (x, y),
      * each wrapped by the texture's kind (README, "Nearest and bilinear"). */
     EXERCISE_STUB("10_interpolation", "texture.c", "bilinear"); /* delete this line when done */
-    (void)x;
-    (void)y;
+    (void)x, (void)y;
     return texture_image_texel(img, 0, 0);
 }
 

@@ -17,8 +17,7 @@ void camera_basis(vec3 view_dir, vec3 view_up, vec3 *u, vec3 *v, vec3 *w)
     *u = unit(vec3_cross(unit(view_dir), unit(view_up)));
     *v = vec3_cross(*w, *u);
     /* STUB
-    (void)view_dir;
-    (void)view_up;
+    (void)view_dir, (void)view_up;
     *u = vec3_make(0, 0, 0);
     *v = vec3_make(0, 0, 0);
     *w = vec3_make(0, 0, 0);
@@ -76,8 +75,7 @@ ray camera_ray(const camera *cam, real u, real v)
         r.d = vec3_neg(cam->w);
     }
     /* STUB
-    (void)u;
-    (void)v;
+    (void)u, (void)v;
     ray r = {cam->e, vec3_make(0, 0, 0)};
     END EXERCISE */
     EXPLAIN(explain_eye_ray(r));

@@ -8,12 +8,7 @@ void pixel_to_image(int i, int j, int nx, int ny, real du, real dv, real *u, rea
     *u = ((real)i + du) / (real)nx;
     *v = ((real)j + dv) / (real)ny;
     /* STUB
-    (void)i;
-    (void)j;
-    (void)nx;
-    (void)ny;
-    (void)du;
-    (void)dv;
+    (void)i, (void)j, (void)nx, (void)ny, (void)du, (void)dv;
     *u = *v = (real)0.5;
     END EXERCISE */
 }

@@ -29,8 +29,7 @@ static bool textbook_roots(const sphere *s, ray r, real *t0, real *t1)
     *t1 = (-B + root) / A;
     return true;
     /* STUB
-    (void)s;
-    (void)r;
+    (void)s, (void)r;
     *t0 = *t1 = 0;
     return false;
     END EXERCISE */
@@ -53,8 +52,7 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
     vec3 l = vec3_add(f, vec3_scale(r.d, -B / A));
     real disc = A * (s->radius * s->radius - vec3_dot(l, l));
     /* STUB
-    (void)f;
-    (void)B;
+    (void)f, (void)B;
     real disc = -1;
     END EXERCISE */
     if (!(disc >= 0)) /* a miss, or NaN from d = 0 */
@@ -70,8 +68,7 @@ static bool robust_roots(const sphere *s, ray r, real *t0, real *t1)
         *t1 = real_copysign(real_sqrt(real_abs(C) / A), *t1);
     return true;
     /* STUB
-    (void)A;
-    (void)disc;
+    (void)A, (void)disc;
     *t0 = *t1 = 0;
     return false;
     END EXERCISE */
@@ -112,8 +109,7 @@ vec3 sphere_normal(const sphere *s, vec3 x)
     real length = vec3_length(m);
     return length > 0 ? vec3_scale(m, 1 / length) : m;
     /* STUB
-    (void)s;
-    (void)x;
+    (void)s, (void)x;
     return vec3_make(0, 0, 0);
     END EXERCISE */
 }
@@ -133,11 +129,7 @@ bool sphere_nearest_root(real t0, real t1, real t_min, real t_max, real *t)
     }
     return false;
     /* STUB
-    (void)t0;
-    (void)t1;
-    (void)t_min;
-    (void)t_max;
-    (void)t;
+    (void)t0, (void)t1, (void)t_min, (void)t_max, (void)t;
     return false;
     END EXERCISE */
 }

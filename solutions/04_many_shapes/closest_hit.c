@@ -18,11 +18,7 @@ bool surfaces_intersect(const surface_list *list, ray r, real t_min, real t_max,
     }
     return found;
     /* STUB
-    (void)list;
-    (void)r;
-    (void)t_min;
-    (void)t_max;
-    (void)hit;
+    (void)list, (void)r, (void)t_min, (void)t_max, (void)hit;
     return false;
     END EXERCISE */
 }

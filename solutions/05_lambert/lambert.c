@@ -11,10 +11,7 @@ color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)
     real cos_theta = real_fmax(0, vec3_dot(n, l)); /* max(0, n . l) */
     return color_scale(color_mul(k_d, light->intensity), cos_theta / r2);
     /* STUB
-    (void)k_d;
-    (void)point;
-    (void)n;
-    (void)light;
+    (void)k_d, (void)point, (void)n, (void)light;
     return color_make(0, 0, 0);
     END EXERCISE */
 }

@@ -15,11 +15,7 @@ bool light_blocked(const tracer *tr, const shading_point *sp, vec3 light_pos, ep
     hit_record blocker;
     return t_max > 0 && tr->closest_hit(tr->accel, shadow, 0, t_max, &blocker);
     /* STUB
-    (void)tr;
-    (void)sp;
-    (void)light_pos;
-    (void)policy;
-    (void)rays;
+    (void)tr, (void)sp, (void)light_pos, (void)policy, (void)rays;
     return false;
     END EXERCISE */
 }

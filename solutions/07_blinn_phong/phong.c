@@ -17,13 +17,7 @@ color blinn_phong_specular(color k_s, real p, vec3 point, vec3 n, vec3 v, const 
         highlight *= real_fmax(0, vec3_dot(n, l)); /* the modified Blinn-Phong's cosine */
     return color_scale(color_mul(k_s, light->intensity), highlight / r2);
     /* STUB
-    (void)k_s;
-    (void)p;
-    (void)point;
-    (void)n;
-    (void)v;
-    (void)light;
-    (void)form;
+    (void)k_s, (void)p, (void)point, (void)n, (void)v, (void)light, (void)form;
     return color_make(0, 0, 0);
     END EXERCISE */
 }

@@ -28,11 +28,7 @@ color mirror_radiance(const tracer *tr, const shading_point *sp, color k_m, int 
     ++rays[RAY_REFLECTED];
     return trace(&next, mirror, 0, REAL_INFINITY, depth + 1, rays);
     /* STUB
-    (void)tr;
-    (void)sp;
-    (void)k_m;
-    (void)depth;
-    (void)rays;
+    (void)tr, (void)sp, (void)k_m, (void)depth, (void)rays;
     return color_make(0, 0, 0);
     END EXERCISE */
 }

@@ -13,10 +13,7 @@ real fresnel_exact(real cos_i, real cos_t, real eta_i, real eta_t)
     real r_p = (eta_t * cos_i - eta_i * cos_t) / (eta_t * cos_i + eta_i * cos_t);
     return (r_s * r_s + r_p * r_p) / 2;
     /* STUB
-    (void)cos_i;
-    (void)cos_t;
-    (void)eta_i;
-    (void)eta_t;
+    (void)cos_i, (void)cos_t, (void)eta_i, (void)eta_t;
     return 0;
     END EXERCISE */
 }
@@ -30,10 +27,7 @@ real fresnel_schlick(real cos_i, real cos_t, real eta_i, real eta_t)
     real m = 1 - (eta_i <= eta_t ? cos_i : cos_t);
     return R_0 + (1 - R_0) * m * m * m * m * m;
     /* STUB
-    (void)cos_i;
-    (void)cos_t;
-    (void)eta_i;
-    (void)eta_t;
+    (void)cos_i, (void)cos_t, (void)eta_i, (void)eta_t;
     return 0;
     END EXERCISE */
 }

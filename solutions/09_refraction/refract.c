@@ -19,9 +19,7 @@ bool refract(vec3 d, vec3 n, real eta_i, real eta_t, vec3 *T, real *cos_t)
     *T = vec3_add(vec3_scale(d, r), vec3_scale(n, r * cos_i - *cos_t));
     return true;
     /* STUB
-    (void)n;
-    (void)eta_i;
-    (void)eta_t;
+    (void)n, (void)eta_i, (void)eta_t;
     *T = d;
     *cos_t = 0;
     return false;

@@ -7,15 +7,6 @@
 #include "09_refraction/refract.h"
 #include "explain.h"
 
-int glass_knob_rows(glass_knobs *k, knob *rows, stage_knobs *aimed)
-{
-    int n = path_knob_rows(&k->path, rows, aimed); /* chapters 06-08's first */
-    aimed->glass = k;
-    rows[n++] = (knob){"fresnel", KNOB_CHOICE, &k->fresnel, fresnel_mode_names,
-                       "glass reflectance: exact (Fresnel's equations) or schlick (Schlick's approximation)"};
-    return n;
-}
-
 fresnel_mode tracer_fresnel(const tracer *tr)
 {
     const glass_knobs defaults = GLASS_KNOBS_DEFAULT;
@@ -65,8 +56,7 @@ color shade_glass(const tracer *tr, const shading_point *sp, int depth, uint64_t
         L = color_add(L, color_mul(T, transmitted_radiance(tr, sp, e.T, T, depth, rays)));
     return L;
     /* STUB
-    (void)depth;
-    (void)rays;
+    (void)depth, (void)rays;
     return color_make(0, 0, 0);
     END EXERCISE */
 }

@@ -8,10 +8,7 @@ vec3 interpolate_vec3(vec3 A_a, vec3 A_b, vec3 A_c, real beta, real gamma)
     real alpha = 1 - beta - gamma;
     return vec3_add(vec3_add(vec3_scale(A_a, alpha), vec3_scale(A_b, beta)), vec3_scale(A_c, gamma));
     /* STUB
-    (void)A_b;
-    (void)A_c;
-    (void)beta;
-    (void)gamma;
+    (void)A_b, (void)A_c, (void)beta, (void)gamma;
     return A_a;
     END EXERCISE */
 }

@@ -12,9 +12,7 @@ int texel_index(texture_kind kind, long long i, int n)
     }
     return i < 0 ? 0 : i >= n ? n - 1 : (int)i;
     /* STUB
-    (void)kind;
-    (void)i;
-    (void)n;
+    (void)kind, (void)i, (void)n;
     return 0;
     END EXERCISE */
 }
@@ -30,8 +28,7 @@ color texture_nearest(const scene_texture *tex, mesh_uv uv)
     int row = texel_index(tex->kind, (long long)(y + (real)0.5), img->height);
     return texture_image_texel(img, column, row);
     /* STUB
-    (void)x;
-    (void)y;
+    (void)x, (void)y;
     return texture_image_texel(img, 0, 0);
     END EXERCISE */
 }
@@ -55,8 +52,7 @@ color texture_bilinear(const scene_texture *tex, mesh_uv uv)
                              color_scale(texture_image_texel(img, x1, y1), s));
     return color_add(color_scale(top, 1 - t), color_scale(bottom, t));
     /* STUB
-    (void)x;
-    (void)y;
+    (void)x, (void)y;
     return texture_image_texel(img, 0, 0);
     END EXERCISE */
 }

@@ -4,7 +4,7 @@
 #define CH05_RENDERER_SHADING_STAGE_H
 
 #include "01_camera_rays/camera.h"
-#include "04_many_shapes/shape_knobs.h"
+#include "04_many_shapes/renderer/shape_knobs.h"
 #include "05_lambert/tracer.h"
 
 /* The closest-hit query of a prepared scene, and what it owns (freed by release unless NULL). */

@@ -14,7 +14,7 @@
 #include <string.h>
 
 #include "01_camera_rays/pixel.h"
-#include "04_many_shapes/shape_knobs.h"
+#include "04_many_shapes/renderer/shape_knobs.h"
 #include "11_grid/lab/fast_query.h"
 #include "11_grid/lab/heat.h"
 #include "11_grid/scenes/grid_scene.h"

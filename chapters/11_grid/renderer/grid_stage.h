@@ -6,7 +6,7 @@
 #include <stddef.h>
 
 #include "05_lambert/renderer/shading_stage.h"
-#include "10_interpolation/shade_interp.h"
+#include "10_interpolation/renderer/options.h"
 #include "11_grid/grid.h"
 
 /* The knobs of chapter 11: chapter 10's, then the grid's. */

@@ -1,5 +1,5 @@
-/* phong_knobs.c - chapter 07: the option rows of its knobs. */
-#include "07_blinn_phong/shade_phong.h"
+/* options.c - chapter 07's renderer: the option rows of chapters 06-07's knobs. */
+#include "07_blinn_phong/renderer/options.h"
 
 int phong_knob_rows(phong_knobs *k, knob *rows, stage_knobs *aimed)
 {

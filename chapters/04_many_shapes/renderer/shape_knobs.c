@@ -1,5 +1,5 @@
 /* shape_knobs.c - chapter 04: the knobs of chapters 02 and 03 on every later renderer. */
-#include "04_many_shapes/shape_knobs.h"
+#include "04_many_shapes/renderer/shape_knobs.h"
 
 static const char *const sphere_choices[] = {"robust", "textbook", NULL}; /* in sphere_formula's order */
 

@@ -1,7 +1,7 @@
 /* shape_knobs.h - chapter 04: --sphere=robust|textbook (chapter 02) and --triangle=cramer|watertight
  * (chapter 03), the knobs of every later renderer, whose main owns their values. */
-#ifndef CH04_SHAPE_KNOBS_H
-#define CH04_SHAPE_KNOBS_H
+#ifndef CH04_RENDERER_SHAPE_KNOBS_H
+#define CH04_RENDERER_SHAPE_KNOBS_H
 
 #include "03_triangle/triangle_stage.h"
 #include "04_many_shapes/surface.h"
