@@ -78,5 +78,15 @@ if [ -z "$ratio_max" ] || awk -v r="$read_all" -v w="$written_all" -v m="$ratio_
     echo "course: read-to-write ratio $ratio to 1, past its budget of ${ratio_max:-(none)} to 1 ($budgets)" >&2
     status=1
 fi
+# The layers: the lesson reads neither the program's code beside it nor the lab
+# (renderer/ and lab/ read the lesson), and renderer/ does not read the lab.
+for f in chapters/[0-9][0-9]_*/*.[ch] solutions/[0-9][0-9]_*/*.c chapters/[0-9][0-9]_*/renderer/*.[ch]; do
+    [ "$(basename "$f")" = render.c ] && continue
+    case $f in */renderer/*) layer='lab/' ;; *) layer='renderer/|lab/' ;; esac
+    if grep -HnE "^#include \"[0-9][0-9]_[a-z_0-9]+/($layer)" "$f" >&2; then
+        echo "$f: includes what reads it (docs/design.md, \"Lesson and lab\")" >&2
+        status=1
+    fi
+done
 [ "$check" = 1 ] && exit "$status"
 exit 0
