@@ -167,7 +167,7 @@ function Header(el)
   return el
 end
 
--- The first and last line of region `name` of `path`, as tools/snippets.awk finds it.
+-- The first and last line of region `name` of `path` (or of function `name`), as tools/snippets.awk finds it.
 local function region_lines(path, name, what)
   if not exists(path) then fail(what, "the snippet's file " .. path .. " does not exist") end
   local n, first, depth = 0, nil, 0
@@ -184,7 +184,26 @@ local function region_lines(path, name, what)
       if depth == 0 then return first, n - 1 end
     end
   end
-  fail(what, "no complete region " .. name .. " in " .. path .. " (make check-snippets)")
+  -- no region: the definition of function `name` with the comment right above it
+  local all = {}
+  for line in io.lines(path) do all[#all + 1] = line end
+  local pattern = "[^%w_]" .. name:gsub("%p", "%%%0") .. "%("
+  for k, line in ipairs(all) do
+    if line:match("^[%a_]") and (" " .. line):match(pattern) and not line:match(";%s*$")
+        and not line:match("^typedef") and not line:match("^#") then
+      local top = k
+      if k > 1 and all[k - 1]:match("%*/%s*$") then
+        local j = k - 1
+        while j > 1 and all[j]:match("^ %*") do j = j - 1 end
+        if all[j]:match("^/%*") then top = j end
+      end
+      if line:match("}%s*$") then return top, k end
+      for e = k + 1, #all do
+        if all[e]:match("^}") then return top, e end
+      end
+    end
+  end
+  fail(what, "no complete region " .. name .. " and no function " .. name .. " in " .. path .. " (make check-snippets)")
 end
 
 function Blocks(blocks)
