@@ -127,7 +127,8 @@ end
 
 function Code(el)
   local file = source_dir .. "/" .. el.text
-  if el.text:match("^[%w_.-]+$") and not pages[file] and exists(file) and not is_dir(file) then
+  if el.text:match("^[%w_-][%w_./-]*$") and not el.text:match("%.%.") and not pages[file] and exists(file)
+      and not is_dir(file) then
     return pandoc.Link({ el }, book_target(el.text, "`" .. el.text .. "`"))
   end
 end
