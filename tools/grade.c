@@ -460,6 +460,9 @@ static verdict run_test(const char *suite, const char *reference, const char *na
     buffer ref_out = {0}, ref_answers = {0}, answers = {0};
     int ref_status = run(ref_argv, timeout, &ref_out, RUN_REFERENCE, &ref_answers);
     judge_verdict before = judge(buf_take(&ref_answers), "", note, sizeof note);
+    const char *why = before == JUDGE_SKIPPED && ref_out.s ? strstr(ref_out.s, "note: ") : NULL;
+    if (why) /* why the reference skipped (the course's scenes not found): the suite's note */
+        buf_add(out, why, strcspn(why, "\n") + 1);
     free(ref_out.s);
     if (before == JUDGE_SKIPPED || before == JUDGE_BROKEN || ref_status < 0) {
         free(ref_answers.s);
@@ -574,6 +577,8 @@ static int grade_chapter(const chapter_files *c, double timeout)
                v == PASSED ? points : 0, v == SKIPPED ? 0 : points);
         if (v == FAILED && built)
             print_reason(out.s);
+        if (v == SKIPPED && out.s) /* why (run_test kept the suite's note) */
+            printf("        %.*s", (int)(strlen(out.s) > 400 ? 400 : strlen(out.s)), out.s);
         free(out.s);
     }
     if (with_float) { /* one line for the float build, worth nothing */
