@@ -215,6 +215,94 @@ for t in test_interpolate_uv test_vertex_normal test_smooth_shading; do
         's|vec3_scale(A_b, beta)), vec3_scale(A_c, gamma)|vec3_scale(A_b, gamma)), vec3_scale(A_c, beta)|' \
         "$t" "" "likely mistake: beta and gamma swapped"
 done
+# interpolate_vec3's weights and a normalization that belongs to vertex_normal.
+plant "hint: alpha = 1 - beta" 10_interpolation interpolate.c \
+    's|real alpha = 1 - beta - gamma;|real alpha = 1 - beta;|' \
+    test_interpolate_vertices_edges "" "alpha = 1 - beta: the weight of vertex a is 1 - beta - gamma"
+plant "hint: alpha on vertex b" 10_interpolation interpolate.c \
+    's|vec3_scale(A_a, alpha), vec3_scale(A_b, beta)|vec3_scale(A_a, beta), vec3_scale(A_b, alpha)|' \
+    test_interpolate_vertices_edges "" "alpha and beta swapped"
+plant "hint: the blend divided by 3" 10_interpolation interpolate.c \
+    's|return vec3_add(\(.*\));$|return vec3_scale(vec3_add(\1), (real)1 / 3);|' \
+    test_interpolate_random "" "divided by 3"
+plant "hint: the blend normalized" 10_interpolation interpolate.c \
+    's|return vec3_add(\(.*\));$|return vec3_normalize(vec3_add(\1));|' \
+    test_interpolate_uv "" "the blend normalized: interpolate_vec3 blends any attribute"
+plant "hint: each vertex's value normalized before the blend" 10_interpolation interpolate.c \
+    's|vec3_scale(A_\([abc]\), |vec3_scale(vec3_normalize(A_\1), |g' \
+    test_interpolate_random "" "each vertex's value normalized before the blend"
+# The wrap: the remainder's sign, clamping to n, the kinds swapped.
+plant "hint: the remainder's absolute value" 10_interpolation texture.c \
+    's|return (int)(m < 0 ? m + n : m);|return (int)(m < 0 ? -m : m);|' \
+    test_texel_index_repeat "" "absolute value mirrors the texture"
+plant "hint: n added to every remainder" 10_interpolation texture.c \
+    's|return (int)(m < 0 ? m + n : m);|return (int)(m + n);|' \
+    test_texel_index_repeat "" "i % n \+ n is n too many"
+plant "hint: a negative remainder plus n - 1" 10_interpolation texture.c \
+    's|return (int)(m < 0 ? m + n : m);|return (int)(m < 0 ? m + n - 1 : m);|' \
+    test_texel_index_repeat "" "negative remainder plus n - 1"
+plant "hint: i converted to int before the %" 10_interpolation texture.c \
+    's|long long m = i % n;|long long m = (int)i % n;|' \
+    test_texel_index_repeat "" "converted to int before the %"
+plant "hint: clamped to n" 10_interpolation texture.c \
+    's|i >= n ? n - 1 : (int)i;|i >= n ? n : (int)i;|' \
+    test_texel_index_clamp "" "clamped to n \(or only i > n clamped\)"
+plant "hint: only i > n clamped" 10_interpolation texture.c \
+    's|i >= n ? n - 1 : (int)i;|i > n ? n - 1 : (int)i;|' \
+    test_texel_index_clamp "" "clamped to n \(or only i > n clamped\)"
+plant "hint: a negative i not clamped" 10_interpolation texture.c \
+    's|return i < 0 ? 0 : i >= n ? n - 1 : (int)i;|return i >= n ? n - 1 : (int)i;|' \
+    test_texel_index_clamp "" "a negative i is not clamped"
+plant "hint: Repeat and Clamp swapped" 10_interpolation texture.c \
+    's|if (kind == TEXTURE_REPEAT) {|if (kind == TEXTURE_CLAMP) {|' \
+    test_texel_index_repeat "" "clamped: a RepeatTexture wraps"
+# Nearest: the rounding, v's flip, the sides.
+plant "hint: nearest by floor(x + 1/2)" 10_interpolation texture.c \
+    's|(long long)(\([xy]\) + (real)0.5)|(long long)real_floor(\1 + (real)0.5)|g' \
+    test_nearest_quirk "" "floor\(x \+ 1/2\) or round\(x\)"
+plant "hint: nearest by ceil(x)" 10_interpolation texture.c \
+    's|(long long)(\([xy]\) + (real)0.5)|(long long)real_ceil(\1)|g' \
+    test_nearest "" "ceil\(x\) rounds every fraction up"
+plant "hint: nearest by x - 1/2" 10_interpolation texture.c \
+    's|(long long)(\([xy]\) + (real)0.5)|(long long)(\1 - (real)0.5)|g' \
+    test_nearest "" "x - 1/2: the nearest texel"
+plant "hint: v flipped again" 10_interpolation texture.c \
+    's|(long long)(y + (real)0.5), img->height|(long long)((real)img->height - y + (real)0.5), img->height|' \
+    test_nearest "" "v not flipped: rows count down from the top"
+plant "hint: nearest with u and v swapped" 10_interpolation texture.c \
+    's|return texture_image_texel(img, column, row);|return texture_image_texel(img, row, column);|' \
+    test_nearest "" "u and v swapped"
+plant "hint: nearest's row wrapped by the width" 10_interpolation texture.c \
+    's|(long long)(y + (real)0.5), img->height|(long long)(y + (real)0.5), img->width|' \
+    test_nearest "" "the row wrapped by the width"
+# Bilinear: the corner, the half-texel shift, the fractions, the second column and row.
+plant "hint: bilinear's weights along y swapped" 10_interpolation texture.c \
+    's|color_add(color_scale(top, 1 - t), color_scale(bottom, t))|color_add(color_scale(top, t), color_scale(bottom, 1 - t))|' \
+    test_bilinear "" "the weights along y swapped"
+plant "hint: bilinear's weights from the opposite corner" 10_interpolation texture.c \
+    's|real s = x - fx, t = y - fy;|real s = 1 - (x - fx), t = 1 - (y - fy);|' \
+    test_bilinear "" "the weights from the opposite corner"
+plant "hint: bilinear's t from x" 10_interpolation texture.c \
+    's|real s = x - fx, t = y - fy;|real s = x - fx, t = x - fx;|' \
+    test_bilinear "" "t = x - x0"
+plant "hint: bilinear's x0 truncated" 10_interpolation texture.c \
+    's|real fx = real_floor(x), fy = real_floor(y);|real fx = (real)(long long)x, fy = (real)(long long)y;|' \
+    test_bilinear_random "" "rounds towards zero: x0 = floor\(x\)"
+plant "hint: bilinear's centres at x + 1/2" 10_interpolation texture.c \
+    's|real fx = real_floor(x), fy = real_floor(y);|x -= (real)0.5, y -= (real)0.5; &|' \
+    test_bilinear "" "x - 1/2 \(texel centres at x \+ 1/2\)"
+plant "hint: bilinear's index shifted, not its fraction" 10_interpolation texture.c \
+    's|real fx = real_floor(x), fy = real_floor(y);|real fx = real_floor(x - (real)0.5), fy = real_floor(y - (real)0.5);|' \
+    test_bilinear "" "the fraction not taken after it"
+plant "hint: bilinear's index from x + 1/2" 10_interpolation texture.c \
+    's|real fx = real_floor(x), fy = real_floor(y);|real fx = real_floor(x + (real)0.5), fy = real_floor(y + (real)0.5);|' \
+    test_bilinear "" "nearest's \+ 1/2 in the index alone"
+plant "hint: bilinear's x1 from the wrapped x0" 10_interpolation texture.c \
+    's|int x1 = texel_index(tex->kind, (long long)fx + 1, img->width);|int x1 = x0 + 1;|' \
+    test_bilinear "" "from the wrapped x0: past the last"
+plant "hint: bilinear's rows wrapped by the width" 10_interpolation texture.c \
+    's|\(int y[01] = texel_index(tex->kind, (long long)fy[ +1]*, img->\)height|\1width|' \
+    test_bilinear_random "" "the rows wrapped by the width"
 # Chapter 11: the resolution without the cap, with a shrink of a half a try,
 # with the cube root for a flat scene; the entry with no case for inv_d = 0
 # (a ray along an axis then visits no cell: the entry named, not dda_step).
