@@ -318,6 +318,98 @@ plant "hint: the cube root for a flat scene" 11_grid grid_build.c \
 plant "hint: the entry with no case for inv_d = 0" 11_grid grid_march.c \
     's|if (inv_d\[a\] == 0) {|if (inv_d[a] == 0 \&\& t0 == NULL) {|' \
     test_dda_axis_steps "dda_step along" "0 cells" "likely mistake: enter: a component d_a = \+0 or -0"
+# The resolution's formula: lambda N, round, at least one cell, the root of the cells over the volume.
+plant "hint: the resolution without the density" 11_grid grid_build.c \
+    's|fmin(density \* (double)surfaces,|fmin((double)surfaces + 0 * density,|' \
+    test_resolution "" "the density left out"
+plant "hint: the resolution without the number of surfaces" 11_grid grid_build.c \
+    's|fmin(density \* (double)surfaces,|fmin(density + 0 * (double)surfaces,|' \
+    test_resolution "" "the number of surfaces left out"
+plant "hint: the resolution by floor" 11_grid grid_build.c \
+    's|fmax(round(extent\[a\] \* s), 1)|fmax(floor(extent[a] * s), 1)|' \
+    test_resolution "" "n_a = floor\(e_a s\)"
+plant "hint: the resolution by ceil" 11_grid grid_build.c \
+    's|fmax(round(extent\[a\] \* s), 1)|fmax(ceil(extent[a] * s), 1)|' \
+    test_resolution "" "n_a = ceil\(e_a s\)"
+plant "hint: a spanned axis rounded to 0 cells" 11_grid grid_build.c \
+    's|fmin(fmax(round(extent\[a\] \* s), 1), 1 << 20)|fmin(round(extent[a] * s), 1 << 20)|' \
+    test_resolution "" "rounds to 0 still gets one cell"
+plant "hint: a flat axis's zero extent in the volume" 11_grid grid_build.c \
+    's|if (extent\[a\] > 0) {|if (extent[a] >= 0) {|' \
+    test_resolution "" "zero extent makes s infinite"
+plant "hint: s upside down" 11_grid grid_build.c \
+    's|pow(fmax(wanted, 1) / volume, 1.0 / spanned)|pow(volume / fmax(wanted, 1), 1.0 / spanned)|' \
+    test_resolution "" "s upside down"
+plant "hint: the root of the cells alone" 11_grid grid_build.c \
+    's|pow(fmax(wanted, 1) / volume, 1.0 / spanned)|pow(fmax(wanted, 1), 1.0 / spanned) / volume|' \
+    test_resolution "" "the root is of the cells over the volume"
+plant "hint: a product equal to the cap shrunk" 11_grid grid_build.c \
+    's|if (cells <= (double)max_cells)|if (cells < (double)max_cells)|' \
+    test_resolution "" "a product equal to the cap shrunk"
+# The cell range: floor and ceil at a boundary, the clamps, the axis and the corner.
+plant "hint: the first cell by floor(f_lo)" 11_grid grid_build.c \
+    's|real_ceil(f_lo) - 1, 0|real_floor(f_lo), 0|' \
+    test_cell_range "" "first = floor\(f_lo\): a box whose low side"
+plant "hint: the last cell by ceil(f_hi) - 1" 11_grid grid_build.c \
+    's|real_to_index(real_floor(f_hi), -1|real_to_index(real_ceil(f_hi) - 1, -1|' \
+    test_cell_range "" "last = ceil\(f_hi\) - 1"
+plant "hint: the last cell by ceil(f_hi)" 11_grid grid_build.c \
+    's|real_to_index(real_floor(f_hi), -1|real_to_index(real_ceil(f_hi), -1|' \
+    test_cell_range "" "last = ceil\(f_hi\): that is the cell after the box"
+plant "hint: the cell range by floor and ceil" 11_grid grid_build.c \
+    's|real_to_index(real_ceil(f_lo) - 1, 0|real_to_index(real_floor(f_lo), 0|; s|real_to_index(real_floor(f_hi), -1|real_to_index(real_ceil(f_hi), -1|' \
+    test_cell_range "" "last = ceil\(f_hi\): that is the cell after the box"
+plant "hint: the last cell clamped to n" 11_grid grid_build.c \
+    's|-1, g->n\[a\] - 1);|-1, g->n[a]);|' \
+    test_cell_range "" "last clamped to n"
+plant "hint: x's cell size for every axis" 11_grid grid_build.c \
+    's|/ vec3_axis(g->cell, a);|/ vec3_axis(g->cell, 0);|g' \
+    test_cell_range "" "the x axis's cell size used for another axis"
+plant "hint: f_hi from box_lo" 11_grid grid_build.c \
+    's|real f_hi = (vec3_axis(box_hi, a)|real f_hi = (vec3_axis(box_lo, a) + 0 * vec3_axis(box_hi, a)|' \
+    test_cell_range "" "f_hi computed from box_lo"
+# The entry: the slabs' crossings swapped for d_a < 0, the window narrowed by every axis.
+plant "hint: the entry without min and max" 11_grid grid_march.c \
+    's|real near = real_fmin(t_lo, t_hi) - slack\[a\], far = real_fmax(t_lo, t_hi) + slack\[a\];|real near = t_lo - slack[a], far = t_hi + slack[a];|' \
+    test_dda_cells "" "enter: for d_a < 0 the ray enters the slab at hi_a"
+plant "hint: the entry's t0 not narrowed" 11_grid grid_march.c \
+    's|\*t0 = real_fmax(\*t0, near);|*t0 = real_fmin(*t0, near);|' \
+    test_dda_cells "" "enter: the ray is inside the box only where it is inside all three slabs"
+plant "hint: the entry's window overwritten by each axis" 11_grid grid_march.c \
+    's|\*t0 = real_fmax(\*t0, near);|*t0 = near;|; s|\*t1 = real_fmin(\*t1, far);|*t1 = far;|' \
+    test_dda_cells "" "enter: the ray is inside the box only where it is inside all three slabs"
+# dda_step: the t added up, the plane, the sign, the grid's ends.
+plant "hint: dda_step adds a t step" 11_grid grid_march.c \
+    's|m->next\[a\] = crossing(g, a, m->i\[a\] + (m->step\[a\] > 0), r, inv_d);|(void)r; m->next[a] += vec3_axis(g->cell, a) * real_abs(inv_d[a]);|' \
+    test_dda_no_accumulation "" "next_x gathered rounding"
+plant "hint: dda_step's plane for the wrong direction" 11_grid grid_march.c \
+    's|m->i\[a\] + (m->step\[a\] > 0), r, inv_d);|m->i[a] + (m->step[a] < 0), r, inv_d);|' \
+    test_dda_cells "" "next_a comes from the wrong plane"
+plant "hint: dda_step's next from the old cell" 11_grid grid_march.c \
+    's|m->i\[a\] += m->step\[a\];|real t_old = crossing(g, a, m->i[a] + (m->step[a] > 0), r, inv_d); m->i[a] += m->step[a];|; s|^    m->next\[a\] = crossing(g, a, m->i\[a\] + (m->step\[a\] > 0), r, inv_d);|    m->next[a] = t_old;|' \
+    test_dda_cells "" "next_a comes from the wrong plane"
+plant "hint: dda_step always steps up" 11_grid grid_march.c \
+    's|m->i\[a\] += m->step\[a\];|m->i[a] += 1;|' \
+    test_dda_axis_steps "" "dda_step along x with step -1"
+plant "hint: dda_step stops at the last cell" 11_grid grid_march.c \
+    's|m->i\[a\] >= g->n\[a\]|m->i[a] >= g->n[a] - 1|' \
+    test_dda_cells "" "dda_step stops too early"
+plant "hint: dda_step goes past the grid" 11_grid grid_march.c \
+    's|m->i\[a\] >= g->n\[a\]|m->i[a] > g->n[a]|' \
+    test_dda_cells "" "dda_step goes on past the grid"
+# The stop rule: this cell's boundary, not the next one's, and not the first hit.
+plant "hint: the stop rule at the next cell's boundary" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[a] + vec3_axis(g->cell, a) * real_abs(inv_d[a]) - slack[a])|' \
+    test_stop_rule "" "tested the next cell's far boundary"
+plant "hint: the march stops at the first hit" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best >= 0)|' \
+    test_stop_rule "" "stopped at the first cell holding a hit"
+plant "hint: the march never stops at a hit" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (0)|' \
+    test_stop_rule "" "the march goes on after the best hit"
+plant "hint: the stop rule at the farthest boundary" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= real_fmax(m.next[0], real_fmax(m.next[1], m.next[2])) - slack[a])|' \
+    test_stop_rule "" "the march ended before the sphere's cell"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"
