@@ -378,6 +378,15 @@ plant "hint: the entry's t0 not narrowed" 11_grid grid_march.c \
 plant "hint: the entry's window overwritten by each axis" 11_grid grid_march.c \
     's|\*t0 = real_fmax(\*t0, near);|*t0 = near;|; s|\*t1 = real_fmin(\*t1, far);|*t1 = far;|' \
     test_dda_cells "" "enter: the ray is inside the box only where it is inside all three slabs"
+plant "hint: the entry without the slack" 11_grid grid_march.c \
+    's|real near = real_fmin(t_lo, t_hi) - slack\[a\], far = real_fmax(t_lo, t_hi) + slack\[a\];|real near = real_fmin(t_lo, t_hi), far = real_fmax(t_lo, t_hi); (void)slack;|' \
+    test_dda_cells "" "enter without the slack"
+plant "hint: the entry's slack taken inwards" 11_grid grid_march.c \
+    's|real near = real_fmin(t_lo, t_hi) - slack\[a\], far = real_fmax(t_lo, t_hi) + slack\[a\];|real near = real_fmin(t_lo, t_hi) + slack[a], far = real_fmax(t_lo, t_hi) - slack[a];|' \
+    test_dda_cells "" "enter without the slack \(or with it taken inwards\)"
+plant "hint: the entry's slabs open for d_a = 0" 11_grid grid_march.c \
+    's|if (!(p >= lo \&\& p <= hi))|if (!(p > lo \&\& p < hi))|' \
+    test_dda_cells "" "on a face of axis a is inside that slab"
 # dda_step: the t added up, the plane, the sign, the grid's ends.
 plant "hint: dda_step adds a t step" 11_grid grid_march.c \
     's|m->next\[a\] = crossing(g, a, m->i\[a\] + (m->step\[a\] > 0), r, inv_d);|(void)r; m->next[a] += vec3_axis(g->cell, a) * real_abs(inv_d[a]);|' \
@@ -397,7 +406,13 @@ plant "hint: dda_step stops at the last cell" 11_grid grid_march.c \
 plant "hint: dda_step goes past the grid" 11_grid grid_march.c \
     's|m->i\[a\] >= g->n\[a\]|m->i[a] > g->n[a]|' \
     test_dda_cells "" "dda_step goes on past the grid"
-# The stop rule: this cell's boundary, not the next one's, and not the first hit.
+# The stop rule: this cell's boundary minus the slack, not the next one's, and not the first hit.
+plant "hint: the stop rule without the slack" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[a] + 0 * slack[a])|' \
+    test_stop_rule "" "the stop rule without the slack"
+plant "hint: the stop rule with the slack added" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[a] + slack[a])|' \
+    test_stop_rule "" "the stop rule without the slack \(or with it added\)"
 plant "hint: the stop rule at the next cell's boundary" 11_grid grid_march.c \
     's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[a] + vec3_axis(g->cell, a) * real_abs(inv_d[a]) - slack[a])|' \
     test_stop_rule "" "tested the next cell's far boundary"

@@ -425,6 +425,38 @@ static void expect_march_cells(const grid *g, ray r, const char *what, int cells
                        "is not updated");
 }
 
+/* The entry's closed slabs and slack, by the cells visited (at least one):
+ * a ray along x in the plane of the box's face y = hi_y is inside that
+ * slab (lo_a <= p_a <= hi_a); a ray along (1, -1, 0) passing the box's
+ * edge x = hi_x, y = hi_y outside by half the reach of box_ray_slack (it
+ * leaves x's slab at t = 2, enters y's at t = 2 + reach / 2: the gap is
+ * far more than the roundings of these crossings, far less than the two
+ * slacks) enters the widened box: the march errs towards a cell too many. */
+static void expect_entry_edges(const grid *g)
+{
+    const ray on_face = {{g->lo.x - 1, g->hi.y, 0}, {1, 0, 0}};
+    real inv_d[3], slack[3];
+    const real reach = box_ray_slack((box){g->lo, g->hi}, (ray){{g->hi.x - 2, g->hi.y + 2, 0}, {1, -1, 0}}, inv_d, slack);
+    const ray past_edge = {{g->hi.x - 2, g->hi.y + 2 + reach / 2, 0}, {1, -1, 0}};
+    for (int k = 0; k < 2; k++) {
+        const ray r = k ? past_edge : on_face;
+        grid_counts counts = {0, 0};
+        hit_record hit;
+        assert_false(grid_intersect_counted(g, r, 0, REAL_INFINITY, &hit, &counts));
+        if (counts.cells == 0)
+            fail_msg("grid_intersect_counted(ray from (%.17g, %.17g, %.17g) along (%g, %g, 0), %s)\n    expected at "
+                     "least 1 cell visited\n    got      0\n    likely mistake: %s",
+                     (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y,
+                     k ? "passing the box's edge x = hi_x, y = hi_y outside by half the reach of the slack"
+                       : "in the plane of the box's face y = hi_y",
+                     k ? "enter without the slack (or with it taken inwards): each entering t is lowered and each "
+                         "leaving t raised by its axis's slack_a, so that a ray within rounding of the box's edge "
+                         "still visits its cells (the march errs towards a cell too many, never one too few)"
+                       : "enter: a ray with d_a = 0 on a face of axis a is inside that slab: lo_a <= p_a <= hi_a, "
+                         "the faces included");
+    }
+}
+
 /* The entry: a ray that crosses each slab, but never all three at once,
  * passes beside the box's edge and visits no cell; a ray from outside with
  * every component negative enters the box (through the high faces). */
@@ -459,6 +491,7 @@ static void expect_entry(const grid *g)
                  (double)down.p.x, (double)down.p.y, (double)down.p.z, (double)down.d.x, (double)down.d.y,
                  (double)down.d.z, cells);
     expect_march_cells(g, down, "ray with every component negative", cells);
+    expect_entry_edges(g);
 }
 
 /* dda_step: the cells a ray visits, counted against the plane crossings:
@@ -688,6 +721,49 @@ static void expect_stop_in_this_cell(const grid *g)
     surface_list_free(&list);
 }
 
+/* The stop rule allows for the boundary's slack: in the row of cells of `g`
+ * (10 surfaces in row_of_cells's box, as here), a triangle across the ray
+ * along +x is hit half a slack before cell 3's far boundary (slack[0] of
+ * box_ray_slack, 176 REAL_EPSILON here, far more than the few roundings of
+ * the hit's t and of the crossing, far less than the margin, so the
+ * triangle is listed in cells 3 and 4).  Within the slack the hit may be
+ * the rounding of a point beyond the boundary: the march visits cell 4 too,
+ * 5 cells; a rule without the slack, or with it added, stops after 4. */
+static void expect_stop_slack(const grid *g)
+{
+    const ray r = {{-1, (real)0.5, (real)0.5}, {1, 0, 0}};
+    real inv_d[3], slack[3];
+    (void)box_ray_slack((box){g->lo, g->hi}, r, inv_d, slack);
+    const real next = (g->lo.x + 4 * g->cell.x - r.p.x) * inv_d[0]; /* as the march's crossing() */
+    const real x = r.p.x + (next - slack[0] / 2);
+    surface_list list;
+    row_of_cells(&list, TRIANGLE_WATERTIGHT, false);
+    surface_list_add_triangle(&list, (triangle){{x, (real)0.3, (real)0.3}, {x, (real)0.8, (real)0.4}, {x, (real)0.4, (real)0.8}},
+                              0, 8);
+    surface_list_add_sphere(&list, (sphere){{9, (real)0.1, (real)0.1}, (real)0.01}, 0, 9); /* off the ray */
+    grid h;
+    build_grid(&h, &list, grid_default_options());
+    assert_true(h.n[0] == g->n[0] && h.lo.x == g->lo.x && h.cell.x == g->cell.x); /* the same cells */
+    hit_record want, got;
+    grid_counts counts = {0, 0};
+    assert_true(surfaces_intersect(&list, r, 0, REAL_INFINITY, &want) && want.surface == 8);
+    bool found = grid_intersect_counted(&h, r, 0, REAL_INFINITY, &got, &counts);
+    if (!same_hit(true, &want, found, &got) || counts.cells != 5)
+        fail_msg("grid_intersect_counted(ray along +x through a row of %d cells: a triangle hit at t = %.17g, half the "
+                 "slack %.3g before cell 3's far boundary at t = %.17g)\n    expected the triangle at t = %.17g, 5 "
+                 "cells visited (cell 4 too)\n    got      %s %d at t = %.17g, %llu cells\n    likely mistake: %s",
+                 h.n[0], (double)want.t, (double)slack[0], (double)next, (double)want.t,
+                 found ? "surface" : "no hit, surface", found ? got.surface : -1, found ? (double)got.t : 0.0,
+                 (unsigned long long)counts.cells,
+                 counts.cells == 4 ? "the stop rule without the slack (or with it added): a hit within the slack "
+                                     "of the boundary may be a point beyond it, rounded; stop only once t_best <= "
+                                     "next_a - slack_a"
+                                   : "the march ends in the cell that holds the best hit, allowing for the slack: "
+                                     "t_best <= next_a - slack_a");
+    grid_free(&h);
+    surface_list_free(&list);
+}
+
 /* The stop rule: corner spheres fix the grid's box [0, 10] x [0, 1] x [0, 1]
  * (a row of cells along x), a big tilted triangle A spans x = 1.2 .. 8.8 (so
  * it is listed from cell 1 on) and is hit at x = 5, and a small sphere B is
@@ -729,6 +805,7 @@ static void test_stop_rule(void **state)
                                         "(stop once t_best <= the cell's far boundary)"
                                       : "the march ends before the hit's cell");
     expect_stop_in_this_cell(&g);
+    expect_stop_slack(&g);
     /* beside the box (y = 2), parallel to x: no slab of y is ever crossed */
     counts = (grid_counts){0, 0};
     found = grid_intersect_counted(&g, (ray){{-1, 2, (real)0.5}, {1, 0, 0}}, 0, REAL_INFINITY, &got, &counts);
