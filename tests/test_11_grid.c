@@ -681,6 +681,22 @@ static void test_dda_no_accumulation(void **state)
     }
 }
 
+/* The march of r through the grid of `list` (freed here), which has g's
+ * cells along x; the linear scan's hit must be surface `expected`. */
+static bool march_in_row(surface_list *list, const grid *g, ray r, int expected, hit_record *want, hit_record *got,
+                         grid_counts *counts)
+{
+    grid h;
+    build_grid(&h, list, grid_default_options());
+    assert_true(h.n[0] == g->n[0] && h.lo.x == g->lo.x && h.cell.x == g->cell.x); /* the same cells */
+    assert_true(surfaces_intersect(list, r, 0, REAL_INFINITY, want) && want->surface == expected);
+    *counts = (grid_counts){0, 0};
+    bool found = grid_intersect_counted(&h, r, 0, REAL_INFINITY, got, counts);
+    grid_free(&h);
+    surface_list_free(list);
+    return found;
+}
+
 /* The stop rule tests the far boundary of the cell being visited, not the
  * next cell's: in the row of cells of `g` (built from 10 surfaces in the
  * box of row_of_cells, as here), a triangle A listed from cell 1 on is hit a
@@ -697,19 +713,14 @@ static void expect_stop_in_this_cell(const grid *g)
     surface_list_add_triangle(&list, (triangle){{(real)1.2, 0, 0}, {(real)1.2, 1, 0}, {2 * x_A - (real)1.2, (real)0.5, 1}},
                               0, 8);
     surface_list_add_sphere(&list, (sphere){{x_B + (real)0.1 * cell, (real)0.5, (real)0.5}, (real)0.1 * cell}, 0, 9);
-    grid h;
-    build_grid(&h, &list, grid_default_options());
-    assert_true(h.n[0] == g->n[0] && h.lo.x == lo && h.cell.x == cell); /* the same cells */
-    const ray r = {{-1, (real)0.5, (real)0.5}, {1, 0, 0}};
     hit_record want, got;
-    grid_counts counts = {0, 0};
-    assert_true(surfaces_intersect(&list, r, 0, REAL_INFINITY, &want) && want.surface == 9);
-    bool found = grid_intersect_counted(&h, r, 0, REAL_INFINITY, &got, &counts);
+    grid_counts counts;
+    bool found = march_in_row(&list, g, (ray){{-1, (real)0.5, (real)0.5}, {1, 0, 0}}, 9, &want, &got, &counts);
     if (!same_hit(true, &want, found, &got) || counts.cells != 5)
         fail_msg("grid_intersect_counted(ray along +x through a row of %d cells of %.17g: a triangle hit at x = %.17g "
                  "and a sphere hit at x = %.17g, both in cell 4)\n    expected sphere 9 at t = %.17g, 5 cells "
                  "visited\n    got      %s %d at t = %.17g, %llu cells\n    likely mistake: %s",
-                 h.n[0], (double)cell, (double)x_A, (double)x_B, (double)want.t, found ? "surface" : "no hit, surface",
+                 g->n[0], (double)cell, (double)x_A, (double)x_B, (double)want.t, found ? "surface" : "no hit, surface",
                  found ? got.surface : -1, found ? (double)got.t : 0.0, (unsigned long long)counts.cells,
                  found && got.surface == 8 && counts.cells == 4
                      ? "the stop rule tested the next cell's far boundary: the march ends once the best hit lies "
@@ -717,8 +728,6 @@ static void expect_stop_in_this_cell(const grid *g)
                  : found && got.surface == 8 ? "the march stopped at the first cell holding a hit: a hit counts only "
                                                "once it lies in the cell being visited"
                                              : "the march ends in the cell that holds the best hit, cell 4 here");
-    grid_free(&h);
-    surface_list_free(&list);
 }
 
 /* The stop rule allows for the boundary's slack: in the row of cells of `g`
@@ -741,18 +750,14 @@ static void expect_stop_slack(const grid *g)
     surface_list_add_triangle(&list, (triangle){{x, (real)0.3, (real)0.3}, {x, (real)0.8, (real)0.4}, {x, (real)0.4, (real)0.8}},
                               0, 8);
     surface_list_add_sphere(&list, (sphere){{9, (real)0.1, (real)0.1}, (real)0.01}, 0, 9); /* off the ray */
-    grid h;
-    build_grid(&h, &list, grid_default_options());
-    assert_true(h.n[0] == g->n[0] && h.lo.x == g->lo.x && h.cell.x == g->cell.x); /* the same cells */
     hit_record want, got;
-    grid_counts counts = {0, 0};
-    assert_true(surfaces_intersect(&list, r, 0, REAL_INFINITY, &want) && want.surface == 8);
-    bool found = grid_intersect_counted(&h, r, 0, REAL_INFINITY, &got, &counts);
+    grid_counts counts;
+    bool found = march_in_row(&list, g, r, 8, &want, &got, &counts);
     if (!same_hit(true, &want, found, &got) || counts.cells != 5)
         fail_msg("grid_intersect_counted(ray along +x through a row of %d cells: a triangle hit at t = %.17g, half the "
                  "slack %.3g before cell 3's far boundary at t = %.17g)\n    expected the triangle at t = %.17g, 5 "
                  "cells visited (cell 4 too)\n    got      %s %d at t = %.17g, %llu cells\n    likely mistake: %s",
-                 h.n[0], (double)want.t, (double)slack[0], (double)next, (double)want.t,
+                 g->n[0], (double)want.t, (double)slack[0], (double)next, (double)want.t,
                  found ? "surface" : "no hit, surface", found ? got.surface : -1, found ? (double)got.t : 0.0,
                  (unsigned long long)counts.cells,
                  counts.cells == 4 ? "the stop rule without the slack (or with it added): a hit within the slack "
@@ -760,8 +765,6 @@ static void expect_stop_slack(const grid *g)
                                      "next_a - slack_a"
                                    : "the march ends in the cell that holds the best hit, allowing for the slack: "
                                      "t_best <= next_a - slack_a");
-    grid_free(&h);
-    surface_list_free(&list);
 }
 
 /* The stop rule: corner spheres fix the grid's box [0, 10] x [0, 1] x [0, 1]
