@@ -303,6 +303,9 @@ plant "hint: bilinear's x1 from the wrapped x0" 10_interpolation texture.c \
 plant "hint: bilinear's rows wrapped by the width" 10_interpolation texture.c \
     's|\(int y[01] = texel_index(tex->kind, (long long)fy[ +1]*, img->\)height|\1width|' \
     test_bilinear_random "" "the rows wrapped by the width"
+plant "hint: bilinear's fractions from the wrapped indices" 10_interpolation texture.c \
+    's|real s = x - fx, t = y - fy;|real s = x - (real)texel_index(tex->kind, (long long)fx, img->width), t = y - (real)texel_index(tex->kind, (long long)fy, img->height);|' \
+    test_bilinear_random "" "the fractions from the wrapped indices"
 # Chapter 11: the resolution without the cap, with a shrink of a half a try,
 # with the cube root for a flat scene; the entry with no case for inv_d = 0
 # (a ray along an axis then visits no cell: the entry named, not dda_step).

@@ -475,6 +475,7 @@ typedef enum {
     BILINEAR_PLUS_ONE_X,
     BILINEAR_PLUS_ONE_Y,
     BILINEAR_ROWS_BY_WIDTH, /* y0 and y1 wrapped by the width */
+    BILINEAR_FRACTION_WRAPPED, /* s = x - x0 with x0 wrapped into the image */
     BILINEAR_VARIANTS
 } bilinear_variant;
 
@@ -504,6 +505,8 @@ static vec3 bilinear_as(const scene_texture *tex, double x, double y, bilinear_v
     double fx = v == BILINEAR_TRUNCATE ? trunc(x) : floor(x + index_shift),
            fy = v == BILINEAR_TRUNCATE ? trunc(y) : floor(y + index_shift);
     double s = x - fx, t = v == BILINEAR_T_IS_S ? s : y - fy;
+    if (v == BILINEAR_FRACTION_WRAPPED)
+        s = x - (double)wrapped(tex->kind, (long long)fx, W), t = y - (double)wrapped(tex->kind, (long long)fy, H);
     long long x0 = (long long)fx, y0 = (long long)fy, x1 = x0 + 1, y1 = v == BILINEAR_ROW_ABOVE ? y0 - 1 : y0 + 1;
     if (v == BILINEAR_NO_WRAP || v == BILINEAR_NO_WRAP_X)
         x1 = x1 >= 0 && x1 < W ? x1 : wrapped(tex->kind, x0, W);
@@ -572,6 +575,8 @@ static void expect_bilinear_is(const scene_texture *tex, mesh_uv uv, vec3 expect
         [BILINEAR_PLUS_ONE_Y] = "y1 = y0 + 1 from the wrapped y0: past the last row it is outside the image; wrap "
                                 "y0 + 1 itself with texel_index (a RepeatTexture blends in the first row)",
         [BILINEAR_ROWS_BY_WIDTH] = "the rows wrapped by the width: y0 and y0 + 1 wrap by the height",
+        [BILINEAR_FRACTION_WRAPPED] = "the fractions from the wrapped indices: s = x - floor(x) and t = y - floor(y), "
+                                      "before any wrapping (the wrap only picks the texels)",
     };
     double x = coordinate(uv.u, tex->image.width), y = coordinate(1 - uv.v, tex->image.height);
     suspect_vec3 mistakes[BILINEAR_VARIANTS + 1];
