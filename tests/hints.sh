@@ -242,7 +242,7 @@ plant "hint: a negative remainder plus n - 1" 10_interpolation texture.c \
     's|return (int)(m < 0 ? m + n : m);|return (int)(m < 0 ? m + n - 1 : m);|' \
     test_texel_index_repeat "" "negative remainder plus n - 1"
 plant "hint: i converted to int before the %" 10_interpolation texture.c \
-    's|long long m = i % n;|long long m = (int)i % n;|' \
+    's|m = i % n;|m = (int)i % n;|' \
     test_texel_index_repeat "" "converted to int before the %"
 plant "hint: clamped to n" 10_interpolation texture.c \
     's|i >= n ? n - 1 : (int)i;|i >= n ? n : (int)i;|' \
@@ -251,10 +251,10 @@ plant "hint: only i > n clamped" 10_interpolation texture.c \
     's|i >= n ? n - 1 : (int)i;|i > n ? n - 1 : (int)i;|' \
     test_texel_index_clamp "" "clamped to n \(or only i > n clamped\)"
 plant "hint: a negative i not clamped" 10_interpolation texture.c \
-    's|return i < 0 ? 0 : i >= n ? n - 1 : (int)i;|return i >= n ? n - 1 : (int)i;|' \
+    's|return i < 0 ? 0 : i >= n|return i >= n|' \
     test_texel_index_clamp "" "a negative i is not clamped"
 plant "hint: Repeat and Clamp swapped" 10_interpolation texture.c \
-    's|if (kind == TEXTURE_REPEAT) {|if (kind == TEXTURE_CLAMP) {|' \
+    's|(kind == TEXTURE_REPEAT)|(kind == TEXTURE_CLAMP)|' \
     test_texel_index_repeat "" "clamped: a RepeatTexture wraps"
 # Nearest: the rounding, v's flip, the sides.
 plant "hint: nearest by floor(x + 1/2)" 10_interpolation texture.c \
