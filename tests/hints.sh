@@ -215,6 +215,97 @@ for t in test_interpolate_uv test_vertex_normal test_smooth_shading; do
         's|vec3_scale(A_b, beta)), vec3_scale(A_c, gamma)|vec3_scale(A_b, gamma)), vec3_scale(A_c, beta)|' \
         "$t" "" "likely mistake: beta and gamma swapped"
 done
+# interpolate_vec3's weights and a normalization that belongs to vertex_normal.
+plant "hint: alpha = 1 - beta" 10_interpolation interpolate.c \
+    's|real alpha = 1 - beta - gamma;|real alpha = 1 - beta;|' \
+    test_interpolate_vertices_edges "" "alpha = 1 - beta: the weight of vertex a is 1 - beta - gamma"
+plant "hint: alpha on vertex b" 10_interpolation interpolate.c \
+    's|vec3_scale(A_a, alpha), vec3_scale(A_b, beta)|vec3_scale(A_a, beta), vec3_scale(A_b, alpha)|' \
+    test_interpolate_vertices_edges "" "alpha and beta swapped"
+plant "hint: the blend divided by 3" 10_interpolation interpolate.c \
+    's|return vec3_add(\(.*\));$|return vec3_scale(vec3_add(\1), (real)1 / 3);|' \
+    test_interpolate_random "" "divided by 3"
+plant "hint: the blend normalized" 10_interpolation interpolate.c \
+    's|return vec3_add(\(.*\));$|return vec3_normalize(vec3_add(\1));|' \
+    test_interpolate_uv "" "the blend normalized: interpolate_vec3 blends any attribute"
+plant "hint: each vertex's value normalized before the blend" 10_interpolation interpolate.c \
+    's|vec3_scale(A_\([abc]\), |vec3_scale(vec3_normalize(A_\1), |g' \
+    test_interpolate_random "" "each vertex's value normalized before the blend"
+# The wrap: the remainder's sign, clamping to n, the kinds swapped.
+plant "hint: the remainder's absolute value" 10_interpolation texture.c \
+    's|return (int)(m < 0 ? m + n : m);|return (int)(m < 0 ? -m : m);|' \
+    test_texel_index_repeat "" "absolute value mirrors the texture"
+plant "hint: n added to every remainder" 10_interpolation texture.c \
+    's|return (int)(m < 0 ? m + n : m);|return (int)(m + n);|' \
+    test_texel_index_repeat "" "i % n \+ n is n too many"
+plant "hint: a negative remainder plus n - 1" 10_interpolation texture.c \
+    's|return (int)(m < 0 ? m + n : m);|return (int)(m < 0 ? m + n - 1 : m);|' \
+    test_texel_index_repeat "" "negative remainder plus n - 1"
+plant "hint: i converted to int before the %" 10_interpolation texture.c \
+    's|m = i % n;|m = (int)i % n;|' \
+    test_texel_index_repeat "" "converted to int before the %"
+plant "hint: clamped to n" 10_interpolation texture.c \
+    's|i >= n ? n - 1 : (int)i;|i >= n ? n : (int)i;|' \
+    test_texel_index_clamp "" "clamped to n \(or only i > n clamped\)"
+plant "hint: only i > n clamped" 10_interpolation texture.c \
+    's|i >= n ? n - 1 : (int)i;|i > n ? n - 1 : (int)i;|' \
+    test_texel_index_clamp "" "clamped to n \(or only i > n clamped\)"
+plant "hint: a negative i not clamped" 10_interpolation texture.c \
+    's|return i < 0 ? 0 : i >= n|return i >= n|' \
+    test_texel_index_clamp "" "a negative i is not clamped"
+plant "hint: Repeat and Clamp swapped" 10_interpolation texture.c \
+    's|(kind == TEXTURE_REPEAT)|(kind == TEXTURE_CLAMP)|' \
+    test_texel_index_repeat "" "clamped: a RepeatTexture wraps"
+# Nearest: the rounding, v's flip, the sides.
+plant "hint: nearest by floor(x + 1/2)" 10_interpolation texture.c \
+    's|(long long)(\([xy]\) + (real)0.5)|(long long)real_floor(\1 + (real)0.5)|g' \
+    test_nearest_quirk "" "floor\(x \+ 1/2\) or round\(x\)"
+plant "hint: nearest by ceil(x)" 10_interpolation texture.c \
+    's|(long long)(\([xy]\) + (real)0.5)|(long long)real_ceil(\1)|g' \
+    test_nearest "" "ceil\(x\) rounds every fraction up"
+plant "hint: nearest by x - 1/2" 10_interpolation texture.c \
+    's|(long long)(\([xy]\) + (real)0.5)|(long long)(\1 - (real)0.5)|g' \
+    test_nearest "" "x - 1/2: the nearest texel"
+plant "hint: v flipped again" 10_interpolation texture.c \
+    's|(long long)(y + (real)0.5), img->height|(long long)((real)img->height - y + (real)0.5), img->height|' \
+    test_nearest "" "v not flipped: rows count down from the top"
+plant "hint: nearest with u and v swapped" 10_interpolation texture.c \
+    's|return texture_image_texel(img, column, row);|return texture_image_texel(img, row, column);|' \
+    test_nearest "" "u and v swapped"
+plant "hint: nearest's row wrapped by the width" 10_interpolation texture.c \
+    's|(long long)(y + (real)0.5), img->height|(long long)(y + (real)0.5), img->width|' \
+    test_nearest "" "the row wrapped by the width"
+# Bilinear: the corner, the half-texel shift, the fractions, the second column and row.
+plant "hint: bilinear's weights along y swapped" 10_interpolation texture.c \
+    's|color_add(color_scale(top, 1 - t), color_scale(bottom, t))|color_add(color_scale(top, t), color_scale(bottom, 1 - t))|' \
+    test_bilinear "" "the weights along y swapped"
+plant "hint: bilinear's weights from the opposite corner" 10_interpolation texture.c \
+    's|real s = x - fx, t = y - fy;|real s = 1 - (x - fx), t = 1 - (y - fy);|' \
+    test_bilinear "" "the weights from the opposite corner"
+plant "hint: bilinear's t from x" 10_interpolation texture.c \
+    's|real s = x - fx, t = y - fy;|real s = x - fx, t = x - fx;|' \
+    test_bilinear "" "t = x - x0"
+plant "hint: bilinear's x0 truncated" 10_interpolation texture.c \
+    's|real fx = real_floor(x), fy = real_floor(y);|real fx = (real)(long long)x, fy = (real)(long long)y;|' \
+    test_bilinear_random "" "rounds towards zero: x0 = floor\(x\)"
+plant "hint: bilinear's centres at x + 1/2" 10_interpolation texture.c \
+    's|real fx = real_floor(x), fy = real_floor(y);|x -= (real)0.5, y -= (real)0.5; &|' \
+    test_bilinear "" "x - 1/2 \(texel centres at x \+ 1/2\)"
+plant "hint: bilinear's index shifted, not its fraction" 10_interpolation texture.c \
+    's|real fx = real_floor(x), fy = real_floor(y);|real fx = real_floor(x - (real)0.5), fy = real_floor(y - (real)0.5);|' \
+    test_bilinear "" "the fraction not taken after it"
+plant "hint: bilinear's index from x + 1/2" 10_interpolation texture.c \
+    's|real fx = real_floor(x), fy = real_floor(y);|real fx = real_floor(x + (real)0.5), fy = real_floor(y + (real)0.5);|' \
+    test_bilinear "" "nearest's \+ 1/2 in the index alone"
+plant "hint: bilinear's x1 from the wrapped x0" 10_interpolation texture.c \
+    's|int x1 = texel_index(tex->kind, (long long)fx + 1, img->width);|int x1 = x0 + 1;|' \
+    test_bilinear "" "from the wrapped x0: past the last"
+plant "hint: bilinear's rows wrapped by the width" 10_interpolation texture.c \
+    's|\(int y[01] = texel_index(tex->kind, (long long)fy[ +1]*, img->\)height|\1width|' \
+    test_bilinear_random "" "the rows wrapped by the width"
+plant "hint: bilinear's fractions from the wrapped indices" 10_interpolation texture.c \
+    's|real s = x - fx, t = y - fy;|real s = x - (real)texel_index(tex->kind, (long long)fx, img->width), t = y - (real)texel_index(tex->kind, (long long)fy, img->height);|' \
+    test_bilinear_random "" "the fractions from the wrapped indices"
 # Chapter 11: the resolution without the cap, with a shrink of a half a try,
 # with the cube root for a flat scene; the entry with no case for inv_d = 0
 # (a ray along an axis then visits no cell: the entry named, not dda_step).
@@ -230,6 +321,113 @@ plant "hint: the cube root for a flat scene" 11_grid grid_build.c \
 plant "hint: the entry with no case for inv_d = 0" 11_grid grid_march.c \
     's|if (inv_d\[a\] == 0) {|if (inv_d[a] == 0 \&\& t0 == NULL) {|' \
     test_dda_axis_steps "dda_step along" "0 cells" "likely mistake: enter: a component d_a = \+0 or -0"
+# The resolution's formula: lambda N, round, at least one cell, the root of the cells over the volume.
+plant "hint: the resolution without the density" 11_grid grid_build.c \
+    's|fmin(density \* (double)surfaces,|fmin((double)surfaces + 0 * density,|' \
+    test_resolution "" "the density left out"
+plant "hint: the resolution without the number of surfaces" 11_grid grid_build.c \
+    's|fmin(density \* (double)surfaces,|fmin(density + 0 * (double)surfaces,|' \
+    test_resolution "" "the number of surfaces left out"
+plant "hint: the resolution by floor" 11_grid grid_build.c \
+    's|fmax(round(extent\[a\] \* s), 1)|fmax(floor(extent[a] * s), 1)|' \
+    test_resolution "" "n_a = floor\(e_a s\)"
+plant "hint: the resolution by ceil" 11_grid grid_build.c \
+    's|fmax(round(extent\[a\] \* s), 1)|fmax(ceil(extent[a] * s), 1)|' \
+    test_resolution "" "n_a = ceil\(e_a s\)"
+plant "hint: a spanned axis rounded to 0 cells" 11_grid grid_build.c \
+    's|fmin(fmax(round(extent\[a\] \* s), 1), 1 << 20)|fmin(round(extent[a] * s), 1 << 20)|' \
+    test_resolution "" "rounds to 0 still gets one cell"
+plant "hint: a flat axis's zero extent in the volume" 11_grid grid_build.c \
+    's|if (extent\[a\] > 0) {|if (extent[a] >= 0) {|' \
+    test_resolution "" "zero extent makes s infinite"
+plant "hint: s upside down" 11_grid grid_build.c \
+    's|pow(fmax(wanted, 1) / volume, 1.0 / spanned)|pow(volume / fmax(wanted, 1), 1.0 / spanned)|' \
+    test_resolution "" "s upside down"
+plant "hint: the root of the cells alone" 11_grid grid_build.c \
+    's|pow(fmax(wanted, 1) / volume, 1.0 / spanned)|pow(fmax(wanted, 1), 1.0 / spanned) / volume|' \
+    test_resolution "" "the root is of the cells over the volume"
+plant "hint: a product equal to the cap shrunk" 11_grid grid_build.c \
+    's|if (cells <= (double)max_cells)|if (cells < (double)max_cells)|' \
+    test_resolution "" "a product equal to the cap shrunk"
+# The cell range: floor and ceil at a boundary, the clamps, the axis and the corner.
+plant "hint: the first cell by floor(f_lo)" 11_grid grid_build.c \
+    's|real_ceil(f_lo) - 1, 0|real_floor(f_lo), 0|' \
+    test_cell_range "" "first = floor\(f_lo\): a box whose low side"
+plant "hint: the last cell by ceil(f_hi) - 1" 11_grid grid_build.c \
+    's|real_to_index(real_floor(f_hi), -1|real_to_index(real_ceil(f_hi) - 1, -1|' \
+    test_cell_range "" "last = ceil\(f_hi\) - 1"
+plant "hint: the last cell by ceil(f_hi)" 11_grid grid_build.c \
+    's|real_to_index(real_floor(f_hi), -1|real_to_index(real_ceil(f_hi), -1|' \
+    test_cell_range "" "last = ceil\(f_hi\): that is the cell after the box"
+plant "hint: the cell range by floor and ceil" 11_grid grid_build.c \
+    's|real_to_index(real_ceil(f_lo) - 1, 0|real_to_index(real_floor(f_lo), 0|; s|real_to_index(real_floor(f_hi), -1|real_to_index(real_ceil(f_hi), -1|' \
+    test_cell_range "" "last = ceil\(f_hi\): that is the cell after the box"
+plant "hint: the last cell clamped to n" 11_grid grid_build.c \
+    's|-1, g->n\[a\] - 1);|-1, g->n[a]);|' \
+    test_cell_range "" "last clamped to n"
+plant "hint: x's cell size for every axis" 11_grid grid_build.c \
+    's|/ vec3_axis(g->cell, a);|/ vec3_axis(g->cell, 0);|g' \
+    test_cell_range "" "the x axis's cell size used for another axis"
+plant "hint: f_hi from box_lo" 11_grid grid_build.c \
+    's|real f_hi = (vec3_axis(box_hi, a)|real f_hi = (vec3_axis(box_lo, a) + 0 * vec3_axis(box_hi, a)|' \
+    test_cell_range "" "f_hi computed from box_lo"
+# The entry: the slabs' crossings swapped for d_a < 0, the window narrowed by every axis.
+plant "hint: the entry without min and max" 11_grid grid_march.c \
+    's|real near = real_fmin(t_lo, t_hi) - slack\[a\], far = real_fmax(t_lo, t_hi) + slack\[a\];|real near = t_lo - slack[a], far = t_hi + slack[a];|' \
+    test_dda_cells "" "enter: for d_a < 0 the ray enters the slab at hi_a"
+plant "hint: the entry's t0 not narrowed" 11_grid grid_march.c \
+    's|\*t0 = real_fmax(\*t0, near);|*t0 = real_fmin(*t0, near);|' \
+    test_dda_cells "" "enter: the ray is inside the box only where it is inside all three slabs"
+plant "hint: the entry's window overwritten by each axis" 11_grid grid_march.c \
+    's|\*t0 = real_fmax(\*t0, near);|*t0 = near;|; s|\*t1 = real_fmin(\*t1, far);|*t1 = far;|' \
+    test_dda_cells "" "enter: the ray is inside the box only where it is inside all three slabs"
+plant "hint: the entry without the slack" 11_grid grid_march.c \
+    's|real near = real_fmin(t_lo, t_hi) - slack\[a\], far = real_fmax(t_lo, t_hi) + slack\[a\];|real near = real_fmin(t_lo, t_hi), far = real_fmax(t_lo, t_hi); (void)slack;|' \
+    test_dda_cells "" "enter without the slack"
+plant "hint: the entry's slack taken inwards" 11_grid grid_march.c \
+    's|real near = real_fmin(t_lo, t_hi) - slack\[a\], far = real_fmax(t_lo, t_hi) + slack\[a\];|real near = real_fmin(t_lo, t_hi) + slack[a], far = real_fmax(t_lo, t_hi) - slack[a];|' \
+    test_dda_cells "" "enter without the slack \(or with it taken inwards\)"
+plant "hint: the entry's slabs open for d_a = 0" 11_grid grid_march.c \
+    's|if (!(p >= lo \&\& p <= hi))|if (!(p > lo \&\& p < hi))|' \
+    test_dda_cells "" "on a face of axis a is inside that slab"
+# dda_step: the t added up, the plane, the sign, the grid's ends.
+plant "hint: dda_step adds a t step" 11_grid grid_march.c \
+    's|m->next\[a\] = crossing(g, a, m->i\[a\] + (m->step\[a\] > 0), r, inv_d);|(void)r; m->next[a] += vec3_axis(g->cell, a) * real_abs(inv_d[a]);|' \
+    test_dda_no_accumulation "" "next_x gathered rounding"
+plant "hint: dda_step's plane for the wrong direction" 11_grid grid_march.c \
+    's|m->i\[a\] + (m->step\[a\] > 0), r, inv_d);|m->i[a] + (m->step[a] < 0), r, inv_d);|' \
+    test_dda_cells "" "next_a comes from the wrong plane"
+plant "hint: dda_step's next from the old cell" 11_grid grid_march.c \
+    's|m->i\[a\] += m->step\[a\];|real t_old = crossing(g, a, m->i[a] + (m->step[a] > 0), r, inv_d); m->i[a] += m->step[a];|; s|^    m->next\[a\] = crossing(g, a, m->i\[a\] + (m->step\[a\] > 0), r, inv_d);|    m->next[a] = t_old;|' \
+    test_dda_cells "" "next_a comes from the wrong plane"
+plant "hint: dda_step always steps up" 11_grid grid_march.c \
+    's|m->i\[a\] += m->step\[a\];|m->i[a] += 1;|' \
+    test_dda_axis_steps "" "dda_step along x with step -1"
+plant "hint: dda_step stops at the last cell" 11_grid grid_march.c \
+    's|m->i\[a\] >= g->n\[a\]|m->i[a] >= g->n[a] - 1|' \
+    test_dda_cells "" "dda_step stops too early"
+plant "hint: dda_step goes past the grid" 11_grid grid_march.c \
+    's|m->i\[a\] >= g->n\[a\]|m->i[a] > g->n[a]|' \
+    test_dda_cells "" "dda_step goes on past the grid"
+# The stop rule: this cell's boundary minus the slack, not the next one's, and not the first hit.
+plant "hint: the stop rule without the slack" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[a] + 0 * slack[a])|' \
+    test_stop_rule "" "the stop rule without the slack"
+plant "hint: the stop rule with the slack added" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[a] + slack[a])|' \
+    test_stop_rule "" "the stop rule without the slack \(or with it added\)"
+plant "hint: the stop rule at the next cell's boundary" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[a] + vec3_axis(g->cell, a) * real_abs(inv_d[a]) - slack[a])|' \
+    test_stop_rule "" "tested the next cell's far boundary"
+plant "hint: the march stops at the first hit" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best >= 0)|' \
+    test_stop_rule "" "stopped at the first cell holding a hit"
+plant "hint: the march never stops at a hit" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (0)|' \
+    test_stop_rule "" "the march goes on after the best hit"
+plant "hint: the stop rule at the farthest boundary" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= real_fmax(m.next[0], real_fmax(m.next[1], m.next[2])) - slack[a])|' \
+    test_stop_rule "" "the march ended before the sphere's cell"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"

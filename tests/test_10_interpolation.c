@@ -59,7 +59,9 @@ static size_t matching_once(suspect_vec3 *out, const suspect_vec3 *in, size_t n,
 
 /* The values typical mistakes of interpolate_vec3 give for A_a, A_b, A_c at
  * (beta, gamma), and what to say about each. */
-#define INTERPOLATE_MISTAKES 12
+#define INTERPOLATE_MISTAKES 14
+/* v normalized, or v itself when it is the zero vector (which has no direction). */
+static vec3 normalized_or_zero(vec3 v) { return vec3_length_squared(v) > 0 ? vec3_normalize(v) : v; }
 static void interpolate_mistakes(suspect_vec3 mistakes[INTERPOLATE_MISTAKES], vec3 A_a, vec3 A_b, vec3 A_c, real beta,
                                  real gamma)
 {
@@ -80,6 +82,13 @@ static void interpolate_mistakes(suspect_vec3 mistakes[INTERPOLATE_MISTAKES], ve
         {vec3_scale(MIX(alpha, beta, gamma), (real)(1.0 / 3)),
          "divided by 3: the weights already sum to 1 (alpha + beta + gamma = 1)"},
         {A_a, "A_a whatever beta and gamma: the exercise is still to do"},
+        {normalized_or_zero(MIX(alpha, beta, gamma)),
+         "the blend normalized: interpolate_vec3 blends any attribute (positions, (u, v)) and never normalizes; "
+         "vertex_normal normalizes the blend of the normals"},
+        {vec3_add(vec3_add(vec3_scale(normalized_or_zero(A_a), alpha), vec3_scale(normalized_or_zero(A_b), beta)),
+                  vec3_scale(normalized_or_zero(A_c), gamma)),
+         "each vertex's value normalized before the blend: the attributes are blended as they are (a normal is "
+         "normalized after the blend, by vertex_normal)"},
     };
 #undef MIX
     for (int k = 0; k < INTERPOLATE_MISTAKES; k++)
@@ -325,6 +334,8 @@ static const char *wrap_mistake(texture_kind kind, long long i, int n, const cha
                     kind == TEXTURE_REPEAT ? "repeat" : "clamp");
 }
 
+static long long llmin(long long a, long long b) { return a < b ? a : b; }
+
 /* texture_nearest(tex, uv) on a `numbered` texture reads texel (x, y); a
  * failure names the texel read (its colour says which) and the mistake. */
 static void expect_nearest(const scene_texture *tex, mesh_uv uv, int x, int y)
@@ -344,13 +355,17 @@ static void expect_nearest(const scene_texture *tex, mesh_uv uv, int x, int y)
         {numbered_colour(col, TH - 1 - row), "v flipped twice: y = (1 - v) H counts rows from the top already"},
         {numbered_colour(col, wrapped(k, (long long)(coordinate(uv.v, TH) + 0.5), TH)),
          "v not flipped: rows count down from the top, y = (1 - v) H"},
+        {numbered_colour(wrapped(k, (long long)ceil(X), TW), wrapped(k, (long long)ceil(Y), TH)),
+         "ceil(x) rounds every fraction up: the nearest texel is (long long)(x + 1/2)"},
         {numbered_colour(wrapped(k, (long long)floor(X + 0.5), TW), wrapped(k, (long long)floor(Y + 0.5), TH)),
-         "floor(x + 1/2): the course's solution drops the fraction, (long long)(x + 1/2), which rounds towards zero "
+         "floor(x + 1/2) or round(x): the course's solution drops the fraction, (long long)(x + 1/2), which rounds towards zero "
          "and differs for x < -1/2"},
         {numbered_colour(wrapped(k, (long long)(X - 0.5), TW), wrapped(k, (long long)(Y - 0.5), TH)),
          "x - 1/2: the nearest texel is (long long)(x + 1/2)"},
-        {numbered_colour(col, wrapped(k, cy, TW)), "the row wrapped by the width: rows wrap by the height"},
-        {numbered_colour(wrapped(k, cx, TH), row), "the column wrapped by the height: columns wrap by the width"},
+        /* an index wrapped by the other side may lie outside the image: texture_image_texel reads the edge */
+        {numbered_colour(col, llmin(wrapped(k, cy, TW), TH - 1)), "the row wrapped by the width: rows wrap by the height"},
+        {numbered_colour(llmin(wrapped(k, cx, TH), TW - 1), row), "the column wrapped by the height: columns wrap by the "
+                                                                  "width"},
         {numbered_colour(wrapped(other, cx, TW), wrapped(other, cy, TH)),
          "wrapped the other way: tex->kind says repeat or clamp (texel_index)"},
         {numbered_colour(0, 0), fabs(X) > 2147483647.0 || fabs(Y) > 2147483647.0
@@ -397,6 +412,9 @@ static void test_nearest(void **state)
         expect_nearest(&tex, (mesh_uv){(real)(2.0 / TW), (real)0.2}, 2, TH - 1);
         /* beyond the right edge: column 0 again, or the last column */
         expect_nearest(&tex, (mesh_uv){(real)(1 + 1.1 / TW), (real)(1 - 1.0 / TH)}, kind == TEXTURE_REPEAT ? 1 : TW - 1, 1);
+        /* y = 3.8, row index 4 of a texture 3 high: row 1 repeated, the last row clamped (wrapped by the width
+         * 5 it would be 4, outside the image) */
+        expect_nearest(&tex, (mesh_uv){(real)(2.0 / TW), (real)(1 - 3.8 / TH)}, 2, kind == TEXTURE_REPEAT ? 1 : TH - 1);
         /* u + 3, v - 2 read what u, v read when repeated */
         if (kind == TEXTURE_REPEAT)
             expect_nearest(&tex, (mesh_uv){(real)(3 + 3.2 / TW), (real)(-2 + 1 - 2.1 / TH)}, 3, 2);
@@ -450,6 +468,14 @@ typedef enum {
     BILINEAR_NO_WRAP_Y,
     BILINEAR_UV_SWAPPED, /* texel (row, column) */
     BILINEAR_NEAREST,    /* the nearest texel */
+    BILINEAR_MINUS_HALF_INDEX, /* x0 = floor(x - 1/2), but s = x - x0: the fraction not taken after the shift */
+    BILINEAR_PLUS_HALF_INDEX,  /* x0 = floor(x + 1/2), s = x - x0 */
+    BILINEAR_CORNER,     /* T(x0, y0) weighs s t: the weights of the opposite corner */
+    BILINEAR_PLUS_ONE,   /* x1 = x0 + 1 and y1 = y0 + 1 from the wrapped x0, y0: read at the edge */
+    BILINEAR_PLUS_ONE_X,
+    BILINEAR_PLUS_ONE_Y,
+    BILINEAR_ROWS_BY_WIDTH, /* y0 and y1 wrapped by the width */
+    BILINEAR_FRACTION_WRAPPED, /* s = x - x0 with x0 wrapped into the image */
     BILINEAR_VARIANTS
 } bilinear_variant;
 
@@ -474,17 +500,31 @@ static vec3 bilinear_as(const scene_texture *tex, double x, double y, bilinear_v
     if (v == BILINEAR_NEAREST)
         return texel_vec3(tex, (long long)(x + 0.5), (long long)(y + 0.5));
     double shift = v == BILINEAR_MINUS_HALF ? -0.5 : v == BILINEAR_PLUS_HALF ? 0.5 : 0;
+    double index_shift = v == BILINEAR_MINUS_HALF_INDEX ? -0.5 : v == BILINEAR_PLUS_HALF_INDEX ? 0.5 : 0;
     x += shift, y += shift;
-    double fx = v == BILINEAR_TRUNCATE ? trunc(x) : floor(x), fy = v == BILINEAR_TRUNCATE ? trunc(y) : floor(y);
+    double fx = v == BILINEAR_TRUNCATE ? trunc(x) : floor(x + index_shift),
+           fy = v == BILINEAR_TRUNCATE ? trunc(y) : floor(y + index_shift);
     double s = x - fx, t = v == BILINEAR_T_IS_S ? s : y - fy;
+    if (v == BILINEAR_FRACTION_WRAPPED)
+        s = x - (double)wrapped(tex->kind, (long long)fx, W), t = y - (double)wrapped(tex->kind, (long long)fy, H);
     long long x0 = (long long)fx, y0 = (long long)fy, x1 = x0 + 1, y1 = v == BILINEAR_ROW_ABOVE ? y0 - 1 : y0 + 1;
     if (v == BILINEAR_NO_WRAP || v == BILINEAR_NO_WRAP_X)
         x1 = x1 >= 0 && x1 < W ? x1 : wrapped(tex->kind, x0, W);
     if (v == BILINEAR_NO_WRAP || v == BILINEAR_NO_WRAP_Y)
         y1 = y1 >= 0 && y1 < H ? y1 : wrapped(tex->kind, y0, H);
-    double ws = v == BILINEAR_S_SWAPPED || v == BILINEAR_S_SWAPPED_TOP ? 1 - s : s;
-    double wb = v == BILINEAR_BOTTOM_T ? t : v == BILINEAR_S_SWAPPED || v == BILINEAR_S_SWAPPED_BOTTOM ? 1 - s : s;
-    double wt = v == BILINEAR_T_SWAPPED ? 1 - t : t;
+    /* one past the wrapped index, read as texture_image_texel reads an index outside: the edge */
+    if (v == BILINEAR_PLUS_ONE || v == BILINEAR_PLUS_ONE_X)
+        x1 = wrapped(tex->kind, x0, W) + 1 < W ? wrapped(tex->kind, x0, W) + 1 : W - 1;
+    if (v == BILINEAR_PLUS_ONE || v == BILINEAR_PLUS_ONE_Y)
+        y1 = wrapped(tex->kind, y0, H) + 1 < H ? wrapped(tex->kind, y0, H) + 1 : H - 1;
+    if (v == BILINEAR_ROWS_BY_WIDTH) {
+        y0 = llmin(wrapped(tex->kind, y0, W), H - 1);
+        y1 = llmin(wrapped(tex->kind, y1, W), H - 1);
+    }
+    const int corner = v == BILINEAR_CORNER;
+    double ws = corner || v == BILINEAR_S_SWAPPED || v == BILINEAR_S_SWAPPED_TOP ? 1 - s : s;
+    double wb = v == BILINEAR_BOTTOM_T ? t : corner || v == BILINEAR_S_SWAPPED || v == BILINEAR_S_SWAPPED_BOTTOM ? 1 - s : s;
+    double wt = corner || v == BILINEAR_T_SWAPPED ? 1 - t : t;
     vec3 (*T)(const scene_texture *, long long, long long) = v == BILINEAR_UV_SWAPPED ? texel_swapped : texel_vec3;
     vec3 top = vec3_add(vec3_scale(T(tex, x0, y0), (real)(1 - ws)), vec3_scale(T(tex, x1, y0), (real)ws));
     vec3 bottom = vec3_add(vec3_scale(T(tex, x0, y1), (real)(1 - wb)), vec3_scale(T(tex, x1, y1), (real)wb));
@@ -521,6 +561,22 @@ static void expect_bilinear_is(const scene_texture *tex, mesh_uv uv, vec3 expect
         [BILINEAR_UV_SWAPPED] = "u and v swapped: columns come from x = u W, rows from y = (1 - v) H "
                                 "(texture_image_texel(img, column, row))",
         [BILINEAR_NEAREST] = "the nearest texel: blend the four texels around (x, y)",
+        [BILINEAR_MINUS_HALF_INDEX] = "x0 = floor(x - 1/2) with s = x - x0: a half-texel shift of the index alone, "
+                                      "the fraction not taken after it; in this course texel i's centre is at x = i: "
+                                      "x0 = floor(x), s = x - x0",
+        [BILINEAR_PLUS_HALF_INDEX] = "x0 = floor(x + 1/2) with s = x - x0: nearest's + 1/2 in the index alone; the "
+                                     "left column is x0 = floor(x), s = x - x0 in [0, 1)",
+        [BILINEAR_CORNER] = "the weights from the opposite corner: T(x0, y0) weighs (1 - s)(1 - t), T(x0 + 1, y0 + 1) "
+                            "weighs s t",
+        [BILINEAR_PLUS_ONE] = "x1 = x0 + 1 (y1 = y0 + 1) from the wrapped x0: past the last texel it is outside the "
+                              "image; wrap x0 + 1 itself with texel_index (a RepeatTexture blends in the first column)",
+        [BILINEAR_PLUS_ONE_X] = "x1 = x0 + 1 from the wrapped x0: past the last column it is outside the image; wrap "
+                                "x0 + 1 itself with texel_index (a RepeatTexture blends in the first column)",
+        [BILINEAR_PLUS_ONE_Y] = "y1 = y0 + 1 from the wrapped y0: past the last row it is outside the image; wrap "
+                                "y0 + 1 itself with texel_index (a RepeatTexture blends in the first row)",
+        [BILINEAR_ROWS_BY_WIDTH] = "the rows wrapped by the width: y0 and y0 + 1 wrap by the height",
+        [BILINEAR_FRACTION_WRAPPED] = "the fractions from the wrapped indices: s = x - floor(x) and t = y - floor(y), "
+                                      "before any wrapping (the wrap only picks the texels)",
     };
     double x = coordinate(uv.u, tex->image.width), y = coordinate(1 - uv.v, tex->image.height);
     suspect_vec3 mistakes[BILINEAR_VARIANTS + 1];

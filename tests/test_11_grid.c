@@ -27,6 +27,81 @@ static const grid_knobs grid_defaults = GRID_KNOBS_DEFAULT; /* chapter 11's rend
 
 /* ---- the knobs ------------------------------------------------------------------------- */
 
+/* The counts a resolution rule gives when the cap does not bind: `cells` cells
+ * over the spanned axes' product of extents (`flat_volume` multiplies the
+ * zero extents in too), s = (cells / volume)^(1/root) (or its inverse,
+ * or the root of the cells alone over the volume), each spanned axis
+ * rounded by `rnd` (at least 1 when `at_least_one`), clamped to 2^20. */
+typedef enum { S_RIGHT, S_INVERSE, S_ROOT_OF_CELLS } s_form;
+static void resolution_as(const double extent[3], double cells, int root, s_form form, double (*rnd)(double),
+                          bool at_least_one, int n[3])
+{
+    double volume = 1;
+    int spanned = 0;
+    for (int a = 0; a < 3; a++)
+        if (extent[a] > 0)
+            volume *= extent[a], spanned++;
+    const double k = root ? root : spanned;
+    const double s = form == S_INVERSE ? pow(volume / cells, 1 / k)
+                     : form == S_ROOT_OF_CELLS ? pow(cells, 1 / k) / volume
+                                               : pow(cells / volume, 1 / k);
+    for (int a = 0; a < 3; a++)
+        n[a] = extent[a] > 0 ? (int)fmin(at_least_one ? fmax(rnd(extent[a] * s), 1) : rnd(extent[a] * s), 1 << 20) : 1;
+}
+
+/* grid_resolution(extent, surfaces, density, cap) is want[] (a case where the
+ * cap does not bind: the README's formula gives it exactly); a failure names
+ * the mistake whose counts were got. */
+static void expect_resolution(const double extent[3], long surfaces, double density, long cap, const int want[3])
+{
+    int n[3];
+    grid_resolution(extent, surfaces, density, cap, n);
+    if (n[0] == want[0] && n[1] == want[1] && n[2] == want[2])
+        return;
+    const double lambda_n = density * (double)surfaces;
+    const struct {
+        double cells;
+        int root;
+        s_form form;
+        double (*rnd)(double);
+        bool at_least_one;
+        const char *why;
+    } mistakes[] = {
+        {(double)surfaces, 0, S_RIGHT, round, true, "the density left out: about lambda N cells, the density times the "
+                                                    "number of surfaces"},
+        {density, 0, S_RIGHT, round, true, "the number of surfaces left out: about lambda N cells, the density times "
+                                           "the number of surfaces"},
+        {lambda_n, 0, S_RIGHT, floor, true, "n_a = floor(e_a s): the counts are rounded to the nearest, round(e_a s)"},
+        {lambda_n, 0, S_RIGHT, ceil, true, "n_a = ceil(e_a s): the counts are rounded to the nearest, round(e_a s)"},
+        {lambda_n, 0, S_RIGHT, round, false, "an axis whose e_a s rounds to 0 still gets one cell: n_a = max(round(e_a "
+                                             "s), 1)"},
+        {lambda_n, 3, S_RIGHT, round, true, "the cube root for a flat scene: with k spanned axes (extent above 0) s "
+                                            "is the k-th root, here the square root, not the cube root"},
+        {lambda_n, 0, S_INVERSE, round, true, "s upside down: s = (lambda N / (e_x e_y e_z))^(1/k) cells per unit of "
+                                              "length, the cells over the volume"},
+        {lambda_n, 0, S_ROOT_OF_CELLS, round, true, "s = (lambda N)^(1/k) / (e_x e_y e_z): the root is of the cells "
+                                                    "over the volume, s = (lambda N / (e_x e_y e_z))^(1/k)"},
+    };
+    const char *why = "s = (min(lambda N, cap) / product of the spanned extents)^(1/k) with k spanned axes, n_a = "
+                      "max(round(e_a s), 1), a flat axis 1";
+    if ((double)n[0] * n[1] * n[2] > 1e3 * lambda_n)
+        why = "far more cells than lambda N: the product of extents is over the spanned axes only (a flat axis's "
+              "zero extent makes s infinite)";
+    bool named = false;
+    for (size_t k = 0; k < sizeof mistakes / sizeof mistakes[0]; k++) {
+        int m[3];
+        resolution_as(extent, mistakes[k].cells, mistakes[k].root, mistakes[k].form, mistakes[k].rnd,
+                      mistakes[k].at_least_one, m);
+        if (m[0] == n[0] && m[1] == n[1] && m[2] == n[2]) {
+            why = named ? describe("%s\n    or, the same numbers: %s", why, mistakes[k].why) : mistakes[k].why;
+            named = true;
+        }
+    }
+    fail_msg("grid_resolution(extent %g x %g x %g, %ld surfaces, density %g, cap %ld)\n    expected %d x %d x %d "
+             "cells\n    got      %d x %d x %d\n    likely mistake: %s",
+             extent[0], extent[1], extent[2], surfaces, density, cap, want[0], want[1], want[2], n[0], n[1], n[2], why);
+}
+
 /* The cap, on a box 8 x 2 x 4 (volume 64) with 1000 surfaces at density 8.
  * Capped at 1000 the first try fits: s0 = (1000 / 64)^(1/3) = 2.5 gives
  * exactly 20 x 5 x 10.  Capped at 990, s0 = 2.4915 gives 20 x 5 x 10 too,
@@ -46,6 +121,9 @@ static void expect_capped_resolution(void)
                  "cells\n    got      %d x %d x %d\n    likely mistake: %s",
                  n[0], n[1], n[2],
                  (double)n[0] * n[1] * n[2] > 1000 ? "the cap: while n_x n_y n_z is above it, shrink s and round again"
+                 : (double)n[0] * n[1] * n[2] < 1000 && n[0] >= 18 && n[1] >= 4 && n[2] >= 9
+                     ? "a product equal to the cap shrunk: the cap allows n_x n_y n_z = C, so shrink only while the "
+                       "product is above it (> C, not >= C)"
                  : "s = (min(lambda N, cap) / (e_x e_y e_z))^(1/3) cells per unit, n_a = round(e_a s), and the "
                    "first try fits here");
     grid_resolution(box, 1000, 8, 990, n);
@@ -71,6 +149,14 @@ static void expect_capped_resolution(void)
 static void test_resolution(void **state)
 {
     (void)state;
+    /* 8000 cells for a box 8 x 2 x 4 (volume 64): s = 125^(1/3) = 5 cells per unit, 40 x 10 x 20 */
+    expect_resolution((const double[3]){8, 2, 4}, 1000, 8, 1L << 20, (const int[3]){40, 10, 20});
+    /* flat in y: x and z share 1024 cells, s = (1024 / 32)^(1/2) = sqrt 32 = 5.657: round(45.25) = 45 and
+     * round(22.63) = 23 */
+    expect_resolution((const double[3]){8, 0, 4}, 512, 2, 1L << 20, (const int[3]){45, 1, 23});
+    /* thin in y: s = (8000 / 0.32)^(1/3) = 29.24, e_y s = 0.29 rounds to 0, yet y is spanned: one cell;
+     * round(233.92) = 234, round(116.96) = 117 */
+    expect_resolution((const double[3]){8, 0.01, 4}, 1000, 8, 1L << 20, (const int[3]){234, 1, 117});
     rng_state = 18;
     surface_list list;
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
@@ -186,6 +272,7 @@ static void expect_range(const grid *g, vec3 lo, vec3 hi, const int *want_first,
             continue;
         const double F = f_lo, L = f_hi, right_first = clamp_cell(ceil(F) - 1, 0, n), right_last = clamp_cell(floor(L), -1, n - 1);
         const real f_lo_x = (l[a] - o[0]) / cell[0], f_hi_x = (u[a] - o[0]) / cell[0];
+        const real f_lo_xc = (l[a] - o[a]) / cell[0], f_hi_xc = (u[a] - o[a]) / cell[0]; /* x's cell size only */
         const struct {
             double first, last;
             const char *why;
@@ -208,6 +295,15 @@ static void expect_range(const grid *g, vec3 lo, vec3 hi, const int *want_first,
             {clamp_cell(ceil(L) - 1, 0, n), clamp_cell(floor(F), -1, n - 1), "box_lo and box_hi swapped"},
             {clamp_cell(ceil((double)f_lo_x) - 1, 0, n), clamp_cell(floor((double)f_hi_x), -1, n - 1),
              "the x axis's cell size or origin used for another axis: this axis's lo_a and cell_a"},
+            {clamp_cell(ceil((double)f_lo_xc) - 1, 0, n), clamp_cell(floor((double)f_hi_xc), -1, n - 1),
+             "the x axis's cell size used for another axis: f = (x - lo_a) / cell_a with this axis's cell_a"},
+            {right_first, clamp_cell(ceil(L), -1, n - 1), "last = ceil(f_hi): that is the cell after the box when "
+                                                          "f_hi is not whole; last = floor(f_hi)"},
+            {clamp_cell(floor(F), 0, n), clamp_cell(ceil(L), -1, n - 1),
+             "first = floor(f_lo), last = ceil(f_hi): ceil(f_hi) is the cell after the box when f_hi is not whole; "
+             "first = ceil(f_lo) - 1, last = floor(f_hi)"},
+            {right_first, clamp_cell(floor(F), -1, n - 1), "f_hi computed from box_lo: the last cell is floor(f_hi) "
+                                                           "with f_hi = (box_hi_a - lo_a) / cell_a"},
         };
         /* beyond an int's range the likely mistake is the conversion, whatever else the result looks like */
         const bool beyond_int = fabs(F) > 2147483647.0 || fabs(L) > 2147483647.0;
@@ -278,6 +374,126 @@ static void test_cell_range(void **state)
     }
 }
 
+/* The cells a ray through g's box visits when nothing is hit: one more than
+ * the cell planes it crosses inside the box.  False when it misses the box,
+ * or when a crossing lies within a hair of the box's entry or exit, where it
+ * may count either way (such rays are skipped). */
+static bool cells_along(const grid *g, ray r, int *cells)
+{
+    const real lo[3] = {g->lo.x, g->lo.y, g->lo.z}, cell[3] = {g->cell.x, g->cell.y, g->cell.z};
+    const real pp[3] = {r.p.x, r.p.y, r.p.z}, dd[3] = {r.d.x, r.d.y, r.d.z};
+    real t_in = 0, t_out = REAL_INFINITY;
+    for (int a = 0; a < 3; a++) {
+        real t0 = (lo[a] - pp[a]) / dd[a], t1 = (lo[a] + (real)g->n[a] * cell[a] - pp[a]) / dd[a];
+        t_in = real_fmax(t_in, real_fmin(t0, t1));
+        t_out = real_fmin(t_out, real_fmax(t0, t1));
+    }
+    if (!(t_in < t_out))
+        return false;
+    int crossings = 0;
+    for (int a = 0; a < 3; a++)
+        for (int plane = 1; plane < g->n[a]; plane++) {
+            real t = (lo[a] + (real)plane * cell[a] - pp[a]) / dd[a];
+            if (t > t_in && t < t_out)
+                crossings++;
+            if (real_abs(t - t_in) < (real)1e-4 * t_in || real_abs(t - t_out) < (real)1e-4 * t_out)
+                return false;
+        }
+    *cells = crossings + 1;
+    return true;
+}
+
+/* The march of ray r (`what` names it) through g, which it crosses without
+ * hitting anything, visits `cells` cells; a failure names dda_step's mistakes. */
+static void expect_march_cells(const grid *g, ray r, const char *what, int cells)
+{
+    grid_counts counts = {0, 0};
+    hit_record hit;
+    assert_false(grid_intersect_counted(g, r, 0, REAL_INFINITY, &hit, &counts));
+    if (counts.cells != (uint64_t)cells)
+        fail_msg("grid_intersect_counted(%s: p = (%.17g, %.17g, %.17g), d = (%.17g, %.17g, %.17g)) through a grid of %d "
+                 "x %d x %d empty cells\n    expected %d cells visited (%d plane crossings + 1)\n"
+                 "    got      %llu\n    likely mistake: %s",
+                 what, (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z,
+                 g->n[0], g->n[1], g->n[2], cells, cells - 1, (unsigned long long)counts.cells,
+                 counts.cells > (uint64_t)cells
+                     ? "dda_step goes on past the grid (the last cell is n_a - 1: stop when i_a < 0 or i_a >= "
+                       "n_a), or next_a comes from the plane the ray just crossed (for step_a > 0 the far "
+                       "boundary is plane i_a + 1, for step_a < 0 plane i_a)"
+                     : "dda_step stops too early (i_a = 0 and i_a = n_a - 1 are inside the grid), or next_a "
+                       "comes from the wrong plane (for step_a > 0 plane i_a + 1, for step_a < 0 plane i_a) or "
+                       "is not updated");
+}
+
+/* The entry's closed slabs and slack, by the cells visited (at least one):
+ * a ray along x in the plane of the box's face y = hi_y is inside that
+ * slab (lo_a <= p_a <= hi_a); a ray along (1, -1, 0) passing the box's
+ * edge x = hi_x, y = hi_y outside by half the reach of box_ray_slack (it
+ * leaves x's slab at t = 2, enters y's at t = 2 + reach / 2: the gap is
+ * far more than the roundings of these crossings, far less than the two
+ * slacks) enters the widened box: the march errs towards a cell too many. */
+static void expect_entry_edges(const grid *g)
+{
+    const ray on_face = {{g->lo.x - 1, g->hi.y, 0}, {1, 0, 0}};
+    real inv_d[3], slack[3];
+    const real reach = box_ray_slack((box){g->lo, g->hi}, (ray){{g->hi.x - 2, g->hi.y + 2, 0}, {1, -1, 0}}, inv_d, slack);
+    const ray past_edge = {{g->hi.x - 2, g->hi.y + 2 + reach / 2, 0}, {1, -1, 0}};
+    for (int k = 0; k < 2; k++) {
+        const ray r = k ? past_edge : on_face;
+        grid_counts counts = {0, 0};
+        hit_record hit;
+        assert_false(grid_intersect_counted(g, r, 0, REAL_INFINITY, &hit, &counts));
+        if (counts.cells == 0)
+            fail_msg("grid_intersect_counted(ray from (%.17g, %.17g, %.17g) along (%g, %g, 0), %s)\n    expected at "
+                     "least 1 cell visited\n    got      0\n    likely mistake: %s",
+                     (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y,
+                     k ? "passing the box's edge x = hi_x, y = hi_y outside by half the reach of the slack"
+                       : "in the plane of the box's face y = hi_y",
+                     k ? "enter without the slack (or with it taken inwards): each entering t is lowered and each "
+                         "leaving t raised by its axis's slack_a, so that a ray within rounding of the box's edge "
+                         "still visits its cells (the march errs towards a cell too many, never one too few)"
+                       : "enter: a ray with d_a = 0 on a face of axis a is inside that slab: lo_a <= p_a <= hi_a, "
+                         "the faces included");
+    }
+}
+
+/* The entry: a ray that crosses each slab, but never all three at once,
+ * passes beside the box's edge and visits no cell; a ray from outside with
+ * every component negative enters the box (through the high faces). */
+static void expect_entry(const grid *g)
+{
+    /* in the plane near z = 0 along x + y = 8: inside x's slab for t in [7, 12], y's for t in [3, 6] */
+    const ray beside = {{10, -2, (real)-0.5}, {-1, 1, (real)0.05}};
+    grid_counts counts = {0, 0};
+    hit_record hit;
+    bool found = grid_intersect_counted(g, beside, 0, REAL_INFINITY, &hit, &counts);
+    if (found || counts.cells != 0)
+        fail_msg("grid_intersect_counted(ray from (10, -2, -0.5) along (-1, 1, 0.05), beside the box's edge x = 3, y = "
+                 "4: inside the slab of x for t in [7, 12], of y for t in [3, 6], never both)\n    expected no hit "
+                 "and 0 cells visited\n    got      %s, %llu cells\n    likely mistake: enter: the ray is inside the "
+                 "box only where it is inside all three slabs at once: *t0 = max(*t0, entering t of each axis), *t1 = "
+                 "min(*t1, leaving t of each axis), and it misses the box when *t0 > *t1 (each axis narrows the "
+                 "window, none overwrites it)",
+                 found ? "a hit" : "no hit", (unsigned long long)counts.cells);
+    const vec3 target = {(real)0.37, (real)2.61, (real)0.13}; /* inside the box [-2, 3] x [1, 4] x [-1, 1] */
+    const vec3 from = vec3_add(target, vec3_make(14, 11, 6));
+    const ray down = {from, vec3_sub(target, from)};
+    int cells = 0;
+    assert_true(cells_along(g, down, &cells));
+    counts = (grid_counts){0, 0};
+    assert_false(grid_intersect_counted(g, down, 0, REAL_INFINITY, &hit, &counts));
+    if (counts.cells == 0)
+        fail_msg("grid_intersect_counted(ray from (%.17g, %.17g, %.17g) along (%.17g, %.17g, %.17g), every component "
+                 "negative, through the grid's box)\n    expected %d cells visited\n    got      0 (the ray missed "
+                 "the box)\n    likely mistake: enter: for d_a < 0 the ray enters the slab at hi_a and leaves it at "
+                 "lo_a; the entering t is the smaller of (lo_a - p_a) inv_d_a and (hi_a - p_a) inv_d_a (take the "
+                 "min and the max, or swap them when d_a < 0)",
+                 (double)down.p.x, (double)down.p.y, (double)down.p.z, (double)down.d.x, (double)down.d.y,
+                 (double)down.d.z, cells);
+    expect_march_cells(g, down, "ray with every component negative", cells);
+    expect_entry_edges(g);
+}
+
 /* dda_step: the cells a ray visits, counted against the plane crossings:
  * a ray through the whole grid that hits nothing visits one cell more than
  * the cell planes it crosses inside the grid's box. */
@@ -294,53 +510,17 @@ static void test_dda_cells(void **state)
     grid_options opt = {.density = 100, .max_cells = 1000};
     build_grid(&g, &list, opt);
     assert_true(g.n[0] > 3 && g.n[1] > 3 && g.n[2] > 1);
-    const real lo[3] = {g.lo.x, g.lo.y, g.lo.z}, cell[3] = {g.cell.x, g.cell.y, g.cell.z};
+    expect_entry(&g);
     int checked = 0;
     for (int k = 0; k < 3000; k++) {
         /* from outside, through the middle part of the box (missing the corner spheres) */
         vec3 target = uniform_vec(vec3_make(-1, 2, (real)-0.5), vec3_make(2, 3, (real)0.5));
         vec3 p = vec3_add(target, vec3_scale(random_direction(), 20));
         ray r = {p, vec3_sub(target, p)};
-        const real pp[3] = {p.x, p.y, p.z}, dd[3] = {r.d.x, r.d.y, r.d.z};
-        /* where the ray is inside the box, and the planes it crosses there */
-        real t_in = 0, t_out = REAL_INFINITY;
-        for (int a = 0; a < 3; a++) {
-            real t0 = (lo[a] - pp[a]) / dd[a], t1 = (lo[a] + (real)g.n[a] * cell[a] - pp[a]) / dd[a];
-            t_in = real_fmax(t_in, real_fmin(t0, t1));
-            t_out = real_fmin(t_out, real_fmax(t0, t1));
-        }
-        if (!(t_in < t_out))
+        int cells;
+        if (!cells_along(&g, r, &cells))
             continue;
-        int crossings = 0;
-        bool near_corner = false;
-        for (int a = 0; a < 3; a++)
-            for (int plane = 1; plane < g.n[a]; plane++) {
-                real t = (lo[a] + (real)plane * cell[a] - pp[a]) / dd[a];
-                if (t > t_in && t < t_out)
-                    crossings++;
-                /* a crossing within a hair of the box's entry or exit, or of
-                 * another axis's crossing, may count either way: skip such rays */
-                if (real_abs(t - t_in) < (real)1e-4 * t_in || real_abs(t - t_out) < (real)1e-4 * t_out)
-                    near_corner = true;
-            }
-        if (near_corner)
-            continue;
-        grid_counts counts = {0, 0};
-        hit_record hit;
-        assert_false(grid_intersect_counted(&g, r, 0, REAL_INFINITY, &hit, &counts));
-        if (counts.cells != (uint64_t)crossings + 1)
-            fail_msg("grid_intersect_counted(ray %d: p = (%.17g, %.17g, %.17g), d = (%.17g, %.17g, %.17g)) through a "
-                     "grid of %d x %d x %d empty cells\n    expected %d cells visited (%d plane crossings + 1)\n"
-                     "    got      %llu\n    likely mistake: %s",
-                     k, (double)p.x, (double)p.y, (double)p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z, g.n[0],
-                     g.n[1], g.n[2], crossings + 1, crossings, (unsigned long long)counts.cells,
-                     counts.cells > (uint64_t)crossings + 1
-                         ? "dda_step goes on past the grid (the last cell is n_a - 1: stop when i_a < 0 or i_a >= "
-                           "n_a), or next_a comes from the plane the ray just crossed (for step_a > 0 the far "
-                           "boundary is plane i_a + 1, for step_a < 0 plane i_a)"
-                         : "dda_step stops too early (i_a = 0 and i_a = n_a - 1 are inside the grid), or next_a "
-                           "comes from the wrong plane (for step_a > 0 plane i_a + 1, for step_a < 0 plane i_a) or "
-                           "is not updated");
+        expect_march_cells(&g, r, describe("ray %d", k), cells);
         checked++;
     }
     assert_true(checked > 2000);
@@ -393,12 +573,17 @@ static void test_dda_axis_steps(void **state)
                 if (counts.cells == 0)
                     fail_msg("grid_intersect_counted(ray from sphere %d's centre, inside the grid's box, along "
                              "%c%c, t_min = %g)\n    expected sphere %d, at least 1 cell visited\n    got      %s, "
-                             "0 cells\n    likely mistake: enter: a component d_a = +0 or -0 (inv_d_a = 0, here "
+                             "0 cells\n    likely mistake: %senter: a component d_a = +0 or -0 (inv_d_a = 0, here "
                              "along the two axes other than %c) never crosses a face of axis a; the ray stays inside "
                              "that slab (lo_a <= p_a <= hi_a) and the axis must not narrow [t0, t1] ((lo_a - p_a) "
                              "inv_d_a = 0 is no crossing)",
                              s, sign > 0 ? '+' : '-', "xyz"[a], (double)(2 * radius), want.surface,
-                             fg ? "a hit" : "no hit", "xyz"[a]);
+                             fg ? "a hit" : "no hit",
+                             sign < 0 ? "enter: along a negative axis the ray enters the slab at hi_a and leaves it "
+                                        "at lo_a, so the entering t is the smaller of the two crossings (take the min "
+                                        "and the max); or "
+                                      : "",
+                             "xyz"[a]);
                 if (!same_hit(fw, &want, fg, &got))
                     fail_msg("grid_intersect(ray from sphere %d's centre (%.17g, %.17g, %.17g) along %c%c, t_min = "
                              "%g) through a grid of %d x %d x %d cells\n    expected sphere %d at t = %.17g\n"
@@ -496,6 +681,92 @@ static void test_dda_no_accumulation(void **state)
     }
 }
 
+/* The march of r through the grid of `list` (freed here), which has g's
+ * cells along x; the linear scan's hit must be surface `expected`. */
+static bool march_in_row(surface_list *list, const grid *g, ray r, int expected, hit_record *want, hit_record *got,
+                         grid_counts *counts)
+{
+    grid h;
+    build_grid(&h, list, grid_default_options());
+    assert_true(h.n[0] == g->n[0] && h.lo.x == g->lo.x && h.cell.x == g->cell.x); /* the same cells */
+    assert_true(surfaces_intersect(list, r, 0, REAL_INFINITY, want) && want->surface == expected);
+    *counts = (grid_counts){0, 0};
+    bool found = grid_intersect_counted(&h, r, 0, REAL_INFINITY, got, counts);
+    grid_free(&h);
+    surface_list_free(list);
+    return found;
+}
+
+/* The stop rule tests the far boundary of the cell being visited, not the
+ * next cell's: in the row of cells of `g` (built from 10 surfaces in the
+ * box of row_of_cells, as here), a triangle A listed from cell 1 on is hit a
+ * fraction 0.7 into cell 4, a small sphere B a fraction 0.3 into it (B lies
+ * in cell 4 alone).  Visiting cell 3 the march knows A's hit, beyond cell
+ * 3's boundary but before cell 4's: it must go on to cell 4 and find B. */
+static void expect_stop_in_this_cell(const grid *g)
+{
+    const real lo = g->lo.x, cell = g->cell.x, b = lo + 4 * cell; /* cell 3's far boundary */
+    const real x_A = b + (real)0.7 * cell, x_B = b + (real)0.3 * cell;
+    surface_list list;
+    row_of_cells(&list, TRIANGLE_WATERTIGHT, false);
+    /* A: from x = 1.2 at z = 0 to x = 2 x_A - 1.2 at z = 1, hit at y = z = 1/2 at x_A */
+    surface_list_add_triangle(&list, (triangle){{(real)1.2, 0, 0}, {(real)1.2, 1, 0}, {2 * x_A - (real)1.2, (real)0.5, 1}},
+                              0, 8);
+    surface_list_add_sphere(&list, (sphere){{x_B + (real)0.1 * cell, (real)0.5, (real)0.5}, (real)0.1 * cell}, 0, 9);
+    hit_record want, got;
+    grid_counts counts;
+    bool found = march_in_row(&list, g, (ray){{-1, (real)0.5, (real)0.5}, {1, 0, 0}}, 9, &want, &got, &counts);
+    if (!same_hit(true, &want, found, &got) || counts.cells != 5)
+        fail_msg("grid_intersect_counted(ray along +x through a row of %d cells of %.17g: a triangle hit at x = %.17g "
+                 "and a sphere hit at x = %.17g, both in cell 4)\n    expected sphere 9 at t = %.17g, 5 cells "
+                 "visited\n    got      %s %d at t = %.17g, %llu cells\n    likely mistake: %s",
+                 g->n[0], (double)cell, (double)x_A, (double)x_B, (double)want.t, found ? "surface" : "no hit, surface",
+                 found ? got.surface : -1, found ? (double)got.t : 0.0, (unsigned long long)counts.cells,
+                 found && got.surface == 8 && counts.cells == 4
+                     ? "the stop rule tested the next cell's far boundary: the march ends once the best hit lies "
+                       "before the far boundary of the cell being visited (next_a of this cell, minus the slack)"
+                 : found && got.surface == 8 ? "the march stopped at the first cell holding a hit: a hit counts only "
+                                               "once it lies in the cell being visited"
+                                             : "the march ends in the cell that holds the best hit, cell 4 here");
+}
+
+/* The stop rule allows for the boundary's slack: in the row of cells of `g`
+ * (10 surfaces in row_of_cells's box, as here), a triangle across the ray
+ * along +x is hit half a slack before cell 3's far boundary (slack[0] of
+ * box_ray_slack, 176 REAL_EPSILON here, far more than the few roundings of
+ * the hit's t and of the crossing, far less than the margin, so the
+ * triangle is listed in cells 3 and 4).  Within the slack the hit may be
+ * the rounding of a point beyond the boundary: the march visits cell 4 too,
+ * 5 cells; a rule without the slack, or with it added, stops after 4. */
+static void expect_stop_slack(const grid *g)
+{
+    const ray r = {{-1, (real)0.5, (real)0.5}, {1, 0, 0}};
+    real inv_d[3], slack[3];
+    (void)box_ray_slack((box){g->lo, g->hi}, r, inv_d, slack);
+    const real next = (g->lo.x + 4 * g->cell.x - r.p.x) * inv_d[0]; /* as the march's crossing() */
+    const real x = r.p.x + (next - slack[0] / 2);
+    surface_list list;
+    row_of_cells(&list, TRIANGLE_WATERTIGHT, false);
+    surface_list_add_triangle(&list, (triangle){{x, (real)0.3, (real)0.3}, {x, (real)0.8, (real)0.4}, {x, (real)0.4, (real)0.8}},
+                              0, 8);
+    surface_list_add_sphere(&list, (sphere){{9, (real)0.1, (real)0.1}, (real)0.01}, 0, 9); /* off the ray */
+    hit_record want, got;
+    grid_counts counts;
+    bool found = march_in_row(&list, g, r, 8, &want, &got, &counts);
+    if (!same_hit(true, &want, found, &got) || counts.cells != 5)
+        fail_msg("grid_intersect_counted(ray along +x through a row of %d cells: a triangle hit at t = %.17g, half the "
+                 "slack %.3g before cell 3's far boundary at t = %.17g)\n    expected the triangle at t = %.17g, 5 "
+                 "cells visited (cell 4 too)\n    got      %s %d at t = %.17g, %llu cells\n    likely mistake: %s",
+                 g->n[0], (double)want.t, (double)slack[0], (double)next, (double)want.t,
+                 found ? "surface" : "no hit, surface", found ? got.surface : -1, found ? (double)got.t : 0.0,
+                 (unsigned long long)counts.cells,
+                 counts.cells == 4 ? "the stop rule without the slack (or with it added): a hit within the slack "
+                                     "of the boundary may be a point beyond it, rounded; stop only once t_best <= "
+                                     "next_a - slack_a"
+                                   : "the march ends in the cell that holds the best hit, allowing for the slack: "
+                                     "t_best <= next_a - slack_a");
+}
+
 /* The stop rule: corner spheres fix the grid's box [0, 10] x [0, 1] x [0, 1]
  * (a row of cells along x), a big tilted triangle A spans x = 1.2 .. 8.8 (so
  * it is listed from cell 1 on) and is hit at x = 5, and a small sphere B is
@@ -525,7 +796,10 @@ static void test_stop_rule(void **state)
                  found && got.surface == 8 ? "the march stopped at the first cell holding a hit (the triangle, listed "
                                              "from cell 1 on, is hit at x = 5); a hit counts only once it lies in "
                                              "the cell being visited"
-                                           : "the ray must enter the box at x = 0 and march to the sphere's cell");
+                                           : "the march ended before the sphere's cell: it ends once the best hit "
+                                             "so far lies in the cell being visited, t_best <= next_a - slack_a for "
+                                             "the axis a the cell ends by (with no hit yet, t_best is t_max), or "
+                                             "at the grid's end");
     if (counts.cells != cells)
         fail_msg("grid_intersect_counted(ray along +x, hit at x = 2.9 in cell %llu of %d)\n    expected %llu cells "
                  "visited\n    got      %llu\n    likely mistake: %s",
@@ -533,6 +807,8 @@ static void test_stop_rule(void **state)
                  counts.cells > cells ? "the march goes on after the best hit lies in the cell being visited "
                                         "(stop once t_best <= the cell's far boundary)"
                                       : "the march ends before the hit's cell");
+    expect_stop_in_this_cell(&g);
+    expect_stop_slack(&g);
     /* beside the box (y = 2), parallel to x: no slab of y is ever crossed */
     counts = (grid_counts){0, 0};
     found = grid_intersect_counted(&g, (ray){{-1, 2, (real)0.5}, {1, 0, 0}}, 0, REAL_INFINITY, &got, &counts);
