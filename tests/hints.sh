@@ -422,6 +422,9 @@ plant "hint: the stop rule at the next cell's boundary" 11_grid grid_march.c \
 plant "hint: the march stops at the first hit" 11_grid grid_march.c \
     's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best >= 0)|' \
     test_stop_rule "" "stopped at the first cell holding a hit"
+plant "hint: the march waits for a hit before it stops" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best >= 0 \&\& s.best_t <= m.next[a] - slack[a])|' \
+    test_stop_rule "" "the stop rule waits for a hit"
 plant "hint: the march never stops at a hit" 11_grid grid_march.c \
     's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (0)|' \
     test_stop_rule "" "the march goes on after the best hit"

@@ -807,6 +807,21 @@ static void test_stop_rule(void **state)
                  counts.cells > cells ? "the march goes on after the best hit lies in the cell being visited "
                                         "(stop once t_best <= the cell's far boundary)"
                                       : "the march ends before the hit's cell");
+    /* the window ends at x = 2 (t = 3), before any surface: no hit, and the march ends in the window's last
+     * cell, as t_best starts at t_max; a rule that waits for a hit goes on to the grid's end */
+    counts = (grid_counts){0, 0};
+    found = grid_intersect_counted(&g, r, 0, 3, &got, &counts);
+    const uint64_t window_cells = (uint64_t)((2 - g.lo.x) / g.cell.x) + 1;
+    if (found || counts.cells != window_cells)
+        fail_msg("grid_intersect_counted(ray along +x from x = -1 with the window (0, 3), which ends at x = 2 in cell "
+                 "%llu of %d, before any surface)\n    expected no hit, %llu cells visited\n    got      %s, %llu "
+                 "cells\n    likely mistake: %s",
+                 (unsigned long long)(window_cells - 1), g.n[0], (unsigned long long)window_cells,
+                 found ? "a hit" : "no hit", (unsigned long long)counts.cells,
+                 counts.cells > window_cells ? "the stop rule waits for a hit: with no hit yet t_best is t_max, and "
+                                               "the march ends in the cell where the window ends (a shadow ray that "
+                                               "reaches its light stops there)"
+                                             : "the march ends in the cell where the window ends");
     expect_stop_in_this_cell(&g);
     expect_stop_slack(&g);
     /* beside the box (y = 2), parallel to x: no slab of y is ever crossed */
