@@ -122,6 +122,13 @@ plant "hint: L_d without the light's intensity" 05_lambert lambert.c \
 plant "hint: r^2 taken as the length" 05_lambert lambert.c \
     's|vec3_length_squared(to_light)|vec3_length(to_light)|' \
     test_irradiance_facing "" "r\^2 taken as the length"
+# l from the light to the point, and the cosine not clamped: each test that reads them names them.
+plant "hint: l points away from the light (the light behind)" 05_lambert lambert.c \
+    's|vec3 l = vec3_scale(to_light, 1 / real_sqrt(r2));|vec3 l = vec3_scale(to_light, -1 / real_sqrt(r2));|' \
+    test_light_behind "" "l points away from the light"
+plant "hint: the cosine not clamped (the built-in scene)" 05_lambert lambert.c \
+    's|real cos_theta = real_fmax(0, vec3_dot(n, l));|real cos_theta = vec3_dot(n, l);|' \
+    test_builtin_scene_rays "" "the cosine not clamped"
 # The shadow ray built by hand from the hit point: acne, and spawn_ray_to named.
 plant "hint: a shadow ray from the hit point itself" 06_shadows shadow.c \
     's|ray shadow = spawn_ray_to(sp, light_pos, policy, &t_max);|(void)policy; t_max = 1; ray shadow = {sp->hit.point, vec3_sub(light_pos, sp->hit.point)};|' \

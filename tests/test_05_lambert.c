@@ -109,12 +109,29 @@ static void test_inverse_square(void **state)
     color k_d = {0.5, 0.1, 0.9};
     scene_light near = {.position = vec3_add(point, l), .intensity = {4, 4, 4}};
     real at_one = lambert(k_d, point, n, &near).b; /* 0.9 * 4 * cos 45 / 1 */
-    assert_close(0.9 * 4 * sqrt(0.5), at_one, FAR_TOL(3, 1));
+    const suspect s1[] = {
+        {0, "nothing from a light at 45 degrees in front: l points from the point towards the light, "
+            "light.pos - point, and the cosine is n . l"},
+        {0.9 * 4, "no cosine: the irradiance falls with cos(theta) = n . l"},
+    };
+    assert_close_why(0.9 * 4 * sqrt(0.5), at_one, FAR_TOL(3, 1),
+                     "lambert(k_d.b = 0.9, I = 4, light 1 away at 45 degrees from n): blue",
+                     "L_d = k_d max(0, n . l) I / r^2", s1, sizeof s1 / sizeof s1[0]);
     const real distances[] = {2, 10, 1000};
     for (int k = 0; k < 3; k++) {
         scene_light far = {.position = vec3_add(point, vec3_scale(l, distances[k])), .intensity = {4, 4, 4}};
-        assert_close(at_one / (distances[k] * distances[k]), lambert(k_d, point, n, &far).b,
-                     FAR_TOL(at_one / (distances[k] * distances[k]), 1));
+        const double r = (double)distances[k];
+        const suspect sr[] = {
+            {at_one / r, "divided by r, not r^2 (the light spreads over a sphere of area 4 pi r^2), or l not "
+                         "normalized"},
+            {at_one, "no falloff: divide by r^2, the squared distance to the light"},
+            {at_one / (r * r * r), "divided by r^3: l = (light.pos - point) / r is a unit vector, and only I / r^2 "
+                                   "falls with the distance"},
+            {0, "nothing from a light in front: l points from the point towards the light"},
+        };
+        assert_close_why(at_one / (r * r), lambert(k_d, point, n, &far).b, FAR_TOL(at_one / (r * r), 1),
+                         describe("lambert(the same light moved %g times as far along l): blue", r),
+                         "1 / r^2 of the value at r = 1", sr, sizeof sr / sizeof sr[0]);
     }
 }
 
@@ -127,10 +144,22 @@ static void test_light_behind(void **state)
     scene_light light = {.position = vec3_sub(point, vec3_scale(n, 2)), .intensity = {8, 8, 8}};
     color k_d = {0.3, 0.3, 0.3};
     color L = lambert(k_d, point, n, &light);
-    assert_close(0, L.r, 0);
-    assert_close(0, L.g, 0);
-    assert_close(0, L.b, 0);
-    assert_close(0.3 * 8 / 4, lambert(k_d, point, vec3_neg(n), &light).r, FAR_TOL(1, 2));
+    const suspect sb[] = {
+        {-0.3 * 8 / 4, "negative: clamp the cosine, max(0, n . l): a light behind the surface gives nothing"},
+        {0.3 * 8 / 4, "l points away from the light (point - light.pos), or |n . l|: the light is behind the "
+                      "surface and gives nothing"},
+    };
+    const char *in = "lambert(k_d = 0.3, I = 8, light 2 straight behind the surface, against n)";
+    assert_close_why(0, L.r, 0, describe("%s: red", in), "max(0, n . l) = 0", sb, sizeof sb / sizeof sb[0]);
+    assert_close_why(0, L.g, 0, describe("%s: green", in), "max(0, n . l) = 0", sb, sizeof sb / sizeof sb[0]);
+    assert_close_why(0, L.b, 0, describe("%s: blue", in), "max(0, n . l) = 0", sb, sizeof sb / sizeof sb[0]);
+    const suspect sf[] = {
+        {0, "nothing with the normal turned towards the light: l points from the point towards the light"},
+        {-0.3 * 8 / 4, "negative with the light in front: l points away from the light, or n . l taken with -n"},
+    };
+    assert_close_why(0.3 * 8 / 4, lambert(k_d, point, vec3_neg(n), &light).r, FAR_TOL(1, 2),
+                     "lambert(the same light, the normal turned to face it): red", "k_d I / r^2 = 0.3 * 8 / 4", sf,
+                     sizeof sf / sizeof sf[0]);
 }
 
 /* ---- the shading normal, turned towards the viewer ------------------------------------------ */
@@ -271,8 +300,16 @@ static void test_builtin_scene_rays(void **state)
     render_stats stats = render_image(&img, shading_sample, view, &opt);
     assert_int_equal(24 * 16 * 4, stats.by_kind[RAY_EYE]);
     assert_int_equal(stats.by_kind[RAY_EYE], stats.rays);
-    for (int k = 0; k < 24 * 16; k++)
-        assert_true(img.pixels[k].r >= 0 && isfinite(img.pixels[k].r));
+    for (int k = 0; k < 24 * 16; k++) {
+        color c = img.pixels[k];
+        if (!(c.r >= 0 && c.g >= 0 && c.b >= 0 && isfinite(c.r) && isfinite(c.g) && isfinite(c.b)))
+            fail_msg("the built-in scene at 24 x 16, 4 samples: pixel (%d, %d) is (%g, %g, %g)\n    expected a "
+                     "finite radiance >= 0 in every channel\n    likely mistake: %s",
+                     k % 24, k / 24, (double)c.r, (double)c.g, (double)c.b,
+                     isfinite(c.r) && isfinite(c.g) && isfinite(c.b)
+                         ? "the cosine not clamped: a light behind the surface gives nothing, max(0, n . l)"
+                         : "a division that can be by zero, or l not normalized by the length of light.pos - point");
+    }
     image_free(&img);
     shading_release(view);
     scene_free(&desc);
