@@ -161,23 +161,27 @@ static inline bool dda_leap(const fast_grid *g, dda *m, int side, const ray_fram
  * boundary of its axis: the ray stays in one slab, or misses the box. */
 static inline void frame_of(ray_frame *f, const fast_grid *g, ray r)
 {
+    /* in locals first, stored once at the end: the compiler cannot keep
+     * fields of *f in registers across the stores into it */
     const real p[3] = {r.p.x, r.p.y, r.p.z}, d[3] = {r.d.x, r.d.y, r.d.z};
-    f->reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
-    f->d_max = vec3_max_abs(r.d);
+    const real reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
+    real inv_d[3];
+    long octant = 0;
     for (int a = 0; a < 3; a++) {
+        inv_d[a] = 1 / d[a];
+        f->parallel[a] = !isfinite(inv_d[a]); /* d_a = +0 or -0, or tiny */
+        inv_d[a] = f->parallel[a] ? 0 : inv_d[a];
         f->p[a] = p[a];
         f->d[a] = d[a];
-        f->inv_d[a] = 1 / d[a];
-        f->parallel[a] = !isfinite(f->inv_d[a]); /* d_a = +0 or -0, or tiny */
-        if (f->parallel[a])
-            f->inv_d[a] = 0;
-        f->slack[a] = f->reach * real_abs(f->inv_d[a]);
+        f->inv_d[a] = inv_d[a];
+        f->slack[a] = reach * real_abs(inv_d[a]);
+        f->step[a] = (inv_d[a] > 0) - (inv_d[a] < 0);
+        f->ahead[a] = inv_d[a] > 0;
+        octant |= (long)(inv_d[a] < 0) << a;
     }
-    f->octant = (f->inv_d[0] < 0) | (f->inv_d[1] < 0) << 1 | (f->inv_d[2] < 0) << 2;
-    for (int a = 0; a < 3; a++) {
-        f->step[a] = f->inv_d[a] > 0 ? 1 : f->inv_d[a] < 0 ? -1 : 0;
-        f->ahead[a] = f->step[a] > 0;
-    }
+    f->reach = reach;
+    f->d_max = vec3_max_abs(r.d);
+    f->octant = octant;
 }
 
 /* Where the ray enters the grid's box: the slabs lo_a <= p_a + t d_a <= hi_a
