@@ -192,7 +192,12 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
 {
     const real *lo = g->lo_a, *hi = g->hi_a;
     real t0 = t_min, t1 = upper;
-    for (int a = 0; a < 3; a++) {
+    /* A ray from inside the box with the window (0, upper), as shadow rays
+     * are: every slab's near side is at t <= 0 and its far side at t >= 0, so
+     * the loop below would leave t0 = 0 <= t1.  It is skipped. */
+    const bool inside = t_min == 0 && upper >= 0 && f->p[0] >= lo[0] && f->p[0] <= hi[0] && f->p[1] >= lo[1] &&
+                        f->p[1] <= hi[1] && f->p[2] >= lo[2] && f->p[2] <= hi[2];
+    for (int a = 0; a < 3 && !inside; a++) {
         if (f->parallel[a]) {
             if (!(f->p[a] >= lo[a] && f->p[a] <= hi[a]))
                 return false;
@@ -209,7 +214,7 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
         t0 = near > t0 ? near : t0; /* fmax and fmin, inline; a NaN is passed over as they do */
         t1 = far < t1 ? far : t1;
     }
-    if (!(t0 <= t1)) /* misses the box, or the window ends before it */
+    if (!inside && !(t0 <= t1)) /* misses the box, or the window ends before it */
         return false;
     const real back = f->reach + 16 * REAL_EPSILON * real_abs(t0) * f->d_max;
     for (int a = 0; a < 3; a++) {
