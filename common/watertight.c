@@ -1,6 +1,8 @@
 /* watertight.c - Woop, Benthin and Wald's watertight ray/triangle test (2013). */
 #include "watertight.h"
 
+#include <stddef.h>
+
 #include "crossing.h"
 
 /* v's coordinate along axis k (0: x, 1: y, 2: z), read from an array rather
@@ -9,6 +11,16 @@ static inline real component(vec3 v, int k)
 {
     const real c[3] = {v.x, v.y, v.z};
     return c[k];
+}
+
+/* The coordinate along axis k of the vector stored at *v, read where it is
+ * stored: the test reads nine of them per triangle, and `component` of a copy
+ * would store the copy first. */
+static inline real coordinate(const vec3 *v, int k)
+{
+    _Static_assert(offsetof(vec3, y) == sizeof(real) && offsetof(vec3, z) == 2 * sizeof(real),
+                   "x, y and z follow each other");
+    return *(const real *)((const char *)v + (size_t)k * sizeof(real));
 }
 
 /* The axis along which |d| is largest. */
@@ -35,22 +47,23 @@ bool watertight_ray_make(ray r, watertight_ray *wr)
     /* The shear that maps d to (0, 0, 1): x' = x - S_x z, y' = y - S_y z, z' = S_z z. */
     real sx = component(r.d, kx) / dz, sy = component(r.d, ky) / dz, sz = 1 / dz;
     /* end snippet */
-    *wr = (watertight_ray){.r = r, .kx = kx, .ky = ky, .kz = kz, .sx = sx, .sy = sy, .sz = sz};
+    *wr = (watertight_ray){.r = r, .kx = kx, .ky = ky, .kz = kz, .sx = sx, .sy = sy, .sz = sz,
+                           .p = {component(r.p, kx), component(r.p, ky), component(r.p, kz)}};
     return true;
 }
 
 bool watertight_hit(const watertight_ray *wr, const vec3 *va, const vec3 *vb, const vec3 *vc, real t_min,
                     real t_max, real out[3])
 {
-    const ray r = wr->r;
     const int kx = wr->kx, ky = wr->ky, kz = wr->kz;
-    const real sx = wr->sx, sy = wr->sy, sz = wr->sz;
+    const real sx = wr->sx, sy = wr->sy, sz = wr->sz, *p = wr->p;
     /* snippet: watertight_vertices */
-    /* 2. The vertices relative to p, sheared: the ray is now the positive z axis. */
-    vec3 a = vec3_sub(*va, r.p), b = vec3_sub(*vb, r.p), c = vec3_sub(*vc, r.p);
-    real ax = component(a, kx) - sx * component(a, kz), ay = component(a, ky) - sy * component(a, kz);
-    real bx = component(b, kx) - sx * component(b, kz), by = component(b, ky) - sy * component(b, kz);
-    real cx = component(c, kx) - sx * component(c, kz), cy = component(c, ky) - sy * component(c, kz);
+    /* 2. The vertices relative to p (p[0], p[1], p[2]: its coordinates along
+     *    kx, ky, kz), sheared: the ray is now the positive z axis. */
+    real za = coordinate(va, kz) - p[2], zb = coordinate(vb, kz) - p[2], zc = coordinate(vc, kz) - p[2];
+    real ax = (coordinate(va, kx) - p[0]) - sx * za, ay = (coordinate(va, ky) - p[1]) - sy * za;
+    real bx = (coordinate(vb, kx) - p[0]) - sx * zb, by = (coordinate(vb, ky) - p[1]) - sy * zb;
+    real cx = (coordinate(vc, kx) - p[0]) - sx * zc, cy = (coordinate(vc, ky) - p[1]) - sy * zc;
     /* end snippet */
 
     /* snippet: watertight_edges */
@@ -81,13 +94,13 @@ bool watertight_hit(const watertight_ray *wr, const vec3 *va, const vec3 *vb, co
     real det = u + v + w;
     if (det == 0 || !isfinite(det))
         return false;
-    real az = sz * component(a, kz), bz = sz * component(b, kz), cz = sz * component(c, kz);
+    real az = sz * za, bz = sz * zb, cz = sz * zc;
     real t = (u * az + v * bz + w * cz) / det;
     if (!(t > t_min && t < t_max))
         return false;
     /* Rounding leaves det a sliver of either sign where it should be 0: only
      * a crossing that the data decide counts (crossing.h); only hits pay. */
-    if (!triangle_crossing_certain(va, vb, vc, r))
+    if (!triangle_crossing_certain(va, vb, vc, wr->r))
         return false;
     out[0] = t;
     out[1] = v / det;

@@ -21,6 +21,7 @@ typedef struct {
     ray r;
     int kx, ky, kz;  /* the axes that become x, y and z in ray space */
     real sx, sy, sz; /* the shear: x' = x - S_x z, y' = y - S_y z, z' = S_z z */
+    real p[3];       /* r.p's coordinates along kx, ky and kz */
 } watertight_ray;
 
 /* Step 1 for r.  False when d has no direction: every triangle is missed. */

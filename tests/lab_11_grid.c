@@ -6,6 +6,7 @@
  */
 #include "11_grid/renderer/grid_stage.h"
 #include "11_grid/lab/fast_query.h"
+#include "11_grid/lab/fast_search.h"
 
 #define GRID fast_grid
 #define GRID_OPTIONS fast_grid_options
@@ -163,6 +164,25 @@ static void test_directions_of_any_length(void **state)
         }
 }
 
+/* The search's next real above a best t (next_above, the bits plus one for a
+ * positive finite t) is the library's real_next_up, bit for bit, on both
+ * sides of every boundary of the fast path and beyond it. */
+static void test_next_above(void **state)
+{
+    (void)state;
+    assert_true(next_above(1) == 1 + REAL_EPSILON);                 /* the spacing above 1 is epsilon */
+    assert_true(next_above(REAL_MAX) == REAL_INFINITY);             /* the largest finite real */
+    assert_true(next_above(REAL_MIN - REAL_MIN * REAL_EPSILON) > 0); /* a subnormal */
+    assert_true(isnan(next_above((real)NAN)));
+    const real x[] = {1,  (real)0.1, 3e-5f, REAL_MIN, REAL_MIN / 8, REAL_MAX / 2, REAL_MAX, 0, -0.0f, -1,
+                      -REAL_MIN / 8, -REAL_MAX, REAL_INFINITY, -REAL_INFINITY, 12345.678f};
+    for (size_t k = 0; k < sizeof x / sizeof x[0]; k++) {
+        const real got = next_above(x[k]), want = real_next_up(x[k]);
+        if (memcmp(&got, &want, sizeof got) != 0)
+            fail_msg("next_above(%a) = %a, real_next_up gives %a", (double)x[k], (double)got, (double)want);
+    }
+}
+
 static const graded_test tests[] = {
     GRADED(test_random_scenes, 0),
     GRADED(test_zero_components, 0),
@@ -173,6 +193,7 @@ static const graded_test tests[] = {
     GRADED(test_ties_first_in_list, 0),
     GRADED(test_empty_and_single, 0),
     GRADED(test_mailbox_counts, 0),
+    GRADED(test_next_above, 0),
     GRADED(test_empty_cubes, 0),
     GRADED(test_directions_of_any_length, 0),
     GRADED(test_cornell_scenes, 0),

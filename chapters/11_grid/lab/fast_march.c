@@ -161,23 +161,27 @@ static inline bool dda_leap(const fast_grid *g, dda *m, int side, const ray_fram
  * boundary of its axis: the ray stays in one slab, or misses the box. */
 static inline void frame_of(ray_frame *f, const fast_grid *g, ray r)
 {
+    /* in locals first, stored once at the end: the compiler cannot keep
+     * fields of *f in registers across the stores into it */
     const real p[3] = {r.p.x, r.p.y, r.p.z}, d[3] = {r.d.x, r.d.y, r.d.z};
-    f->reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
-    f->d_max = vec3_max_abs(r.d);
+    const real reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
+    real inv_d[3];
+    long octant = 0;
     for (int a = 0; a < 3; a++) {
+        inv_d[a] = 1 / d[a];
+        f->parallel[a] = !isfinite(inv_d[a]); /* d_a = +0 or -0, or tiny */
+        inv_d[a] = f->parallel[a] ? 0 : inv_d[a];
         f->p[a] = p[a];
         f->d[a] = d[a];
-        f->inv_d[a] = 1 / d[a];
-        f->parallel[a] = !isfinite(f->inv_d[a]); /* d_a = +0 or -0, or tiny */
-        if (f->parallel[a])
-            f->inv_d[a] = 0;
-        f->slack[a] = f->reach * real_abs(f->inv_d[a]);
+        f->inv_d[a] = inv_d[a];
+        f->slack[a] = reach * real_abs(inv_d[a]);
+        f->step[a] = (inv_d[a] > 0) - (inv_d[a] < 0);
+        f->ahead[a] = inv_d[a] > 0;
+        octant |= (long)(inv_d[a] < 0) << a;
     }
-    f->octant = (f->inv_d[0] < 0) | (f->inv_d[1] < 0) << 1 | (f->inv_d[2] < 0) << 2;
-    for (int a = 0; a < 3; a++) {
-        f->step[a] = f->inv_d[a] > 0 ? 1 : f->inv_d[a] < 0 ? -1 : 0;
-        f->ahead[a] = f->step[a] > 0;
-    }
+    f->reach = reach;
+    f->d_max = vec3_max_abs(r.d);
+    f->octant = octant;
 }
 
 /* Where the ray enters the grid's box: the slabs lo_a <= p_a + t d_a <= hi_a
@@ -188,7 +192,12 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
 {
     const real *lo = g->lo_a, *hi = g->hi_a;
     real t0 = t_min, t1 = upper;
-    for (int a = 0; a < 3; a++) {
+    /* A ray from inside the box with the window (0, upper), as shadow rays
+     * are: every slab's near side is at t <= 0 and its far side at t >= 0, so
+     * the loop below would leave t0 = 0 <= t1.  It is skipped. */
+    const bool inside = t_min == 0 && upper >= 0 && f->p[0] >= lo[0] && f->p[0] <= hi[0] && f->p[1] >= lo[1] &&
+                        f->p[1] <= hi[1] && f->p[2] >= lo[2] && f->p[2] <= hi[2];
+    for (int a = 0; a < 3 && !inside; a++) {
         if (f->parallel[a]) {
             if (!(f->p[a] >= lo[a] && f->p[a] <= hi[a]))
                 return false;
@@ -205,7 +214,7 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
         t0 = near > t0 ? near : t0; /* fmax and fmin, inline; a NaN is passed over as they do */
         t1 = far < t1 ? far : t1;
     }
-    if (!(t0 <= t1)) /* misses the box, or the window ends before it */
+    if (!inside && !(t0 <= t1)) /* misses the box, or the window ends before it */
         return false;
     const real back = f->reach + 16 * REAL_EPSILON * real_abs(t0) * f->d_max;
     for (int a = 0; a < 3; a++) {
