@@ -807,6 +807,8 @@ static void test_stop_rule(void **state)
                  counts.cells > cells ? "the march goes on after the best hit lies in the cell being visited "
                                         "(stop once t_best <= the cell's far boundary)"
                                       : "the march ends before the hit's cell");
+    expect_stop_in_this_cell(&g);
+    expect_stop_slack(&g);
     /* the window ends at x = 2 (t = 3), before any surface: no hit, and the march ends in the window's last
      * cell, as t_best starts at t_max; a rule that waits for a hit goes on to the grid's end */
     counts = (grid_counts){0, 0};
@@ -821,9 +823,8 @@ static void test_stop_rule(void **state)
                  counts.cells > window_cells ? "the stop rule waits for a hit: with no hit yet t_best is t_max, and "
                                                "the march ends in the cell where the window ends (a shadow ray that "
                                                "reaches its light stops there)"
-                                             : "the march ends in the cell where the window ends");
-    expect_stop_in_this_cell(&g);
-    expect_stop_slack(&g);
+                                             : "the march ends in the cell where the window ends (t_best, t_max "
+                                               "before any hit, <= next_a - slack_a of the cell being visited)");
     /* beside the box (y = 2), parallel to x: no slab of y is ever crossed */
     counts = (grid_counts){0, 0};
     found = grid_intersect_counted(&g, (ray){{-1, 2, (real)0.5}, {1, 0, 0}}, 0, REAL_INFINITY, &got, &counts);
