@@ -53,15 +53,24 @@ static void record_answer(const char *what, double value, double tolerance)
 
 void suite_answer(const char *what, double value, double tolerance) { record_answer(what, value, tolerance); }
 
-void suite_answer_vec3(const char *what, vec3 value, double tolerance)
+/* Three answers, what.n[0], what.n[1], what.n[2]. */
+static void answer_three(const char *what, const char n[3], const double v[3], double tolerance)
 {
-    static const char axis[3] = {'x', 'y', 'z'};
-    const double v[3] = {value.x, value.y, value.z};
     for (int k = 0; k < 3; k++) {
         char name[300];
-        snprintf(name, sizeof name, "%s.%c", what, axis[k]);
+        snprintf(name, sizeof name, "%s.%c", what, n[k]);
         record_answer(name, v[k], tolerance);
     }
+}
+
+void suite_answer_vec3(const char *what, vec3 value, double tolerance)
+{
+    answer_three(what, "xyz", (const double[3]){value.x, value.y, value.z}, tolerance);
+}
+
+void suite_answer_rgb(const char *what, color value, double tolerance)
+{
+    answer_three(what, "rgb", (const double[3]){value.r, value.g, value.b}, tolerance);
 }
 
 extern const seeded_check suite_seeded_checks[] __attribute__((weak));

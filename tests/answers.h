@@ -36,6 +36,7 @@
 
 #include <cmocka.h>
 
+#include "color.h"
 #include "vec3.h"
 
 /* suite_main: start writing records on fd, and end them. */
@@ -50,6 +51,8 @@ void answers_record(const char *format, ...) __attribute__((format(printf, 1, 2)
  * reference's run gives it; a NaN answer matches only a NaN). */
 void suite_answer(const char *what, double value, double tolerance);
 void suite_answer_vec3(const char *what, vec3 value, double tolerance);
+/* A colour's three channels, named .r, .g and .b. */
+void suite_answer_rgb(const char *what, color value, double tolerance);
 
 /* A graded test's check of inputs drawn at grading time: draws them from
  * *state (suite_uniform, suite_random_unit) and calls suite_answer. */

@@ -33,7 +33,7 @@ static void answer_lambert(unsigned long *rng, vec3 n, vec3 u, double r, const c
                               "%.6g, %.6g), light at (%.6g, %.6g, %.6g), I = (%.6g, %.6g, %.6g)) [%s]",
                               k_d.r, k_d.g, k_d.b, point.x, point.y, point.z, n.x, n.y, n.z, light.position.x,
                               light.position.y, light.position.z, I.r, I.g, I.b, what);
-    suite_answer_vec3(in, seeded_rgb(L), tolerance(k_d, I, point, r));
+    suite_answer_rgb(in, L, tolerance(k_d, I, point, r));
 }
 
 static void seeded_facing(unsigned long *rng)
@@ -95,10 +95,10 @@ static void seeded_back_of_triangle(unsigned long *rng)
         uint64_t rays[RAY_KINDS] = {0};
         color L = suite_trace(&desc, shade_lambert, NULL, from_behind, rays);
         double r = vec3_length(to_light);
-        suite_answer_vec3(describe("a triangle at (%.6g, %.6g, %.6g) seen from its back, the light %.6g away on "
-                                   "the viewer's side",
-                                   c.x, c.y, c.z, r),
-                          seeded_rgb(L), tolerance(grey.diffuse_color, I, c, r));
+        suite_answer_rgb(describe("a triangle at (%.6g, %.6g, %.6g) seen from its back, the light %.6g away on "
+                                  "the viewer's side",
+                                  c.x, c.y, c.z, r),
+                         L, tolerance(grey.diffuse_color, I, c, r));
         scene_free(&desc);
     }
 }
@@ -120,10 +120,10 @@ static void seeded_inside_of_sphere(unsigned long *rng)
         uint64_t rays[RAY_KINDS] = {0};
         color L = suite_trace(&desc, shade_lambert, NULL, inside, rays);
         double r = radius * 0.5; /* the light is at least that far from the surface */
-        suite_answer_vec3(describe("a sphere of radius %.6g at (%.6g, %.6g, %.6g) seen from inside, the light "
-                                   "inside",
-                                   radius, c.x, c.y, c.z),
-                          seeded_rgb(L), tolerance(color_make(1, 1, 1), I, c, r));
+        suite_answer_rgb(describe("a sphere of radius %.6g at (%.6g, %.6g, %.6g) seen from inside, the light "
+                                  "inside",
+                                  radius, c.x, c.y, c.z),
+                         L, tolerance(color_make(1, 1, 1), I, c, r));
         scene_free(&desc);
     }
 }

@@ -25,12 +25,12 @@ static void seeded_specular(unsigned long *rng)
         color L = blinn_phong_specular(k_s, p, point, n, v, &light, form);
         double top = fmax(k_s.r * light.intensity.r, fmax(k_s.g * light.intensity.g, k_s.b * light.intensity.b));
         double tol = 64 * REAL_EPSILON * (p + 1) * (1 + vec3_length(point) / r) * top / (r * r);
-        suite_answer_vec3(describe("blinn_phong_specular(k_s = (%.9g, %.9g, %.9g), p = %.9g, point (%.9g, %.9g, "
-                                   "%.9g), n = (%.9g, %.9g, %.9g), v = (%.9g, %.9g, %.9g), light at (%.9g, %.9g, "
-                                   "%.9g), %s)",
-                                   k_s.r, k_s.g, k_s.b, p, point.x, point.y, point.z, n.x, n.y, n.z, v.x, v.y, v.z,
-                                   light.position.x, light.position.y, light.position.z, phong_form_names[form]),
-                          seeded_rgb(L), tol);
+        suite_answer_rgb(describe("blinn_phong_specular(k_s = (%.9g, %.9g, %.9g), p = %.9g, point (%.9g, %.9g, "
+                                  "%.9g), n = (%.9g, %.9g, %.9g), v = (%.9g, %.9g, %.9g), light at (%.9g, %.9g, "
+                                  "%.9g), %s)",
+                                  k_s.r, k_s.g, k_s.b, p, point.x, point.y, point.z, n.x, n.y, n.z, v.x, v.y, v.z,
+                                  light.position.x, light.position.y, light.position.z, phong_form_names[form]),
+                         L, tol);
     }
 }
 

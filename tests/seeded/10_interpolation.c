@@ -76,10 +76,10 @@ static void answer_lookups(unsigned long *rng, texture_filter filter, int negati
             double low = negative ? -1.5 : 0; /* of u and of 1 - v */
             mesh_uv uv = {(real)seeded_between(rng, low, 2.5), (real)(1 - seeded_between(rng, low, 2.5))};
             color c = filter == TEXTURE_NEAREST ? texture_nearest(&tex, uv) : texture_bilinear(&tex, uv);
-            suite_answer_vec3(describe("texture_%s(texture %d of %d x %d texels, %s, uv (%.9g, %.9g))",
-                                       filter == TEXTURE_NEAREST ? "nearest" : "bilinear", t + 1, tex.image.width,
-                                       tex.image.height, tex.kind == TEXTURE_CLAMP ? "clamp" : "repeat", uv.u, uv.v),
-                              seeded_rgb(c), (filter == TEXTURE_NEAREST ? 4 : 64 * side) * REAL_EPSILON);
+            suite_answer_rgb(describe("texture_%s(texture %d of %d x %d texels, %s, uv (%.9g, %.9g))",
+                                      filter == TEXTURE_NEAREST ? "nearest" : "bilinear", t + 1, tex.image.width,
+                                      tex.image.height, tex.kind == TEXTURE_CLAMP ? "clamp" : "repeat", uv.u, uv.v),
+                             c, (filter == TEXTURE_NEAREST ? 4 : 64 * side) * REAL_EPSILON);
         }
         free(tex.image.rgb);
     }

@@ -46,6 +46,5 @@ static inline vec3 seeded_at_angle(unsigned long *rng, vec3 n, double theta)
 }
 
 /* A colour's channels as a vec3, for suite_answer_vec3. */
-static inline vec3 seeded_rgb(color c) { return vec3_make(c.r, c.g, c.b); }
 
 #endif

@@ -79,7 +79,7 @@ static inline void seeded_trace_answers(unsigned long *rng, const scene *desc, s
         color L = trace(&view->tr, (ray){eye, vec3_sub(target, eye)}, 0, REAL_INFINITY, 0, rays);
         double size = 1 + fmax(L.r, fmax(L.g, L.b));
         const char *in = describe("%s, ray %d", what, k + 1);
-        suite_answer_vec3(describe("%s: radiance", in), seeded_rgb(L), 4096 * REAL_EPSILON * size);
+        suite_answer_rgb(describe("%s: radiance", in), L, 4096 * REAL_EPSILON * size);
         for (int kind = 0; kind < RAY_KINDS; kind++)
             suite_answer(describe("%s: rays of kind %d", in, kind), (double)rays[kind], 0);
     }
