@@ -14,10 +14,10 @@
 # the repository) between the lines `/* snippet: camera */` and
 # `/* end snippet */`, without those lines and without the markers of any
 # region nested in it.  Where the file has no such region, `camera` names a
-# function: the block is its definition (from the line at the margin that
-# names it to the `}` at the margin) with the comment right above it, so a
-# function shown whole needs no markers.  Either way the block is shown
-# without the EXERCISE_STUB(...) lines that
+# function: the block is its definition (from the line at the margin whose
+# first name followed by `(` is it, to the `}` at the margin) with the
+# comment right above it, so a function shown whole needs no markers.  Either
+# way the block is shown without the EXERCISE_STUB(...) lines that
 # tools/skeleton.awk adds to a stub (the text shows the stub as the student
 # should read it), and with the indentation the region's lines share
 # removed.  Blocks may not show solutions/: a student reads the chapters/ file.
@@ -40,7 +40,7 @@ function definition(path, name, lines,    all, m, k, start, first, n, j) {
     close(path)
     start = 0
     for (k = 1; k <= m && !start; k++)
-        if (all[k] ~ "^[A-Za-z_].*(^|[^A-Za-z0-9_])" name "\\(" && all[k] !~ /;[ \t]*$/ && all[k] !~ /^(typedef|#)/)
+        if (all[k] ~ "^[A-Za-z_][^(]*[^A-Za-z0-9_(]" name "\\(" && all[k] !~ /;[ \t]*$/ && all[k] !~ /^(typedef|#)/)
             start = k
     if (!start) return 0
     first = start

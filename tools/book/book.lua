@@ -188,9 +188,9 @@ local function region_lines(path, name, what)
   -- no region: the definition of function `name` with the comment right above it
   local all = {}
   for line in io.lines(path) do all[#all + 1] = line end
-  local pattern = "[^%w_]" .. name:gsub("%p", "%%%0") .. "%("
+  local pattern = "^[%a_][^(]*[^%w_(]" .. name:gsub("%p", "%%%0") .. "%(" -- the declarator's name, before any (
   for k, line in ipairs(all) do
-    if line:match("^[%a_]") and (" " .. line):match(pattern) and not line:match(";%s*$")
+    if line:match(pattern) and not line:match(";%s*$")
         and not line:match("^typedef") and not line:match("^#") then
       local top = k
       if k > 1 and all[k - 1]:match("%*/%s*$") then
