@@ -22,6 +22,24 @@
  * Cramer's rule in real arithmetic must be certain to place a hit point. */
 #define TRIANGLE_POINT_SLACK 0x1p-3
 
+/* The first of the tests below, on the data as they are stored (no scaling
+ * by powers of two): true only where triangle_crossing_certain_exact is
+ * true, for any input (crossing.c proves it), and true for a clear crossing
+ * (a triangle that is not a sliver, a ray not nearly in its plane, an origin
+ * not nearly in it) whose coordinates' magnitudes sum below 2^100 and whose
+ * determinants are far above 2^-250 (its suite counts those it takes).
+ * Where it is false the scaled test decides.  Inline, in crossing_clear.h:
+ *     bool triangle_crossing_clear(const vec3 *a, const vec3 *b, const vec3 *c, ray r); */
+#include "crossing_clear.h"
+
+/* Where the quick test cannot decide: the data scaled by powers of two, then
+ * a quick test and the full check on them. */
+bool triangle_crossing_scaled(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
+
+/* The same answer as triangle_crossing_certain, always computed in full.
+ * (The tests compare the two.) */
+bool triangle_crossing_certain_exact(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
+
 /* Whether r crosses the plane of the triangle *a, *b, *c at a t that the data
  * decide: false when |M| or |N| is not larger than the rounding error it may
  * carry (a degenerate or nearly degenerate triangle, a direction in or
@@ -29,21 +47,11 @@
  * when rounding may put the hit point further than TRIANGLE_POINT_SLACK of
  * the triangle's size from where the data put it.  The data are taken as
  * they are stored: a crossing that the arithmetic decides counts at any
- * distance from the origin. */
-bool triangle_crossing_certain(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
-
-/* The same answer, always computed in full: triangle_crossing_certain first
- * tries cheaper sufficient tests and calls this one only where they cannot
- * decide.  (The tests compare the two.) */
-bool triangle_crossing_certain_exact(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
-
-/* The first of those tests, on the data as they are stored (no scaling by
- * powers of two): true only where triangle_crossing_certain_exact is true,
- * for any input (crossing.c proves it), and true for a clear crossing (a
- * triangle that is not a sliver, a ray not nearly in its plane, an origin
- * not nearly in it) whose coordinates' magnitudes sum below 2^100 and whose
- * determinants are far above 2^-250 (its suite counts those it takes).
- * Where it is false the scaled test decides. */
-bool triangle_crossing_clear(const vec3 *a, const vec3 *b, const vec3 *c, ray r);
+ * distance from the origin.  The quick test first, inline: it settles every
+ * clear hit without a call (a triangle test ends with this check on a hit). */
+static inline bool triangle_crossing_certain(const vec3 *a, const vec3 *b, const vec3 *c, ray r)
+{
+    return triangle_crossing_clear(a, b, c, r) || triangle_crossing_scaled(a, b, c, r);
+}
 
 #endif
