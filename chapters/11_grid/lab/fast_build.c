@@ -21,6 +21,12 @@ fast_grid_options fast_grid_default_options(void)
 
 static real get(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
 
+/* fmin and fmax without the library's call, which the build made twelve
+ * times a triangle: the other value where one is NaN, as they do (the sign
+ * of a zero bound is the only difference, and no bound reads it). */
+static inline real lesser(real x, real y) { return x < y || y != y ? x : y; }
+static inline real greater(real x, real y) { return x > y || y != y ? x : y; }
+
 /* A surface's bounding box: a sphere's centre +- R, a triangle's vertices' extremes. */
 void fast_grid_surface_bounds(const surface *s, vec3 *lo, vec3 *hi)
 {
@@ -31,10 +37,10 @@ void fast_grid_surface_bounds(const surface *s, vec3 *lo, vec3 *hi)
         *hi = vec3_make(c.x + r, c.y + r, c.z + r);
     } else {
         const triangle *t = &s->triangle;
-        *lo = vec3_make(real_fmin(t->a.x, real_fmin(t->b.x, t->c.x)), real_fmin(t->a.y, real_fmin(t->b.y, t->c.y)),
-                        real_fmin(t->a.z, real_fmin(t->b.z, t->c.z)));
-        *hi = vec3_make(real_fmax(t->a.x, real_fmax(t->b.x, t->c.x)), real_fmax(t->a.y, real_fmax(t->b.y, t->c.y)),
-                        real_fmax(t->a.z, real_fmax(t->b.z, t->c.z)));
+        *lo = vec3_make(lesser(t->a.x, lesser(t->b.x, t->c.x)), lesser(t->a.y, lesser(t->b.y, t->c.y)),
+                        lesser(t->a.z, lesser(t->b.z, t->c.z)));
+        *hi = vec3_make(greater(t->a.x, greater(t->b.x, t->c.x)), greater(t->a.y, greater(t->b.y, t->c.y)),
+                        greater(t->a.z, greater(t->b.z, t->c.z)));
     }
 }
 
@@ -48,6 +54,16 @@ void fast_grid_cell_range(const fast_grid *g, vec3 box_lo, vec3 box_hi, int firs
     grid_cell_range(&frame, box_lo, box_hi, first, last);
 }
 
+/* Whether the projections of a triangle (p0, p1, p2: its vertices' dot
+ * products with an axis) and of a box (radius r about 0) on that axis are
+ * apart.  A NaN never separates. */
+static inline bool apart(real p0, real p1, real p2, real r)
+{
+    real lo = p0 < p1 ? (p0 < p2 ? p0 : p2) : (p1 < p2 ? p1 : p2);
+    real hi = p0 > p1 ? (p0 > p2 ? p0 : p2) : (p1 > p2 ? p1 : p2);
+    return lo > r || hi < -r;
+}
+
 /* Whether a triangle can touch cell (i, j, k), by the separating axis test
  * of Akenine-Moller (2001): the triangle and the box are apart when their
  * projections on some axis are, and it suffices to try the box's three
@@ -56,7 +72,10 @@ void fast_grid_cell_range(const fast_grid *g, vec3 box_lo, vec3 box_hi, int firs
  * widened by the margin, and each comparison allows a rounding term on top,
  * so the test says yes too often, never too rarely: a triangle is listed in
  * every cell it meets.  Spheres and triangles within one cell's box along
- * every axis are binned by their boxes alone. */
+ * every axis are binned by their boxes alone.  The cross product of the x
+ * axis and an edge e is (0, -e_z, e_y), and so for y and z: its projections
+ * are written with the two terms that are not zero (the third would add an
+ * exact zero: the data are finite here, or the surface is not binned). */
 static bool triangle_touches_cell(const fast_grid *g, const triangle *tri, int i, int j, int k)
 {
     vec3 h = widen(vec3_scale(g->cell, (real)0.5), g->margin);
@@ -66,21 +85,24 @@ static bool triangle_touches_cell(const fast_grid *g, const triangle *tri, int i
     const vec3 v[3] = {vec3_sub(tri->a, m), vec3_sub(tri->b, m), vec3_sub(tri->c, m)};
     const vec3 e[3] = {vec3_sub(v[1], v[0]), vec3_sub(v[2], v[1]), vec3_sub(v[0], v[2])};
     const real rounding = 8 * REAL_EPSILON * (g->scale + vec3_max_abs(m));
-    vec3 axes[10];
-    int n = 0;
-    axes[n++] = vec3_cross(e[0], e[1]); /* the normal */
-    const vec3 unit[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
-    for (int a = 0; a < 3; a++)
-        for (int b = 0; b < 3; b++)
-            axes[n++] = vec3_cross(unit[a], e[b]);
-    for (int q = 0; q < n; q++) {
-        vec3 u = axes[q];
-        real p0 = vec3_dot(v[0], u), p1 = vec3_dot(v[1], u), p2 = vec3_dot(v[2], u);
-        real lo = p0 < p1 ? (p0 < p2 ? p0 : p2) : (p1 < p2 ? p1 : p2);
-        real hi = p0 > p1 ? (p0 > p2 ? p0 : p2) : (p1 > p2 ? p1 : p2);
-        real sum = real_abs(u.x) + real_abs(u.y) + real_abs(u.z);
-        real r = real_abs(u.x) * h.x + real_abs(u.y) * h.y + real_abs(u.z) * h.z + rounding * sum;
-        if (lo > r || hi < -r) /* apart along u (a NaN never separates) */
+    const vec3 n = vec3_cross(e[0], e[1]); /* the normal */
+    real r = real_abs(n.x) * h.x + real_abs(n.y) * h.y + real_abs(n.z) * h.z +
+             rounding * (real_abs(n.x) + real_abs(n.y) + real_abs(n.z));
+    if (apart(vec3_dot(v[0], n), vec3_dot(v[1], n), vec3_dot(v[2], n), r))
+        return false;
+    for (int b = 0; b < 3; b++) {
+        const real ex = e[b].x, ey = e[b].y, ez = e[b].z, ax = real_abs(ex), ay = real_abs(ey), az = real_abs(ez);
+        /* x cross e = (0, -e_z, e_y) */
+        r = (az * h.y + ay * h.z) + rounding * (az + ay);
+        if (apart(v[0].y * -ez + v[0].z * ey, v[1].y * -ez + v[1].z * ey, v[2].y * -ez + v[2].z * ey, r))
+            return false;
+        /* y cross e = (e_z, 0, -e_x) */
+        r = (az * h.x + ax * h.z) + rounding * (az + ax);
+        if (apart(v[0].x * ez + v[0].z * -ex, v[1].x * ez + v[1].z * -ex, v[2].x * ez + v[2].z * -ex, r))
+            return false;
+        /* z cross e = (-e_y, e_x, 0) */
+        r = (ay * h.x + ax * h.y) + rounding * (ay + ax);
+        if (apart(v[0].x * -ey + v[0].y * ex, v[1].x * -ey + v[1].y * ex, v[2].x * -ey + v[2].y * ex, r))
             return false;
     }
     return true;
@@ -98,42 +120,85 @@ static void cull_box(const fast_grid *g, vec3 lo, vec3 hi, int i, int j, int k, 
 {
     const int index[3] = {i, j, k};
     for (int a = 0; a < 3; a++) {
-        double frame = (double)get(g->cell, a) + 2 * (double)g->margin;
+        double steps = FAST_GRID_BOX_STEPS / ((double)get(g->cell, a) + 2 * (double)g->margin); /* per unit */
         double origin = (double)get(g->lo, a) + index[a] * (double)get(g->cell, a) - (double)g->margin;
-        double f_lo = ((double)get(lo, a) - g->margin - origin) / frame * FAST_GRID_BOX_STEPS - 0.01;
-        double f_hi = ((double)get(hi, a) + g->margin - origin) / frame * FAST_GRID_BOX_STEPS + 0.01;
+        double f_lo = ((double)get(lo, a) - g->margin - origin) * steps - 0.01;
+        double f_hi = ((double)get(hi, a) + g->margin - origin) * steps + 0.01;
         box[a] = (uint8_t)(f_lo <= 0 ? 0 : f_lo >= FAST_GRID_BOX_STEPS ? FAST_GRID_BOX_STEPS : floor(f_lo));
         box[3 + a] = (uint8_t)(f_hi <= 0 ? 0 : f_hi >= FAST_GRID_BOX_STEPS ? FAST_GRID_BOX_STEPS : ceil(f_hi));
     }
 }
 /* end snippet */
 
-/* Lists surface s in every cell it overlaps: counts it there (fill NULL) or
- * writes its index at fill[cell]++. */
-static void bin_surface(fast_grid *g, const surface *s, uint32_t index, uint32_t *count, uint32_t *fill)
+/* The cells each surface is listed in, found once (the separating axis test
+ * is the build's dearest step) and kept until the entries are written. */
+typedef struct {
+    uint32_t cell, surface;
+} binned;
+
+typedef struct {
+    binned *at;
+    size_t n, size;
+} bin_list;
+
+/* Counts surface s (its index in the list: index) in every cell it overlaps
+ * and adds (cell, index) to bins.  False when out of memory. */
+static bool bin_surface(fast_grid *g, const surface *s, uint32_t index, uint32_t *count, bin_list *bins)
 {
     vec3 lo, hi;
     fast_grid_surface_bounds(s, &lo, &hi);
     if (!vec3_is_finite(lo) || !vec3_is_finite(hi))
-        return; /* unbinned: tested for every ray */
+        return true; /* unbinned: tested for every ray */
     int first[3], last[3];
     fast_grid_cell_range(g, widen(lo, -g->margin), widen(hi, g->margin), first, last);
-    bool one_cell = first[0] == last[0] && first[1] == last[1] && first[2] == last[2];
-    bool by_axes = s->kind == SHAPE_TRIANGLE && !one_cell;
+    /* A triangle whose box lies inside the grid and in one slab of cells
+     * along two axes meets every cell of its range (in the middle ones, the
+     * plane between; in the end ones, its extreme vertex): only a box that
+     * spans two axes, or reaches beyond a cell's own grid, needs the
+     * separating axis test. */
+    int spanned = (first[0] < last[0]) + (first[1] < last[1]) + (first[2] < last[2]);
+    bool inside = lo.x - g->margin >= g->lo.x && lo.y - g->margin >= g->lo.y && lo.z - g->margin >= g->lo.z &&
+                  hi.x + g->margin <= g->hi.x && hi.y + g->margin <= g->hi.y && hi.z + g->margin <= g->hi.z;
+    bool by_axes = s->kind == SHAPE_TRIANGLE && (spanned >= 2 || (spanned == 1 && !inside));
     for (int k = first[2]; k <= last[2]; k++)
         for (int j = first[1]; j <= last[1]; j++)
             for (int i = first[0]; i <= last[0]; i++) {
                 if (by_axes && !triangle_touches_cell(g, &s->triangle, i, j, k))
                     continue;
                 long c = i + (long)g->n[0] * (j + (long)g->n[1] * k);
-                if (fill) {
-                    fast_grid_entry *entry = &g->refs[fill[c]++];
-                    *entry = (fast_grid_entry){.surface = index};
-                    if (g->cull)
-                        cull_box(g, lo, hi, i, j, k, entry->box);
-                } else
-                    count[c]++;
+                if (bins->n == bins->size) {
+                    size_t size = bins->size ? 2 * bins->size : 1024;
+                    binned *at = realloc(bins->at, size * sizeof *at);
+                    if (!at)
+                        return false;
+                    bins->at = at;
+                    bins->size = size;
+                }
+                bins->at[bins->n++] = (binned){(uint32_t)c, index};
+                count[c]++;
             }
+    return true;
+}
+
+/* Writes the entries that bins lists, each at fill[cell]++, with the part of
+ * its surface's box inside the cell when culling is on. */
+static void write_entries(fast_grid *g, const bin_list *bins, uint32_t *fill)
+{
+    vec3 lo = {0, 0, 0}, hi = {0, 0, 0};
+    uint32_t boxed = UINT32_MAX; /* the surface whose box lo, hi is */
+    const uint32_t n0 = (uint32_t)g->n[0], n1 = (uint32_t)g->n[1];
+    for (size_t e = 0; e < bins->n; e++) {
+        const binned b = bins->at[e];
+        fast_grid_entry *entry = &g->refs[fill[b.cell]++];
+        *entry = (fast_grid_entry){.surface = b.surface};
+        if (!g->cull)
+            continue;
+        if (b.surface != boxed) {
+            fast_grid_surface_bounds(&g->list->items[b.surface], &lo, &hi);
+            boxed = b.surface;
+        }
+        cull_box(g, lo, hi, (int)(b.cell % n0), (int)(b.cell / n0 % n1), (int)(b.cell / n0 / n1), entry->box);
+    }
 }
 
 /* snippet: resolution */
@@ -182,46 +247,6 @@ void fast_grid_resolution(const double extent[3], long surfaces, double density,
 }
 /* end snippet */
 
-/* snippet: empty_distances */
-/* empty[8 c + o]: for a ray in cell c heading into octant o (bit 0: x
- * decreasing, bit 1: y, bit 2: z), the side s of the largest cube of empty
- * cells that has c as its corner and lies ahead of c in that octant: cells
- * i .. i + (s - 1) sgn_x along x, and so along y and z.  0 for a cell with
- * surfaces; at most g->beyond (255, or less for a small grid); cells beyond the grid count as empty (a ray that
- * leaves the grid is done).  The classic "largest empty square" recurrence in
- * 3D: s = 1 + the least s of the 7 neighbours one step ahead, filled in the
- * order in which those neighbours come first. */
-static void empty_distances(fast_grid *g)
-{
-    const int n[3] = {g->n[0], g->n[1], g->n[2]};
-    for (int o = 0; o < 8; o++) {
-        const int sx = o & 1 ? -1 : 1, sy = o & 2 ? -1 : 1, sz = o & 4 ? -1 : 1;
-        for (int kq = 0; kq < n[2]; kq++)
-            for (int jq = 0; jq < n[1]; jq++)
-                for (int iq = 0; iq < n[0]; iq++) {
-                    /* the cells ahead of (i, j, k) come first: walk against the octant */
-                    const int i = sx > 0 ? n[0] - 1 - iq : iq, j = sy > 0 ? n[1] - 1 - jq : jq,
-                              k = sz > 0 ? n[2] - 1 - kq : kq;
-                    const long c = i + (long)n[0] * (j + (long)n[1] * k);
-                    int side = 0;
-                    if (g->start[c + 1] == g->start[c]) {
-                        int least = g->beyond - 1;
-                        for (int corner = 1; corner < 8; corner++) {
-                            int ii = i + (corner & 1 ? sx : 0), jj = j + (corner & 2 ? sy : 0),
-                                kk = k + (corner & 4 ? sz : 0);
-                            if (ii < 0 || ii >= n[0] || jj < 0 || jj >= n[1] || kk < 0 || kk >= n[2])
-                                continue; /* beyond the grid: empty */
-                            int ahead = g->empty[8 * (ii + (long)n[0] * (jj + (long)n[1] * kk)) + o];
-                            least = ahead < least ? ahead : least;
-                        }
-                        side = 1 + least;
-                    }
-                    g->empty[8 * c + o] = (uint8_t)side;
-                }
-    }
-}
-/* end snippet */
-
 /* The entries of the table of cell boundaries: n_a + 1 planes per axis and
  * g->beyond more on either side (the largest cube a leap takes). */
 static size_t plane_count(const fast_grid *g)
@@ -263,24 +288,31 @@ int fast_grid_fill(fast_grid *g, const uint32_t *subset, long n, bool leap, char
         for (int k = -g->beyond; k <= g->n[a] + g->beyond; k++)
             g->plane[a][k] = g->lo_a[a] + (real)k * g->cell_a[a];
 
-    /* Two passes over the surfaces: count each cell's surfaces, then, with the
-     * offsets summed from the counts, write them in increasing index.  A cell
-     * lists each surface at most once, so its count fits 32 bits; the same
-     * array then holds where the next index of each cell goes. */
+    /* One pass over the surfaces counts each cell's surfaces and keeps the
+     * cells of each (bins); with the offsets summed from the counts, the
+     * entries are written from the bins, in increasing index.  A cell lists
+     * each surface at most once, so its count fits 32 bits; the same array
+     * then holds where the next index of each cell goes. */
     uint32_t *count = calloc((size_t)g->n_cells, sizeof *count);
     g->start = malloc(((size_t)g->n_cells + 1) * sizeof *g->start);
     if (!count || !g->start) {
         free(count);
         goto out_of_memory;
     }
+    bin_list bins = {NULL, 0, 0};
     for (long q = 0; q < n; q++)
-        bin_surface(g, &g->list->items[subset ? subset[q] : q], subset ? subset[q] : (uint32_t)q, count, NULL);
+        if (!bin_surface(g, &g->list->items[subset ? subset[q] : q], subset ? subset[q] : (uint32_t)q, count, &bins)) {
+            free(count);
+            free(bins.at);
+            goto out_of_memory;
+        }
     uint64_t total = 0;
     for (long c = 0; c < g->n_cells; c++) {
         g->start[c] = (uint32_t)total;
         total += count[c];
         if (total > UINT32_MAX) {
             free(count);
+            free(bins.at);
             snprintf(err, err_size, "grid: more than 2^32 cell entries; lower the density or the cell cap");
             return -1;
         }
@@ -290,23 +322,23 @@ int fast_grid_fill(fast_grid *g, const uint32_t *subset, long n, bool leap, char
     g->refs = malloc((total ? (size_t)total : 1) * sizeof *g->refs);
     if (!g->refs) {
         free(count);
+        free(bins.at);
         goto out_of_memory;
     }
     uint32_t *fill = count;
     for (long c = 0; c < g->n_cells; c++)
         fill[c] = g->start[c];
-    for (long q = 0; q < n; q++)
-        bin_surface(g, &g->list->items[subset ? subset[q] : q], subset ? subset[q] : (uint32_t)q, NULL, fill);
+    write_entries(g, &bins, fill);
     free(fill);
-    /* the most the build held at once: the grid and the fill array */
-    g->peak_bytes = fast_grid_memory(g) + (size_t)g->n_cells * sizeof *fill;
+    free(bins.at);
+    /* the most the build held at once: the grid, the fill array and the bins */
+    g->peak_bytes = fast_grid_memory(g) + (size_t)g->n_cells * sizeof *fill + bins.size * sizeof *bins.at;
     if (leap) {
         g->empty = malloc(8 * (size_t)g->n_cells);
         if (!g->empty)
             goto out_of_memory;
-        empty_distances(g);
-        size_t now = fast_grid_memory(g); /* the fill array is gone by now */
-        g->peak_bytes = now > g->peak_bytes ? now : g->peak_bytes;
+        if (!fast_grid_empty_distances(g))
+            goto out_of_memory;
     }
     return 0;
 
@@ -314,6 +346,7 @@ out_of_memory:
     snprintf(err, err_size, "grid: out of memory");
     return -1;
 }
+
 
 int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options opt, char *err, size_t err_size)
 {
@@ -330,8 +363,8 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
         vec3 slo, shi;
         fast_grid_surface_bounds(&list->items[k], &slo, &shi);
         if (vec3_is_finite(slo) && vec3_is_finite(shi)) {
-            lo = vec3_make(real_fmin(lo.x, slo.x), real_fmin(lo.y, slo.y), real_fmin(lo.z, slo.z));
-            hi = vec3_make(real_fmax(hi.x, shi.x), real_fmax(hi.y, shi.y), real_fmax(hi.z, shi.z));
+            lo = vec3_make(lesser(lo.x, slo.x), lesser(lo.y, slo.y), lesser(lo.z, slo.z));
+            hi = vec3_make(greater(hi.x, shi.x), greater(hi.y, shi.y), greater(hi.z, shi.z));
             binned++;
         } else {
             g->n_unbinned++;

@@ -22,6 +22,10 @@ void fast_grid_resolution(const double extent[3], long surfaces, double density,
  * problem in err; what it allocated is then g's, for fast_grid_free. */
 int fast_grid_fill(fast_grid *g, const uint32_t *subset, long n, bool leap, char *err, size_t err_size);
 
+/* The leap table g->empty (allocated, n_cells x 8 bytes) of a grid whose
+ * lists are filled: fast_empty.c.  False when out of memory. */
+bool fast_grid_empty_distances(fast_grid *g);
+
 /* Two levels: each cell of g that lists more than opt.split surfaces gets a
  * grid of its own over its box and those surfaces but the ones that span
  * the cell along two axes (a floor), and lists that grid (an entry

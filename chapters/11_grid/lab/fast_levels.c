@@ -19,9 +19,29 @@
 #include "11_grid/lab/fast_build.h"
 
 /* A cell's own grid may list each of its surfaces in this many of its cells
- * on average at most; beyond that (surfaces that all cross the whole cell)
- * the cell keeps its plain list. */
+ * on average at most, counted by their boxes; beyond that (surfaces that all
+ * cross the whole cell, or long thin ones across a fine grid, as at a
+ * sphere's pole) the cell keeps its plain list. */
 #define MOST_CELLS_PER_SURFACE 16
+
+/* The cells of sub that the boxes of its n surfaces overlap, in all: what
+ * its build would test by the separating axis test, and at least what it
+ * would list.  sub has its box and its resolution. */
+static long box_cells(fast_grid *sub, const uint32_t *subset, long n)
+{
+    vec3 size = vec3_sub(sub->hi, sub->lo);
+    sub->cell = vec3_make(size.x / (real)sub->n[0], size.y / (real)sub->n[1], size.z / (real)sub->n[2]);
+    const vec3 m = vec3_make(sub->margin, sub->margin, sub->margin);
+    long cells = 0;
+    for (long q = 0; q < n; q++) {
+        vec3 lo, hi;
+        int first[3], last[3];
+        fast_grid_surface_bounds(&sub->list->items[subset[q]], &lo, &hi);
+        fast_grid_cell_range(sub, vec3_sub(lo, m), vec3_add(hi, m), first, last);
+        cells += (long)(last[0] - first[0] + 1) * (last[1] - first[1] + 1) * (last[2] - first[2] + 1);
+    }
+    return cells;
+}
 
 /* The grid of cell idx of g over the n surfaces `subset` it lists.  Its box
  * is the cell's frame (the cell widened by the margin) cut down to the
@@ -55,13 +75,11 @@ static int build_sub(fast_grid *sub, const fast_grid *g, const uint32_t *subset,
     sub->lo = vec3_make(box_lo[0], box_lo[1], box_lo[2]);
     sub->hi = vec3_make(box_hi[0], box_hi[1], box_hi[2]);
     fast_grid_resolution(extent, n, opt.density, opt.max_cells, sub->n);
+    if (box_cells(sub, subset, n) > MOST_CELLS_PER_SURFACE * n)
+        return 1;
     if (fast_grid_fill(sub, subset, n, opt.leap, err, err_size) != 0) {
         fast_grid_free(sub);
         return -1;
-    }
-    if (sub->n_refs > MOST_CELLS_PER_SURFACE * n) {
-        fast_grid_free(sub);
-        return 1;
     }
     return 0;
 }
