@@ -55,9 +55,11 @@ bool fast_grid_empty_distances(fast_grid *g)
                 const int j = o & 2 ? n1 - 1 - f1 : f1, k = o & 4 ? n2 - 1 - f2 : f2;
                 const long di = o & 1 ? 1 : -1; /* what a step to the next lower f_0 adds to c */
                 long c = (o & 1 ? 0 : n0 - 1) + n0 * (j + (long)n1 * k);
+                uint8_t v = far; /* the cell before, s[f0 + 1], kept in a register: a store and a load of it
+                                  * would make every step wait for the one before */
                 for (int f0 = n0 - 1; f0 >= 0; f0--, c += di) {
-                    const uint8_t l = s[f0 + 1] < least[f0] ? s[f0 + 1] : least[f0];
-                    const uint8_t v = occupied[c] ? 0 : (uint8_t)(l + 1);
+                    const uint8_t l = v < least[f0] ? v : least[f0];
+                    v = occupied[c] ? 0 : (uint8_t)(l + 1);
                     s[f0] = v;
                     g->empty[8 * c + o] = v;
                 }
