@@ -128,8 +128,8 @@ static bool scaled_edges(const vec3 *va, const vec3 *vb, const vec3 *vc, ray r, 
 {
     if (!(finite_sum(*va) + finite_sum(*vb) + finite_sum(*vc) + finite_sum(r.p) + finite_sum(r.d) == 0))
         return false;
-    real largest =
-        (real)crossing_larger(crossing_larger(vec3_max_abs(*va), vec3_max_abs(*vb)), crossing_larger(vec3_max_abs(*vc), vec3_max_abs(r.p)));
+    real largest = (real)crossing_larger(crossing_larger(vec3_max_abs(*va), vec3_max_abs(*vb)),
+                                         crossing_larger(vec3_max_abs(*vc), vec3_max_abs(r.p)));
     int ev = exponent_of(largest), ed = exponent_of(vec3_max_abs(r.d));
     const double sv = power_of_two(ev), sd = power_of_two(ed);
     double a[3], b[3], c[3], p[3];

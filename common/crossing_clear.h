@@ -21,8 +21,10 @@ static inline double crossing_det(const double e1[3], const double e2[3], const 
            e1[2] * (e2[0] * w[1] - e2[1] * w[0]);
 }
 
-static inline double crossing_biggest(const double v[3]) { return crossing_larger(fabs(v[0]), crossing_larger(fabs(v[1]), fabs(v[2]))); }
-
+static inline double crossing_biggest(const double v[3])
+{
+    return crossing_larger(fabs(v[0]), crossing_larger(fabs(v[1]), fabs(v[2])));
+}
 
 /* A quick sufficient test for decided, which the common case (a clear hit)
  * passes at a fraction of the cost: |N| > k E1 E2 F + tiny and
@@ -42,9 +44,11 @@ static inline bool bounded_by_largest(const double e1[3], const double e2[3], co
                                       double k, double tiny)
 {
     double m = fabs(crossing_det(e1, e2, d)), n = fabs(crossing_det(e1, e2, f));
-    double big_e1 = crossing_biggest(e1), big_e2 = crossing_biggest(e2), big_w = crossing_biggest(d), big_f = crossing_biggest(f);
+    double big_e1 = crossing_biggest(e1), big_e2 = crossing_biggest(e2);
+    double big_w = crossing_biggest(d), big_f = crossing_biggest(f);
     double big_l = crossing_larger(big_e1, big_e2), e12 = big_e1 * big_e2;
-    return n > k * (e12 * big_f) + tiny && 2 * k * (e12 * big_w * (2 * big_f + big_l)) + tiny < TRIANGLE_POINT_SLACK * big_l * m;
+    return n > k * (e12 * big_f) + tiny &&
+           2 * k * (e12 * big_w * (2 * big_f + big_l)) + tiny < TRIANGLE_POINT_SLACK * big_l * m;
 }
 
 /* clearly_decided on the data as they are, unscaled, with twice its

@@ -32,7 +32,7 @@ bool watertight_ray_make(ray r, watertight_ray *wr);
 /* The coordinate along axis k of the vector stored at *v, read where it is
  * stored: the test reads nine of them per triangle, and `component` of a copy
  * would store the copy first. */
-static inline real watertight_coordinate(const vec3 *v, int k)
+static inline real along(const vec3 *v, int k)
 {
     _Static_assert(offsetof(vec3, y) == sizeof(real) && offsetof(vec3, z) == 2 * sizeof(real),
                    "x, y and z follow each other");
@@ -52,10 +52,10 @@ static inline bool watertight_hit(const watertight_ray *wr, const vec3 *va, cons
     /* snippet: watertight_vertices */
     /* 2. The vertices relative to p (p[0], p[1], p[2]: its coordinates along
      *    kx, ky, kz), sheared: the ray is now the positive z axis. */
-    real za = watertight_coordinate(va, kz) - p[2], zb = watertight_coordinate(vb, kz) - p[2], zc = watertight_coordinate(vc, kz) - p[2];
-    real ax = (watertight_coordinate(va, kx) - p[0]) - sx * za, ay = (watertight_coordinate(va, ky) - p[1]) - sy * za;
-    real bx = (watertight_coordinate(vb, kx) - p[0]) - sx * zb, by = (watertight_coordinate(vb, ky) - p[1]) - sy * zb;
-    real cx = (watertight_coordinate(vc, kx) - p[0]) - sx * zc, cy = (watertight_coordinate(vc, ky) - p[1]) - sy * zc;
+    real za = along(va, kz) - p[2], zb = along(vb, kz) - p[2], zc = along(vc, kz) - p[2];
+    real ax = (along(va, kx) - p[0]) - sx * za, ay = (along(va, ky) - p[1]) - sy * za;
+    real bx = (along(vb, kx) - p[0]) - sx * zb, by = (along(vb, ky) - p[1]) - sy * zb;
+    real cx = (along(vc, kx) - p[0]) - sx * zc, cy = (along(vc, ky) - p[1]) - sy * zc;
     /* end snippet */
 
     /* snippet: watertight_edges */
