@@ -94,6 +94,12 @@ static void test_refract_equal_indices(void **state)
     }
 }
 
+/* r d + c n: the form of T, with a coefficient c of n right or wrong. */
+static vec3 bent(vec3 d, vec3 n, double r, double c)
+{
+    return vec3_add(vec3_scale(d, (real)r), vec3_scale(n, (real)c));
+}
+
 /* Snell's law at random angles, into glass and out of it below the critical
  * angle: T is a unit vector in the plane of d and n, on the far side, and
  * eta_i sin(theta_i) = eta_t sin(theta_t). */
@@ -119,6 +125,9 @@ static void test_snell_law(void **state)
         vec3 expected = vec3_add(vec3_scale(t, (real)sin(theta_t)), vec3_scale(n, (real)-cos(theta_t)));
         if (k < 8) { /* the first few with the likely mistakes named */
             double inverted = asin(fmin(1, eta_t * sin(theta_i) / eta_i));
+            /* T = r d + (r cos(theta_i) - cos(theta_t)) n with one of its parts wrong */
+            double r = eta_i / eta_t, c_i = cos(theta_i), c_t = cos(theta_t);
+            double c_t_r = sqrt(fmax(0, (1 - r) + r * c_i * c_i)); /* cos^2(theta_t) with r for r^2 */
             const suspect_vec3 sT[] = {
                 {vec3_add(vec3_scale(t, (real)sin(inverted)), vec3_scale(n, (real)-cos(inverted))),
                  "S_t = (eta_t / eta_i) S_i: the ratio is upside down (eta_i sin(theta_i) = eta_t sin(theta_t))"},
@@ -127,6 +136,15 @@ static void test_snell_law(void **state)
                 {d, "T = d: Snell's law bends the ray"},
                 {vec3_add(d, vec3_scale(n, (real)(eta_i / eta_t * cos(theta_i) - cos(theta_t)))),
                  "d not scaled by r: S_t = r S_i, so T = r d + (r cos(theta_i) - cos(theta_t)) n"},
+                {bent(d, n, r, -r * c_i - c_t),
+                 "cos(theta_i) = d . n has the wrong sign: d points into the surface, so cos(theta_i) = -d . n"},
+                {bent(d, n, r, r * c_i - c_t * c_t), "cos(theta_t) = sqrt(cos^2(theta_t)): the square root left out"},
+                {bent(d, n, r, r * c_i - c_t_r), "cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i): r^2, not r"},
+                {bent(d, n, r, c_i - c_t),
+                 "n's coefficient without r: S_t = r (d + cos(theta_i) n), so T = r d + (r cos(theta_i) - "
+                 "cos(theta_t)) n"},
+                {bent(d, n, r, r * c_i - c_i),
+                 "cos(theta_t) taken as cos(theta_i): cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i)"},
             };
             assert_vec3_why(expected, T, TOL(8), input,
                             "S_t = (eta_i / eta_t) S_i, C_t = -cos(theta_t) n, T = C_t + S_t", sT,
