@@ -84,6 +84,22 @@ plant "hint: l with t_m of the wrong sign" 02_sphere sphere.c \
 plant "hint: l with t_m not divided by A" 02_sphere sphere.c \
     's|vec3_scale(r.d, -B / A)|vec3_scale(r.d, -B)|' \
     test_roots_robust "" "divided by A = d\.d"
+# The textbook roots and the stable pair: A in its places, R squared, t0 and t1 of the pair.
+plant "hint: the textbook roots not divided by A" 02_sphere sphere.c \
+    's|\*t0 = (-B - root) / A;|*t0 = (-B - root);|; s|\*t1 = (-B + root) / A;|*t1 = (-B + root);|' \
+    test_roots_textbook "" "the roots not divided by A = d\.d"
+plant "hint: the textbook discriminant without A" 02_sphere sphere.c \
+    's|real disc = B \* B - A \* C;|real disc = B * B - C;|' \
+    test_roots_textbook "" "disc = B\^2 - A C: the factor A is missing"
+plant "hint: the robust discriminant with R, not R^2" 02_sphere sphere.c \
+    's|real disc = A \* (s->radius \* s->radius - vec3_dot(l, l));|real disc = A * (s->radius - vec3_dot(l, l));|' \
+    test_roots_robust "" "R squared, not R"
+plant "hint: the stable pair's t1 = C / A" 02_sphere sphere.c \
+    's|\*t1 = q != 0 ? C / q : \*t0;|*t1 = C / A;|' \
+    test_roots_robust "" "t1 = C / q, not C / A"
+plant "hint: the stable pair's t0 = -q / A" 02_sphere sphere.c \
+    's|\*t0 = q / A;|*t0 = -q / A;|' \
+    test_roots_robust "" "the minus sign is inside q"
 # Chapter 03: which comparison let a false hit in, or kept a hit out.
 plant "hint: the triangle's edges open" 03_triangle triangle.c \
     's|gamma >= 0 \&\& gamma <= 1|gamma > 0 \&\& gamma < 1|; s|beta >= 0 \&\& beta + gamma <= 1|beta > 0 \&\& beta + gamma < 1|' \
@@ -195,6 +211,22 @@ plant "hint: the transmitted ray along d" 09_refraction shade_glass.c \
 plant "hint: the reflected glass ray with weight 1 - R" 09_refraction shade_glass.c \
     's|mirror_radiance(tr, sp, R, depth|mirror_radiance(tr, sp, T, depth|' \
     test_glass_weights "" "not 1 - R, which is 0 here"
+# refract: the signs and squares of the cosines, and r in n's coefficient.
+plant "hint: cos(theta_i) = d . n" 09_refraction refract.c \
+    's|real cos_i = -vec3_dot(d, n);|real cos_i = vec3_dot(d, n);|' \
+    test_snell_law "" "cos\(theta_i\) = d \. n has the wrong sign"
+plant "hint: cos(theta_t) without the square root" 09_refraction refract.c \
+    's|\*cos_t = real_sqrt(cos2_t);|*cos_t = cos2_t;|' \
+    test_snell_law "" "the square root left out"
+plant "hint: cos^2(theta_t) with r for r^2" 09_refraction refract.c \
+    's|real cos2_t = (1 - r \* r) + r \* r \* (cos_i \* cos_i);|real cos2_t = (1 - r) + r * (cos_i * cos_i);|' \
+    test_snell_law "" "r\^2, not r"
+plant "hint: n's coefficient without r" 09_refraction refract.c \
+    's|vec3_scale(n, r \* cos_i - \*cos_t)|vec3_scale(n, cos_i - *cos_t)|' \
+    test_snell_law "" "n's coefficient without r"
+plant "hint: cos(theta_t) taken as cos(theta_i)" 09_refraction refract.c \
+    's|\*cos_t = real_sqrt(cos2_t);|*cos_t = cos_i + 0 * cos2_t;|' \
+    test_snell_law "" "cos\(theta_t\) taken as cos\(theta_i\)"
 # Glass: R and 1 - R swapped; each ray's path coefficient 1 instead of its weight.
 plant "hint: the glass weights swapped" 09_refraction shade_glass.c \
     's|L = color_mul(R, mirror_radiance|L = color_mul(T, mirror_radiance|; s|color_mul(T, transmitted_radiance|color_mul(R, transmitted_radiance|' \
