@@ -202,6 +202,12 @@ plant "hint: Schlick's power 4" 09_refraction fresnel.c \
 plant "hint: Schlick without 1 - R_0" 09_refraction fresnel.c \
     's|R_0 + (1 - R_0) \* m|R_0 + m|' \
     test_schlick_cosines "" "\(1 - R_0\) missing"
+plant "hint: Schlick's power of cos, not 1 - cos" 09_refraction fresnel.c \
+    's|real m = 1 - (eta_i <= eta_t ? cos_i : cos_t);|real m = (eta_i <= eta_t ? cos_i : cos_t);|' \
+    test_schlick_cosines "" "cos\^5: the power is of 1 - cos"
+plant "hint: Schlick's r over eta_t alone" 09_refraction fresnel.c \
+    's|real r = (eta_i - eta_t) / (eta_i + eta_t);|real r = (eta_i - eta_t) / eta_t;|' \
+    test_fresnel_normal_incidence "" "the sum eta_i \+ eta_t goes below"
 plant "hint: depth + 1 given to the glass rays" 09_refraction shade_glass.c \
     's|R, depth, rays|R, depth + 1, rays|; s|T, depth, rays|T, depth + 1, rays|' \
     test_glass_weights "" "depth \+ 1 given"

@@ -264,7 +264,13 @@ static void test_fresnel_normal_incidence(void **state)
     assert_close_why(0.04, fresnel_exact(1, 1, 1, (real)1.5), TOL(1), "fresnel_exact(cos_i = 1, cos_t = 1, 1, 1.5)",
                      "R = (r_s^2 + r_p^2) / 2 = ((1 - 1.5) / (1 + 1.5))^2 head on", s0, sizeof s0 / sizeof s0[0]);
     assert_close(0.04, fresnel_exact(1, 1, (real)1.5, 1), TOL(1));
-    assert_close(0.04, fresnel_schlick(1, 1, 1, (real)1.5), TOL(1));
+    const suspect s0_schlick[] = {
+        {1, "cos^5: the power is of 1 - cos, which is 0 head on, so that R = R_0"},
+        {1 / 9.0, "r = (eta_i - eta_t) / eta_t: the sum eta_i + eta_t goes below"},
+    };
+    assert_close_why(0.04, fresnel_schlick(1, 1, 1, (real)1.5), TOL(1), "fresnel_schlick(cos_i = 1, cos_t = 1, 1, 1.5)",
+                     "R = R_0 = ((1 - 1.5) / (1 + 1.5))^2 head on", s0_schlick,
+                     sizeof s0_schlick / sizeof s0_schlick[0]);
     assert_close(0.04, fresnel_schlick(1, 1, (real)1.5, 1), TOL(1));
     /* water: (0.33 / 2.33)^2 */
     assert_close(0.33 * 0.33 / (2.33 * 2.33), fresnel_exact(1, 1, (real)1.33, 1), TOL(1));
@@ -388,6 +394,8 @@ static void test_schlick_cosines(void **state)
         {0.2 + (1 - 0.2) * pow(1 - 0.6, 5), "R_0 not squared: R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2"},
         {-0.2 + (1 + 0.2) * pow(1 - 0.6, 5), "R_0 not squared: R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2"},
         {R_0 + pow(1 - 0.6, 5), "(1 - R_0) missing: R = R_0 + (1 - R_0) (1 - cos)^5 reaches 1 at grazing"},
+        {R_0 + (1 - R_0) * pow(0.6, 5), "cos^5: the power is of 1 - cos, so that R = R_0 head on"},
+        {1 / 9.0 + 8 / 9.0 * pow(1 - 0.6, 5), "r = (eta_i - eta_t) / eta_t: the sum eta_i + eta_t goes below"},
     };
     assert_close_why(R_0 + (1 - R_0) * pow(1 - 0.6, 5), fresnel_schlick(c, c_t, 1, (real)1.5), TOL(1),
                      "fresnel_schlick(cos_i = 0.6, cos_t = 0.3, 1, 1.5)", "R = R_0 + (1 - R_0) (1 - cos)^5", s_in,
