@@ -145,6 +145,9 @@ plant "hint: l points away from the light (the light behind)" 05_lambert lambert
 plant "hint: the cosine not clamped (the built-in scene)" 05_lambert lambert.c \
     's|real cos_theta = real_fmax(0, vec3_dot(n, l));|real cos_theta = vec3_dot(n, l);|' \
     test_builtin_scene_rays "" "the cosine not clamped"
+plant "hint: L_d clamped to 1" 05_lambert lambert.c \
+    's|return color_scale(color_mul(k_d, light->intensity), cos_theta / r2);|color c = color_scale(color_mul(k_d, light->intensity), cos_theta / r2); return color_make(real_fmin(c.r, 1), real_fmin(c.g, 1), real_fmin(c.b, 1));|' \
+    test_inverse_square "" "clamped to 1: a radiance may exceed 1"
 # The shadow ray built by hand from the hit point: acne, and spawn_ray_to named.
 plant "hint: a shadow ray from the hit point itself" 06_shadows shadow.c \
     's|ray shadow = spawn_ray_to(sp, light_pos, policy, &t_max);|(void)policy; t_max = 1; ray shadow = {sp->hit.point, vec3_sub(light_pos, sp->hit.point)};|' \
