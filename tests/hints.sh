@@ -126,6 +126,28 @@ plant "hint: the closest-hit loop stops at the first hit" 04_many_shapes closest
 plant "hint: t_best not shrunk" 04_many_shapes closest_hit.c \
     's|t_best = candidate.t;||' \
     test_closest_hit_in_any_order "" "later in the list replaced the closer"
+# The loop's index, window, found flag and bounds; the first of two at the same t.
+plant "hint: the surface's index not set" 04_many_shapes closest_hit.c \
+    's|candidate.surface = k;||' \
+    test_empty_and_single "" "hit->surface is no index of the list"
+plant "hint: t_best started at infinity" 04_many_shapes closest_hit.c \
+    's|real t_best = t_max;|real t_best = REAL_INFINITY; (void)t_max;|' \
+    test_t_window "" "a hit at or outside the window"
+plant "hint: every surface asked from t = 0" 04_many_shapes closest_hit.c \
+    's|r, t_min, t_best, \&candidate|r, 0 * t_min, t_best, \&candidate|' \
+    test_t_window "" "pass t_min on unchanged"
+plant "hint: the loop from k = 1" 04_many_shapes closest_hit.c \
+    's|int k = 0;|int k = 1;|' \
+    test_closest_hit_in_any_order "" "a surface of the list never asked"
+plant "hint: the loop to k < n - 1" 04_many_shapes closest_hit.c \
+    's|k < list->n;|k < list->n - 1;|' \
+    test_empty_and_single "" "a surface of the list never asked"
+plant "hint: found set back to false by a miss" 04_many_shapes closest_hit.c \
+    's|if (surface_intersect(\&list->items\[k\], list, r, t_min, t_best, \&candidate)) {|found = false; &|' \
+    test_t_window "" "never back to false"
+plant "hint: the later of two surfaces at the same t" 04_many_shapes closest_hit.c \
+    's|r, t_min, t_best, \&candidate|r, t_min, nextafter(t_best, REAL_INFINITY), \&candidate|' \
+    test_coincident_surfaces_first_wins "" "the first in the list keeps it"
 # l = light.pos - point, not divided by r, with the right 1/r^2: the numbers
 # of dividing by r instead of r^2.  Both must be named.
 plant "hint: l not normalized (the numbers of 1/r)" 05_lambert lambert.c \
