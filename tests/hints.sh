@@ -188,6 +188,16 @@ plant "hint: ambient added with each light" 07_blinn_phong shade_phong.c \
 plant "hint: the lights' loop stops at a blocked light" 07_blinn_phong shade_phong.c \
     's|result = color_add(result, light_contribution(tr, sp, shader, light));|& else break;|' \
     test_two_lights_add "" "loop stopped at the blocked first light"
+# Phong's r . v for Blinn-Phong's n . h; p as a factor; the lights' loop from k = 1.
+plant "hint: Phong's (r . v)^p" 07_blinn_phong phong.c \
+    's|vec3 h = vec3_normalize(vec3_add(v, l));|vec3 h = vec3_sub(vec3_scale(n, 2 * vec3_dot(n, l)), l);|; s|real_fmax(0, vec3_dot(n, h))|real_fmax(0, vec3_dot(v, h))|' \
+    test_half_vector "" "Phong's \(r \. v\)\^p"
+plant "hint: p as a factor" 07_blinn_phong phong.c \
+    's|real_pow(real_fmax(0, vec3_dot(n, h)), p)|p * real_fmax(0, vec3_dot(n, h))|' \
+    test_half_vector "" "p as a factor"
+plant "hint: the lights' loop from k = 1" 07_blinn_phong shade_phong.c \
+    's|for (int k = 0; k < tr->desc->n_lights; k++)|for (int k = 1; k < tr->desc->n_lights; k++)|' \
+    test_two_lights_add "" "only the last light: the loop starts at k = 0"
 # Chapter 08: reflect keeps |d| and the sign; the mirror ray turns about sp->n,
 # starts from t = 0 and carries k_m.
 plant "hint: reflect of a normalized d" 08_mirrors mirror.c \
