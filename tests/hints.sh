@@ -215,6 +215,13 @@ plant "hint: the mirror ray traced from t_min > 0" 08_mirrors mirror.c \
 plant "hint: path_next asked with 1 instead of k_m" 08_mirrors mirror.c \
     's|path_next(tr, depth, k_m, \&next)|path_next(tr, depth, color_make(k_m.r * 0 + 1, 1, 1), \&next)|' \
     test_mirror_ray_reaches_probe "" "path_next asked with 1 instead of k_m"
+# The mirror ray counted before path_next decides; path_next asked one level deeper.
+plant "hint: the mirror ray counted before path_next" 08_mirrors mirror.c \
+    's|^    ++rays\[RAY_REFLECTED\];$||; s|^    tracer next;$|    tracer next; ++rays[RAY_REFLECTED];|' \
+    test_furnace_mirror_sphere "" "counted though path_next did not cast it"
+plant "hint: path_next asked with depth + 1" 08_mirrors mirror.c \
+    's|path_next(tr, depth, k_m, \&next)|path_next(tr, depth + 1, k_m, \&next)|' \
+    test_facing_mirrors_depth_and_weight "" "one level short"
 # Chapter 09: refract's rounding and r; Fresnel's squares; Schlick's terms; the glass rays.
 plant "hint: cos^2(theta_t) not grouped for r = 1" 09_refraction refract.c \
     's|(1 - r \* r) + r \* r \* (cos_i \* cos_i)|1 - r * r * (1 - cos_i * cos_i)|' \
