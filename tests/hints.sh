@@ -119,6 +119,13 @@ plant "hint: the triangle's t == t_max accepted" 03_triangle triangle.c \
 plant "hint: beta and gamma swapped" 03_triangle triangle.c \
     's|.beta = beta, .gamma = gamma|.beta = gamma, .gamma = beta|' \
     test_vertices_and_edge_midpoints "" "beta and gamma swapped"
+# A column of Cramer's rule with the wrong sign: a point inside missed, a point outside hit.
+plant "hint: a - p taken as p - a" 03_triangle triangle.c \
+    's|vec3 a_p = vec3_sub(tri->a, r.p);|vec3 a_p = vec3_sub(r.p, tri->a);|' \
+    test_centroid "" "a point inside missed: .*column of the wrong sign"
+plant "hint: gamma's columns swapped" 03_triangle triangle.c \
+    's|det3(a_b, a_p, r.d) / M|det3(a_b, r.d, a_p) / M|' \
+    test_just_outside "" "a point outside reported with t, beta and gamma in range: a column"
 # Chapter 04: the loop over the list stops early, or lets a farther hit replace a closer one.
 plant "hint: the closest-hit loop stops at the first hit" 04_many_shapes closest_hit.c \
     's|found = true;|found = true; break;|' \
