@@ -181,6 +181,13 @@ plant "hint: L_d clamped to 1" 05_lambert lambert.c \
 plant "hint: a shadow ray from the hit point itself" 06_shadows shadow.c \
     's|ray shadow = spawn_ray_to(sp, light_pos, policy, &t_max);|(void)policy; t_max = 1; ray shadow = {sp->hit.point, vec3_sub(light_pos, sp->hit.point)};|' \
     test_no_acne_no_leak "" "% acne" "likely mistake: .*spawn_ray_to"
+# A light in the surface's plane taken as in front; a ray counted for a light behind.
+plant "hint: a light in the surface's plane in front" 06_shadows shadow.c \
+    's|vec3_sub(light_pos, sp->hit.point)) > 0))|vec3_sub(light_pos, sp->hit.point)) >= 0))|' \
+    test_light_behind_the_surface "" "> 0, not >= 0"
+plant "hint: a shadow ray counted for a light behind" 06_shadows shadow.c \
+    's|^    ++rays\[RAY_SHADOW\];$||; s|if (!(vec3_dot(sp->n|++rays[RAY_SHADOW]; &|' \
+    test_light_behind_the_surface "" "no shadow ray towards a light behind the surface"
 # x^p by a loop of products: right for whole p only.
 plant "hint: x^p by an integer loop" 07_blinn_phong phong.c \
     's|real highlight = real_pow(real_fmax(0, vec3_dot(n, h)), p);|real highlight = 1; for (int i = 0; i < p; i++) highlight *= real_fmax(0, vec3_dot(n, h));|' \
