@@ -109,7 +109,7 @@ plant "hint: the orthographic d scaled by projDistance" 01_camera_rays camera.c 
     's|r.d = vec3_neg(cam->w);|r.d = vec3_scale(cam->w, -cam->d);|' \
     test_orthographic_rays "" "d scaled by projDistance"
 plant "hint: du ignored" 01_camera_rays pixel.c \
-    's|\*u = ((real)i + du) / (real)nx;|*u = ((real)i + (real)0.5) / (real)nx; (void)du;|; s|\*v = ((real)j + dv) / (real)ny;|*v = ((real)j + (real)0.5) / (real)ny; (void)dv;|' \
+    's|(real)i + du)|(real)i + (real)0.5 + 0 * du)|; s|(real)j + dv)|(real)j + (real)0.5 + 0 * dv)|' \
     test_pixel_sample_offsets "" "du ignored"
 plant "hint: divided by n_x - 1" 01_camera_rays pixel.c \
     's|(real)nx;|(real)(nx - 1);|; s|(real)ny;|(real)(ny - 1);|' \
@@ -118,13 +118,13 @@ plant "hint: v flipped in the mapping" 01_camera_rays pixel.c \
     's|\*v = ((real)j + dv) / (real)ny;|*v = 1 - ((real)j + dv) / (real)ny;|' \
     test_pixel_centres "" "v flipped: j = 0 is the bottom row"
 plant "hint: integer division" 01_camera_rays pixel.c \
-    's|\*u = ((real)i + du) / (real)nx;|*u = (real)(i / nx) + du / (real)nx;|; s|\*v = ((real)j + dv) / (real)ny;|*v = (real)(j / ny) + dv / (real)ny;|' \
+    's|((real)i + du) / (real)nx|(real)(i / nx) + du / (real)nx|; s|((real)j + dv) / (real)ny|(real)(j / ny) + dv / (real)ny|' \
     test_pixel_centres "" "integer division"
 plant "hint: u and v swapped" 01_camera_rays pixel.c \
-    's|\*u = ((real)i + du) / (real)nx;|*u = ((real)j + dv) / (real)ny;|; s|\*v = ((real)j + dv) / (real)ny;|*v = ((real)i + du) / (real)nx;|' \
+    's|u = ((real)i + du) / (real)nx|u = ((real)j + dv) / (real)ny|; s|v = ((real)j + dv) / (real)ny|v = ((real)i + du) / (real)nx|' \
     test_pixel_centres "" "u and v swapped: u goes with the column i"
 plant "hint: du and dv swapped" 01_camera_rays pixel.c \
-    's|\*u = ((real)i + du) / (real)nx;|*u = ((real)i + dv) / (real)nx;|; s|\*v = ((real)j + dv) / (real)ny;|*v = ((real)j + du) / (real)ny;|' \
+    's|(real)i + du)|(real)i + dv)|; s|(real)j + dv)|(real)j + du)|' \
     test_pixel_sample_offsets "" "du and dv swapped"
 # Chapter 02: a tangent ray is a hit; the robust discriminant's foot of the perpendicular.
 plant "hint: a tangent ray refused by disc > 0" 02_sphere sphere.c \
