@@ -204,6 +204,12 @@ plant "hint: t0 taken as the nearer root" 02_sphere sphere.c \
 plant "hint: the far root first" 02_sphere sphere.c \
     's|real near = real_fmin(t0, t1), far = real_fmax(t0, t1);|real near = real_fmax(t0, t1), far = real_fmin(t0, t1);|' \
     test_nearest_root "" "took the far root"
+plant "hint: the robust discriminant's sign reversed" 02_sphere sphere.c \
+    's|real disc = A \* (s->radius \* s->radius - vec3_dot(l, l));|real disc = A * (vec3_dot(l, l) - s->radius * s->radius);|' \
+    test_roots_robust "" "the discriminant's sign reversed"
+plant "hint: the textbook discriminant's sign reversed" 02_sphere sphere.c \
+    's|real disc = B \* B - A \* C;|real disc = A * C - B * B;|' \
+    test_roots_textbook "" "the discriminant's sign reversed"
 # Chapter 03: which comparison let a false hit in, or kept a hit out.
 plant "hint: the triangle's edges open" 03_triangle triangle.c \
     's|gamma >= 0 \&\& gamma <= 1|gamma > 0 \&\& gamma < 1|; s|beta >= 0 \&\& beta + gamma <= 1|beta > 0 \&\& beta + gamma < 1|' \
