@@ -224,6 +224,8 @@ static void expect_roots(const sphere *s, ray r, sphere_formula f, double tolera
         {pair(A, B, C * A), "disc = A (R^2 - l.l): R^2 - l.l times A, not C times A"},
         {vec3_make(0, 0, 0), "no real roots reported as a double root at 0, or roots not written"},
         {vec3_scale(expected, (real)A), "the roots not divided by A = d.d: t = (-B -+ sqrt(disc)) / A"},
+        {roots_from(sqrtl(A), B, B * B - sqrtl(A) * C), "A = d.d, the squared length of d, not |d|"},
+        {pair(A, 2 * B, C), "B = d.f, not 2 d.f: the equation A t^2 + 2 B t + C = 0 holds the 2 already"},
         {roots_from(A, B, B * B - C), "disc = B^2 - A C: the factor A is missing (d is not a unit vector here)"},
         {stable(A, B, C, B * B - A * (C + R2 - s->radius)), "disc = A (R^2 - l.l): R squared, not R"},
         {vec3_make((real)fminl(q / A, c_over_a), (real)fmaxl(q / A, c_over_a), 0),
