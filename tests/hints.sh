@@ -126,6 +126,9 @@ plant "hint: u and v swapped" 01_camera_rays pixel.c \
 plant "hint: du and dv swapped" 01_camera_rays pixel.c \
     's|(real)i + du)|(real)i + dv)|; s|(real)j + dv)|(real)j + du)|' \
     test_pixel_sample_offsets "" "du and dv swapped"
+plant "hint: u_s = u viewWidth - 1/2" 01_camera_rays camera.c \
+    's|real us = (u - (real)0.5) \* cam->width;|real us = u * cam->width - (real)0.5;|; s|real vs = (v - (real)0.5) \* cam->height;|real vs = v * cam->height - (real)0.5;|' \
+    test_perspective_rays "" "u_s = u viewWidth - 1/2"
 # Chapter 02: a tangent ray is a hit; the robust discriminant's foot of the perpendicular.
 plant "hint: a tangent ray refused by disc > 0" 02_sphere sphere.c \
     's|if (!(disc >= 0))$|if (!(disc > 0))|' \
@@ -210,6 +213,12 @@ plant "hint: the robust discriminant's sign reversed" 02_sphere sphere.c \
 plant "hint: the textbook discriminant's sign reversed" 02_sphere sphere.c \
     's|real disc = B \* B - A \* C;|real disc = A * C - B * B;|' \
     test_roots_textbook "" "the discriminant's sign reversed"
+plant "hint: the textbook A = |d|" 02_sphere sphere.c \
+    '0,/real A = vec3_dot(r.d, r.d);/s//real A = vec3_length(r.d);/' \
+    test_roots_textbook "" "A = d\.d, the squared length of d, not \|d\|"
+plant "hint: the textbook B = 2 d.f" 02_sphere sphere.c \
+    '0,/real B = vec3_dot(r.d, f);/s//real B = 2 * vec3_dot(r.d, f);/' \
+    test_roots_textbook "" "B = d\.f, not 2 d\.f"
 # Chapter 03: which comparison let a false hit in, or kept a hit out.
 plant "hint: the triangle's edges open" 03_triangle triangle.c \
     's|gamma >= 0 \&\& gamma <= 1|gamma > 0 \&\& gamma < 1|; s|beta >= 0 \&\& beta + gamma <= 1|beta > 0 \&\& beta + gamma < 1|' \
