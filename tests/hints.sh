@@ -68,6 +68,67 @@ plant "hint: viewWidth and viewHeight swapped" 01_camera_rays camera.c \
 plant "hint: v divided by n_x" 01_camera_rays pixel.c \
     's|\*v = ((real)j + dv) / (real)ny;|*v = ((real)j + dv) / (real)nx; (void)ny;|' \
     test_pixel_centres "" "v divided by n_x"
+# The basis's signs, orders and lengths; the rays of both projections; the pixel's mapping.
+plant "hint: w along viewDir" 01_camera_rays camera.c \
+    's|\*w = vec3_neg(unit(view_dir));|*w = unit(view_dir);|' \
+    test_basis_orthonormal_right_handed "" "wrong sign of w: w = -viewDir / \|viewDir\|"
+plant "hint: u = viewUp x viewDir" 01_camera_rays camera.c \
+    's|vec3_cross(unit(view_dir), unit(view_up))|vec3_cross(unit(view_up), unit(view_dir))|' \
+    test_basis_lecture_camera "" "u points left: u = viewDir x viewUp"
+plant "hint: v = u x w" 01_camera_rays camera.c \
+    's|\*v = vec3_cross(\*w, \*u);|*v = vec3_cross(*u, *w);|' \
+    test_basis_lecture_camera "" "v points down: v = w x u"
+plant "hint: u not normalized" 01_camera_rays camera.c \
+    's|\*u = unit(vec3_cross(unit(view_dir), unit(view_up)));|*u = vec3_cross(unit(view_dir), unit(view_up));|' \
+    test_basis_lecture_camera "" "u not normalized"
+plant "hint: v taken as viewUp" 01_camera_rays camera.c \
+    's|\*v = vec3_cross(\*w, \*u);|*v = unit(view_up);|' \
+    test_basis_lecture_camera "" "v taken as viewUp"
+plant "hint: w not normalized" 01_camera_rays camera.c \
+    's|\*w = vec3_neg(unit(view_dir));|*w = vec3_neg(view_dir);|' \
+    test_basis_lecture_camera "" "w not normalized"
+plant "hint: the perspective ray along +d w" 01_camera_rays camera.c \
+    's|vec3_scale(cam->w, -cam->d)|vec3_scale(cam->w, cam->d)|' \
+    test_four_corner_rays_exactly "" "wrong sign of w: -d w"
+plant "hint: the perspective d normalized" 01_camera_rays camera.c \
+    's|r.d = vec3_add(vec3_scale(cam->w, -cam->d), offset);|r.d = vec3_normalize(vec3_add(vec3_scale(cam->w, -cam->d), offset));|' \
+    test_perspective_rays "" "d normalized: keep d = -d w"
+plant "hint: the image rectangle not centred" 01_camera_rays camera.c \
+    's|real us = (u - (real)0.5) \* cam->width;|real us = u * cam->width;|; s|real vs = (v - (real)0.5) \* cam->height;|real vs = v * cam->height;|' \
+    test_perspective_rays "" "the rectangle not centred on the view direction"
+plant "hint: v_s flipped in the camera" 01_camera_rays camera.c \
+    's|real vs = (v - (real)0.5) \* cam->height;|real vs = ((real)0.5 - v) * cam->height;|' \
+    test_perspective_rays "" "v flipped: \+ v_s v"
+plant "hint: the orthographic ray along +w" 01_camera_rays camera.c \
+    's|r.d = vec3_neg(cam->w);|r.d = cam->w;|' \
+    test_orthographic_rays "" "wrong sign of w: the camera looks along -w, d = -w"
+plant "hint: the orthographic rays from the eye" 01_camera_rays camera.c \
+    's|r.p = vec3_add(cam->e, offset);|r.p = cam->e; (void)offset;|' \
+    test_orthographic_rays "" "every ray starts at the eye"
+plant "hint: the orthographic d scaled by projDistance" 01_camera_rays camera.c \
+    's|r.d = vec3_neg(cam->w);|r.d = vec3_scale(cam->w, -cam->d);|' \
+    test_orthographic_rays "" "d scaled by projDistance"
+plant "hint: du ignored" 01_camera_rays pixel.c \
+    's|(real)i + du)|(real)i + (real)0.5 + 0 * du)|; s|(real)j + dv)|(real)j + (real)0.5 + 0 * dv)|' \
+    test_pixel_sample_offsets "" "du ignored"
+plant "hint: divided by n_x - 1" 01_camera_rays pixel.c \
+    's|(real)nx;|(real)(nx - 1);|; s|(real)ny;|(real)(ny - 1);|' \
+    test_pixel_centres "" "divided by n_x - 1"
+plant "hint: v flipped in the mapping" 01_camera_rays pixel.c \
+    's|\*v = ((real)j + dv) / (real)ny;|*v = 1 - ((real)j + dv) / (real)ny;|' \
+    test_pixel_centres "" "v flipped: j = 0 is the bottom row"
+plant "hint: integer division" 01_camera_rays pixel.c \
+    's|((real)i + du) / (real)nx|(real)(i / nx) + du / (real)nx|; s|((real)j + dv) / (real)ny|(real)(j / ny) + dv / (real)ny|' \
+    test_pixel_centres "" "integer division"
+plant "hint: u and v swapped" 01_camera_rays pixel.c \
+    's|u = ((real)i + du) / (real)nx|u = ((real)j + dv) / (real)ny|; s|v = ((real)j + dv) / (real)ny|v = ((real)i + du) / (real)nx|' \
+    test_pixel_centres "" "u and v swapped: u goes with the column i"
+plant "hint: du and dv swapped" 01_camera_rays pixel.c \
+    's|(real)i + du)|(real)i + dv)|; s|(real)j + dv)|(real)j + du)|' \
+    test_pixel_sample_offsets "" "du and dv swapped"
+plant "hint: u_s = u viewWidth - 1/2" 01_camera_rays camera.c \
+    's|real us = (u - (real)0.5) \* cam->width;|real us = u * cam->width - (real)0.5;|; s|real vs = (v - (real)0.5) \* cam->height;|real vs = v * cam->height - (real)0.5;|' \
+    test_perspective_rays "" "u_s = u viewWidth - 1/2"
 # Chapter 02: a tangent ray is a hit; the robust discriminant's foot of the perpendicular.
 plant "hint: a tangent ray refused by disc > 0" 02_sphere sphere.c \
     's|if (!(disc >= 0))$|if (!(disc > 0))|' \
@@ -84,6 +145,80 @@ plant "hint: l with t_m of the wrong sign" 02_sphere sphere.c \
 plant "hint: l with t_m not divided by A" 02_sphere sphere.c \
     's|vec3_scale(r.d, -B / A)|vec3_scale(r.d, -B)|' \
     test_roots_robust "" "divided by A = d\.d"
+# The textbook roots and the stable pair: A in its places, R squared, t0 and t1 of the pair.
+plant "hint: the textbook roots not divided by A" 02_sphere sphere.c \
+    's|\*t0 = (-B - root) / A;|*t0 = (-B - root);|; s|\*t1 = (-B + root) / A;|*t1 = (-B + root);|' \
+    test_roots_textbook "" "the roots not divided by A = d\.d"
+plant "hint: the textbook discriminant without A" 02_sphere sphere.c \
+    's|real disc = B \* B - A \* C;|real disc = B * B - C;|' \
+    test_roots_textbook "" "disc = B\^2 - A C: the factor A is missing"
+plant "hint: the robust discriminant with R, not R^2" 02_sphere sphere.c \
+    's|real disc = A \* (s->radius \* s->radius - vec3_dot(l, l));|real disc = A * (s->radius - vec3_dot(l, l));|' \
+    test_roots_robust "" "R squared, not R"
+plant "hint: the stable pair's t1 = C / A" 02_sphere sphere.c \
+    's|\*t1 = q != 0 ? C / q : \*t0;|*t1 = C / A;|' \
+    test_roots_robust "" "t1 = C / q, not C / A"
+plant "hint: the stable pair's t0 = -q / A" 02_sphere sphere.c \
+    's|\*t0 = q / A;|*t0 = -q / A;|' \
+    test_roots_robust "" "the minus sign is inside q"
+# f's sign, the robust discriminant and pair, the normal, the window and the choice of root.
+plant "hint: f = c - p" 02_sphere sphere.c \
+    '0,/vec3 f = vec3_sub(r.p, s->center);/s//vec3 f = vec3_sub(s->center, r.p);/' \
+    test_roots_textbook "" "the roots are negated: f = p - c"
+plant "hint: the robust discriminant without A" 02_sphere sphere.c \
+    's|real disc = A \* (s->radius \* s->radius - vec3_dot(l, l));|real disc = s->radius * s->radius - vec3_dot(l, l); (void)A;|' \
+    test_roots_robust "" "disc = A \(R\^2 - l\.l\): the factor A is missing"
+plant "hint: the small root by the textbook formula" 02_sphere sphere.c \
+    's|real q = -(B + (B < 0 ? -root : root));|real q = -(B + (B < 0 ? root : -root));|' \
+    test_small_root_near_surface "" "the small root computed as \(-B -\+ sqrt\(disc\)\) / A cancels"
+plant "hint: t1 = q / C" 02_sphere sphere.c \
+    's|\*t1 = q != 0 ? C / q : \*t0;|*t1 = q / C;|' \
+    test_roots_robust "" "t1 = C / q \(the product of the roots is C / A\), not q / C"
+plant "hint: t1 = C / q with q = 0" 02_sphere sphere.c \
+    's|\*t1 = q != 0 ? C / q : \*t0;|*t1 = C / q;|' \
+    test_b_zero_sign "" "t1 = C / q with q = 0 is 0 / 0 = NaN"
+plant "hint: no bound (6) on t1" 02_sphere sphere.c \
+    's|if (\*t1 \* \*t1 \* A > real_abs(C))|if (0)|' \
+    test_tangent_rays_from_the_surface "" "t1 = C / q without the bound \(6\)"
+plant "hint: the normal divided by R" 02_sphere sphere.c \
+    's|return length > 0 ? vec3_scale(m, 1 / length) : m;|return vec3_scale(m, 1 / s->radius); (void)length;|' \
+    test_normal_unit_far_from_origin "" "divided by R: x is on the sphere only up to rounding"
+plant "hint: the normal inwards" 02_sphere sphere.c \
+    's|vec3 m = vec3_sub(x, s->center);|vec3 m = vec3_sub(s->center, x);|' \
+    test_normal_unit_far_from_origin "" "the normal points inwards"
+plant "hint: the normal not normalized" 02_sphere sphere.c \
+    's|return length > 0 ? vec3_scale(m, 1 / length) : m;|return m; (void)length;|' \
+    test_normal_unit_far_from_origin "" "not normalized: n = \(x - c\) / \|x - c\|"
+plant "hint: the normal NaN at the centre" 02_sphere sphere.c \
+    's|return length > 0 ? vec3_scale(m, 1 / length) : m;|return vec3_scale(m, 1 / length);|' \
+    test_normal_unit_far_from_origin "" "divided by \|x - c\| = 0"
+plant "hint: the sphere's t == t_min accepted" 02_sphere sphere.c \
+    's|if (near > t_min \&\& near < t_max)|if (near >= t_min \&\& near < t_max)|; s|if (far > t_min \&\& far < t_max)|if (far >= t_min \&\& far < t_max)|' \
+    test_nearest_root "" "accepted t == t_min: the window \(t_min, t_max\) is open"
+plant "hint: the sphere's t == t_max accepted" 02_sphere sphere.c \
+    's|if (near > t_min \&\& near < t_max)|if (near > t_min \&\& near <= t_max)|; s|if (far > t_min \&\& far < t_max)|if (far > t_min \&\& far <= t_max)|' \
+    test_nearest_root "" "accepted t == t_max \(or t_max ignored\)"
+plant "hint: no far root from inside" 02_sphere sphere.c \
+    's|if (far > t_min \&\& far < t_max)|if (0 \&\& far > t_min)|' \
+    test_nearest_root "" "no hit when the near root is before t_min"
+plant "hint: t0 taken as the nearer root" 02_sphere sphere.c \
+    's|real near = real_fmin(t0, t1), far = real_fmax(t0, t1);|real near = t0, far = t1;|' \
+    test_nearest_root "" "assumed t0 is the nearer root"
+plant "hint: the far root first" 02_sphere sphere.c \
+    's|real near = real_fmin(t0, t1), far = real_fmax(t0, t1);|real near = real_fmax(t0, t1), far = real_fmin(t0, t1);|' \
+    test_nearest_root "" "took the far root"
+plant "hint: the robust discriminant's sign reversed" 02_sphere sphere.c \
+    's|real disc = A \* (s->radius \* s->radius - vec3_dot(l, l));|real disc = A * (vec3_dot(l, l) - s->radius * s->radius);|' \
+    test_roots_robust "" "the discriminant's sign reversed"
+plant "hint: the textbook discriminant's sign reversed" 02_sphere sphere.c \
+    's|real disc = B \* B - A \* C;|real disc = A * C - B * B;|' \
+    test_roots_textbook "" "the discriminant's sign reversed"
+plant "hint: the textbook A = |d|" 02_sphere sphere.c \
+    '0,/real A = vec3_dot(r.d, r.d);/s//real A = vec3_length(r.d);/' \
+    test_roots_textbook "" "A = d\.d, the squared length of d, not \|d\|"
+plant "hint: the textbook B = 2 d.f" 02_sphere sphere.c \
+    '0,/real B = vec3_dot(r.d, f);/s//real B = 2 * vec3_dot(r.d, f);/' \
+    test_roots_textbook "" "B = d\.f, not 2 d\.f"
 # Chapter 03: which comparison let a false hit in, or kept a hit out.
 plant "hint: the triangle's edges open" 03_triangle triangle.c \
     's|gamma >= 0 \&\& gamma <= 1|gamma > 0 \&\& gamma < 1|; s|beta >= 0 \&\& beta + gamma <= 1|beta > 0 \&\& beta + gamma < 1|' \
@@ -103,6 +238,13 @@ plant "hint: the triangle's t == t_max accepted" 03_triangle triangle.c \
 plant "hint: beta and gamma swapped" 03_triangle triangle.c \
     's|.beta = beta, .gamma = gamma|.beta = gamma, .gamma = beta|' \
     test_vertices_and_edge_midpoints "" "beta and gamma swapped"
+# A column of Cramer's rule with the wrong sign: a point inside missed, a point outside hit.
+plant "hint: a - p taken as p - a" 03_triangle triangle.c \
+    's|vec3 a_p = vec3_sub(tri->a, r.p);|vec3 a_p = vec3_sub(r.p, tri->a);|' \
+    test_centroid "" "a point inside missed: .*column of the wrong sign"
+plant "hint: gamma's columns swapped" 03_triangle triangle.c \
+    's|det3(a_b, a_p, r.d) / M|det3(a_b, r.d, a_p) / M|' \
+    test_just_outside "" "a point outside reported with t, beta and gamma in range: a column"
 # Chapter 04: the loop over the list stops early, or lets a farther hit replace a closer one.
 plant "hint: the closest-hit loop stops at the first hit" 04_many_shapes closest_hit.c \
     's|found = true;|found = true; break;|' \
@@ -110,6 +252,28 @@ plant "hint: the closest-hit loop stops at the first hit" 04_many_shapes closest
 plant "hint: t_best not shrunk" 04_many_shapes closest_hit.c \
     's|t_best = candidate.t;||' \
     test_closest_hit_in_any_order "" "later in the list replaced the closer"
+# The loop's index, window, found flag and bounds; the first of two at the same t.
+plant "hint: the surface's index not set" 04_many_shapes closest_hit.c \
+    's|candidate.surface = k;||' \
+    test_empty_and_single "" "hit->surface is no index of the list"
+plant "hint: t_best started at infinity" 04_many_shapes closest_hit.c \
+    's|real t_best = t_max;|real t_best = REAL_INFINITY; (void)t_max;|' \
+    test_t_window "" "a hit at or outside the window"
+plant "hint: every surface asked from t = 0" 04_many_shapes closest_hit.c \
+    's|r, t_min, t_best, \&candidate|r, 0 * t_min, t_best, \&candidate|' \
+    test_t_window "" "pass t_min on unchanged"
+plant "hint: the loop from k = 1" 04_many_shapes closest_hit.c \
+    's|int k = 0;|int k = 1;|' \
+    test_closest_hit_in_any_order "" "a surface of the list never asked"
+plant "hint: the loop to k < n - 1" 04_many_shapes closest_hit.c \
+    's|k < list->n;|k < list->n - 1;|' \
+    test_empty_and_single "" "a surface of the list never asked"
+plant "hint: found set back to false by a miss" 04_many_shapes closest_hit.c \
+    's|if (surface_intersect(\&list->items\[k\], list, r, t_min, t_best, \&candidate)) {|found = false; &|' \
+    test_t_window "" "never back to false"
+plant "hint: the later of two surfaces at the same t" 04_many_shapes closest_hit.c \
+    's|r, t_min, t_best, \&candidate|r, t_min, nextafter(t_best, REAL_INFINITY), \&candidate|' \
+    test_coincident_surfaces_first_wins "" "the first in the list keeps it"
 # l = light.pos - point, not divided by r, with the right 1/r^2: the numbers
 # of dividing by r instead of r^2.  Both must be named.
 plant "hint: l not normalized (the numbers of 1/r)" 05_lambert lambert.c \
@@ -129,10 +293,55 @@ plant "hint: l points away from the light (the light behind)" 05_lambert lambert
 plant "hint: the cosine not clamped (the built-in scene)" 05_lambert lambert.c \
     's|real cos_theta = real_fmax(0, vec3_dot(n, l));|real cos_theta = vec3_dot(n, l);|' \
     test_builtin_scene_rays "" "the cosine not clamped"
+plant "hint: L_d clamped to 1" 05_lambert lambert.c \
+    's|return color_scale(color_mul(k_d, light->intensity), cos_theta / r2);|color c = color_scale(color_mul(k_d, light->intensity), cos_theta / r2); return color_make(real_fmin(c.r, 1), real_fmin(c.g, 1), real_fmin(c.b, 1));|' \
+    test_inverse_square "" "clamped to 1: a radiance may exceed 1"
+# The falloff, k_d, a factor pi, |n . l|.
+plant "hint: no 1/r^2" 05_lambert lambert.c \
+    's|cos_theta / r2)|cos_theta)|' \
+    test_irradiance_facing "" "no falloff: divide by r\^2"
+plant "hint: k_d left out" 05_lambert lambert.c \
+    's|return color_scale(color_mul(k_d, light->intensity), cos_theta / r2);|(void)k_d; return color_scale(light->intensity, cos_theta / r2);|' \
+    test_irradiance_facing "" "k_d missing"
+plant "hint: divided by pi" 05_lambert lambert.c \
+    's|cos_theta / r2)|cos_theta / r2 / (real)3.14159265358979)|' \
+    test_irradiance_facing "" "divided by pi"
+plant "hint: |n . l|" 05_lambert lambert.c \
+    's|real_fmax(0, vec3_dot(n, l))|real_abs(vec3_dot(n, l))|' \
+    test_cosine_law "" "\|n \. l\|: a light behind the surface gives nothing"
 # The shadow ray built by hand from the hit point: acne, and spawn_ray_to named.
 plant "hint: a shadow ray from the hit point itself" 06_shadows shadow.c \
     's|ray shadow = spawn_ray_to(sp, light_pos, policy, &t_max);|(void)policy; t_max = 1; ray shadow = {sp->hit.point, vec3_sub(light_pos, sp->hit.point)};|' \
     test_no_acne_no_leak "" "% acne" "likely mistake: .*spawn_ray_to"
+# A light in the surface's plane taken as in front; a ray counted for a light behind.
+plant "hint: a light in the surface's plane in front" 06_shadows shadow.c \
+    's|vec3_sub(light_pos, sp->hit.point)) > 0))|vec3_sub(light_pos, sp->hit.point)) >= 0))|' \
+    test_light_behind_the_surface "" "> 0, not >= 0"
+plant "hint: a shadow ray counted for a light behind" 06_shadows shadow.c \
+    's|^    ++rays\[RAY_SHADOW\];$||; s|if (!(vec3_dot(sp->n|++rays[RAY_SHADOW]; &|' \
+    test_light_behind_the_surface "" "no shadow ray towards a light behind the surface"
+# The light behind, the shadow segment's ends, the count, the policy.
+plant "hint: no test of a light behind" 06_shadows shadow.c \
+    's|if (!(vec3_dot(sp->n, vec3_sub(light_pos, sp->hit.point)) > 0))|if (0)|' \
+    test_light_behind_the_surface "" "a light behind the surface is blocked by the surface itself"
+plant "hint: behind by the geometric normal" 06_shadows shadow.c \
+    's|vec3_dot(sp->n, vec3_sub|vec3_dot(sp->hit.normal, vec3_sub|' \
+    test_light_behind_the_surface "" "the side was judged by the geometric normal"
+plant "hint: the shadow segment to infinity" 06_shadows shadow.c \
+    's|shadow, 0, t_max, \&blocker|shadow, 0, REAL_INFINITY + 0 * t_max, \&blocker|' \
+    test_occluder_between_beyond_behind "" "not beyond the light \(t_max, not infinity\)"
+plant "hint: the shadow segment to t = 1" 06_shadows shadow.c \
+    's|shadow, 0, t_max, \&blocker|shadow, 0, 1, \&blocker|' \
+    test_shadow_ray_is_the_segment "" "the segment reaches the light"
+plant "hint: the shadow ray not counted" 06_shadows shadow.c \
+    's|++rays\[RAY_SHADOW\];|(void)rays;|' \
+    test_occluder_between_beyond_behind "" "count the shadow ray"
+plant "hint: the shadow window from an epsilon" 06_shadows shadow.c \
+    's|shadow, 0, t_max, \&blocker|shadow, (real)1e-4, t_max, \&blocker|' \
+    test_no_acne_no_leak "" "the window must be \(0, t_max\)"
+plant "hint: a policy of its own" 06_shadows shadow.c \
+    's|spawn_ray_to(sp, light_pos, policy, \&t_max)|spawn_ray_to(sp, light_pos, (eps_policy){0}, \&t_max); (void)policy|' \
+    test_shadow_ray_is_the_segment "" "leave the surface by the policy given"
 # x^p by a loop of products: right for whole p only.
 plant "hint: x^p by an integer loop" 07_blinn_phong phong.c \
     's|real highlight = real_pow(real_fmax(0, vec3_dot(n, h)), p);|real highlight = 1; for (int i = 0; i < p; i++) highlight *= real_fmax(0, vec3_dot(n, h));|' \
@@ -147,6 +356,59 @@ plant "hint: ambient added with each light" 07_blinn_phong shade_phong.c \
 plant "hint: the lights' loop stops at a blocked light" 07_blinn_phong shade_phong.c \
     's|result = color_add(result, light_contribution(tr, sp, shader, light));|& else break;|' \
     test_two_lights_add "" "loop stopped at the blocked first light"
+# Phong's r . v for Blinn-Phong's n . h; p as a factor; the lights' loop from k = 1.
+plant "hint: Phong's (r . v)^p" 07_blinn_phong phong.c \
+    's|vec3 h = vec3_normalize(vec3_add(v, l));|vec3 h = vec3_sub(vec3_scale(n, 2 * vec3_dot(n, l)), l);|; s|real_fmax(0, vec3_dot(n, h))|real_fmax(0, vec3_dot(v, h))|' \
+    test_half_vector "" "Phong's \(r \. v\)\^p"
+plant "hint: p as a factor" 07_blinn_phong phong.c \
+    's|real_pow(real_fmax(0, vec3_dot(n, h)), p)|p * real_fmax(0, vec3_dot(n, h))|' \
+    test_half_vector "" "p as a factor"
+plant "hint: the lights' loop from k = 1" 07_blinn_phong shade_phong.c \
+    's|for (int k = 0; k < tr->desc->n_lights; k++)|for (int k = 1; k < tr->desc->n_lights; k++)|' \
+    test_two_lights_add "" "only the last light: the loop starts at k = 0"
+# The half vector, the clamps, the forms, the falloff; the ambient term and the lights' loop.
+plant "hint: h = v - l" 07_blinn_phong phong.c \
+    's|vec3_normalize(vec3_add(v, l))|vec3_normalize(vec3_sub(v, l))|' \
+    test_half_vector "" "h is the sum v \+ l, not the difference"
+plant "hint: h not normalized" 07_blinn_phong phong.c \
+    's|vec3_normalize(vec3_add(v, l))|vec3_add(v, l)|' \
+    test_half_vector "" "h not normalized"
+plant "hint: h halved" 07_blinn_phong phong.c \
+    's|vec3_normalize(vec3_add(v, l))|vec3_scale(vec3_add(v, l), (real)0.5)|' \
+    test_half_vector "" "h halved"
+plant "hint: n . h not clamped" 07_blinn_phong phong.c \
+    's|real_pow(real_fmax(0, vec3_dot(n, h)), p)|real_pow(vec3_dot(n, h), p)|' \
+    test_exponent_behaviour "" "clamp n \. h before the power"
+plant "hint: the lecture's cosine not clamped" 07_blinn_phong phong.c \
+    's|highlight \*= real_fmax(0, vec3_dot(n, l));|highlight *= vec3_dot(n, l);|' \
+    test_course_and_lecture_forms "" "the lecture's cosine is max\(0, n \. l\)"
+plant "hint: the forms swapped" 07_blinn_phong phong.c \
+    's|if (form == PHONG_LECTURE)|if (form != PHONG_LECTURE)|' \
+    test_exponent_behaviour "" "times n \. l: that is the lecture's form"
+plant "hint: the specular term without 1/r^2" 07_blinn_phong phong.c \
+    's|highlight / r2)|highlight)|' \
+    test_exponent_behaviour "" "no falloff: divide by r\^2"
+plant "hint: l not normalized before h" 07_blinn_phong phong.c \
+    's|vec3 l = vec3_scale(to_light, 1 / real_sqrt(r2));|vec3 l = to_light;|' \
+    test_half_vector "" "l not normalized before the bisector"
+plant "hint: no ambient" 07_blinn_phong shade_phong.c \
+    's|color result = tr->desc->ambient;|color result = color_make(0, 0, 0);|' \
+    test_two_lights_add "" "ambient missing"
+plant "hint: ambient times k_d" 07_blinn_phong shade_phong.c \
+    's|color result = tr->desc->ambient;|color result = color_mul(tr->desc->ambient, shader->diffuse_color);|' \
+    test_ambient_and_lights_behind "" "ambient times k_d"
+plant "hint: only the first light" 07_blinn_phong shade_phong.c \
+    's|for (int k = 0; k < tr->desc->n_lights; k++)|for (int k = 0; k < 1 \&\& k < tr->desc->n_lights; k++)|' \
+    test_two_lights_add "" "only the first light: loop over all n_lights"
+plant "hint: a policy of its own for the lights" 07_blinn_phong shade_phong.c \
+    's|tracer_eps(tr), rays)|(eps_policy){0}, rays)|' \
+    test_shadow_policy_from_knobs "" "the policy was not the tracer's"
+plant "hint: no shadows" 07_blinn_phong shade_phong.c \
+    's|if (!light_blocked(tr, sp, light->position, tracer_eps(tr), rays))|(void)rays; if (1)|' \
+    test_two_lights_add "" "the blocked light was added: ask light_blocked first"
+plant "hint: the result replaced by each light" 07_blinn_phong shade_phong.c \
+    's|result = color_add(result, light_contribution(tr, sp, shader, light));|result = color_add(tr->desc->ambient, light_contribution(tr, sp, shader, light));|' \
+    test_two_lights_add "" "only the last light"
 # Chapter 08: reflect keeps |d| and the sign; the mirror ray turns about sp->n,
 # starts from t = 0 and carries k_m.
 plant "hint: reflect of a normalized d" 08_mirrors mirror.c \
@@ -164,6 +426,32 @@ plant "hint: the mirror ray traced from t_min > 0" 08_mirrors mirror.c \
 plant "hint: path_next asked with 1 instead of k_m" 08_mirrors mirror.c \
     's|path_next(tr, depth, k_m, \&next)|path_next(tr, depth, color_make(k_m.r * 0 + 1, 1, 1), \&next)|' \
     test_mirror_ray_reaches_probe "" "path_next asked with 1 instead of k_m"
+# The mirror ray counted before path_next decides; path_next asked one level deeper.
+plant "hint: the mirror ray counted before path_next" 08_mirrors mirror.c \
+    's|^    ++rays\[RAY_REFLECTED\];$||; s|^    tracer next;$|    tracer next; ++rays[RAY_REFLECTED];|' \
+    test_furnace_mirror_sphere "" "counted though path_next did not cast it"
+plant "hint: path_next asked with depth + 1" 08_mirrors mirror.c \
+    's|path_next(tr, depth, k_m, \&next)|path_next(tr, depth + 1, k_m, \&next)|' \
+    test_facing_mirrors_depth_and_weight "" "one level short"
+# reflect's sign and factor 2; the mirror ray's count, depth, tracer and start.
+plant "hint: reflect d + 2 (d . n) n" 08_mirrors mirror.c \
+    's|return vec3_sub(d, vec3_scale(n, 2 \* vec3_dot(d, n)));|return vec3_add(d, vec3_scale(n, 2 * vec3_dot(d, n)));|' \
+    test_reflect_known "" "d \+ 2 \(d \. n\) n: the correction is subtracted"
+plant "hint: reflect without the 2" 08_mirrors mirror.c \
+    's|return vec3_sub(d, vec3_scale(n, 2 \* vec3_dot(d, n)));|return vec3_sub(d, vec3_scale(n, vec3_dot(d, n)));|' \
+    test_reflect_known "" "the factor 2 is missing"
+plant "hint: the mirror ray not counted" 08_mirrors mirror.c \
+    's|++rays\[RAY_REFLECTED\];|(void)rays;|' \
+    test_mirror_ray_reaches_probe "" "count each mirror ray once"
+plant "hint: the mirror ray one level too shallow" 08_mirrors mirror.c \
+    's|REAL_INFINITY, depth + 1, rays)|REAL_INFINITY, depth, rays)|' \
+    test_mirror_ray_reaches_probe "" "one level deeper"
+plant "hint: the mirror ray traced with tr" 08_mirrors mirror.c \
+    's|return trace(\&next, mirror|return trace(tr, mirror|' \
+    test_mirror_ray_reaches_probe "" "trace with next, not tr"
+plant "hint: the mirror ray from the point itself" 08_mirrors mirror.c \
+    's|ray mirror = spawn_ray(sp, reflect(sp->r.d, sp->n), tracer_eps(tr));|ray mirror = {sp->hit.point, reflect(sp->r.d, sp->n)};|' \
+    test_mirror_ray_policy_from_knobs "" "started at the point itself"
 # Chapter 09: refract's rounding and r; Fresnel's squares; Schlick's terms; the glass rays.
 plant "hint: cos^2(theta_t) not grouped for r = 1" 09_refraction refract.c \
     's|(1 - r \* r) + r \* r \* (cos_i \* cos_i)|1 - r * r * (1 - cos_i * cos_i)|' \
@@ -186,6 +474,12 @@ plant "hint: Schlick's power 4" 09_refraction fresnel.c \
 plant "hint: Schlick without 1 - R_0" 09_refraction fresnel.c \
     's|R_0 + (1 - R_0) \* m|R_0 + m|' \
     test_schlick_cosines "" "\(1 - R_0\) missing"
+plant "hint: Schlick's power of cos, not 1 - cos" 09_refraction fresnel.c \
+    's|real m = 1 - (eta_i <= eta_t ? cos_i : cos_t);|real m = (eta_i <= eta_t ? cos_i : cos_t);|' \
+    test_schlick_cosines "" "cos\^5: the power is of 1 - cos"
+plant "hint: Schlick's r over eta_t alone" 09_refraction fresnel.c \
+    's|real r = (eta_i - eta_t) / (eta_i + eta_t);|real r = (eta_i - eta_t) / eta_t;|' \
+    test_fresnel_normal_incidence "" "the sum eta_i \+ eta_t goes below"
 plant "hint: depth + 1 given to the glass rays" 09_refraction shade_glass.c \
     's|R, depth, rays|R, depth + 1, rays|; s|T, depth, rays|T, depth + 1, rays|' \
     test_glass_weights "" "depth \+ 1 given"
@@ -195,6 +489,22 @@ plant "hint: the transmitted ray along d" 09_refraction shade_glass.c \
 plant "hint: the reflected glass ray with weight 1 - R" 09_refraction shade_glass.c \
     's|mirror_radiance(tr, sp, R, depth|mirror_radiance(tr, sp, T, depth|' \
     test_glass_weights "" "not 1 - R, which is 0 here"
+# refract: the signs and squares of the cosines, and r in n's coefficient.
+plant "hint: cos(theta_i) = d . n" 09_refraction refract.c \
+    's|real cos_i = -vec3_dot(d, n);|real cos_i = vec3_dot(d, n);|' \
+    test_snell_law "" "cos\(theta_i\) = d \. n has the wrong sign"
+plant "hint: cos(theta_t) without the square root" 09_refraction refract.c \
+    's|\*cos_t = real_sqrt(cos2_t);|*cos_t = cos2_t;|' \
+    test_snell_law "" "the square root left out"
+plant "hint: cos^2(theta_t) with r for r^2" 09_refraction refract.c \
+    's|real cos2_t = (1 - r \* r) + r \* r \* (cos_i \* cos_i);|real cos2_t = (1 - r) + r * (cos_i * cos_i);|' \
+    test_snell_law "" "r\^2, not r"
+plant "hint: n's coefficient without r" 09_refraction refract.c \
+    's|vec3_scale(n, r \* cos_i - \*cos_t)|vec3_scale(n, cos_i - *cos_t)|' \
+    test_snell_law "" "n's coefficient without r"
+plant "hint: cos(theta_t) taken as cos(theta_i)" 09_refraction refract.c \
+    's|\*cos_t = real_sqrt(cos2_t);|*cos_t = cos_i + 0 * cos2_t;|' \
+    test_snell_law "" "cos\(theta_t\) taken as cos\(theta_i\)"
 # Glass: R and 1 - R swapped; each ray's path coefficient 1 instead of its weight.
 plant "hint: the glass weights swapped" 09_refraction shade_glass.c \
     's|L = color_mul(R, mirror_radiance|L = color_mul(T, mirror_radiance|; s|color_mul(T, transmitted_radiance|color_mul(R, transmitted_radiance|' \
@@ -202,6 +512,37 @@ plant "hint: the glass weights swapped" 09_refraction shade_glass.c \
 plant "hint: the glass rays traced with coefficient 1" 09_refraction shade_glass.c \
     's|mirror_radiance(tr, sp, R, depth|mirror_radiance(tr, sp, color_make(1, 1, 1), depth|; s|transmitted_radiance(tr, sp, e.T, T, depth|transmitted_radiance(tr, sp, e.T, color_make(1, 1, 1), depth|' \
     test_glass_weights "" "min-weight 0\\.97" "coefficient other than its weight"
+# The ratio, C_t's sign, Fresnel's r_p and / 2, Schlick's side, the glass weights and rays.
+plant "hint: r = eta_t / eta_i" 09_refraction refract.c \
+    's|real r = eta_i / eta_t;|real r = eta_t / eta_i;|' \
+    test_snell_law "" "the ratio is upside down"
+plant "hint: C_t = +cos(theta_t) n" 09_refraction refract.c \
+    's|r \* cos_i - \*cos_t|r * cos_i + *cos_t|' \
+    test_snell_law "" "C_t = \+cos\(theta_t\) n"
+plant "hint: Fresnel's r_p with the cosines swapped" 09_refraction fresnel.c \
+    's|real r_p = (eta_t \* cos_i - eta_i \* cos_t) / (eta_t \* cos_i + eta_i \* cos_t);|real r_p = (eta_t * cos_t - eta_i * cos_i) / (eta_t * cos_t + eta_i * cos_i);|' \
+    test_fresnel_exact_values "" "r_p with the cosines swapped"
+plant "hint: Fresnel without the / 2" 09_refraction fresnel.c \
+    's|(r_s \* r_s + r_p \* r_p) / 2|(r_s * r_s + r_p * r_p)|' \
+    test_fresnel_exact_values "" "r_s\^2 \+ r_p\^2 without the / 2"
+plant "hint: Schlick always with cos_i" 09_refraction fresnel.c \
+    's|real m = 1 - (eta_i <= eta_t ? cos_i : cos_t);|real m = 1 - cos_i + 0 * cos_t;|' \
+    test_schlick_cosines "" "out of glass the cosine is cos_t"
+plant "hint: Schlick's sides swapped" 09_refraction fresnel.c \
+    's|real m = 1 - (eta_i <= eta_t ? cos_i : cos_t);|real m = 1 - (eta_i <= eta_t ? cos_t : cos_i);|' \
+    test_schlick_cosines "" "into glass the cosine is cos_i"
+plant "hint: the glass radiances not weighted" 09_refraction shade_glass.c \
+    's|L = color_mul(R, mirror_radiance(tr, sp, R, depth, rays));|L = mirror_radiance(tr, sp, R, depth, rays);|; s|L = color_add(L, color_mul(T, transmitted_radiance(tr, sp, e.T, T, depth, rays)));|L = color_add(L, transmitted_radiance(tr, sp, e.T, T, depth, rays));|' \
+    test_glass_weights "" "L_reflected not multiplied by R"
+plant "hint: L_transmitted weighted 1" 09_refraction shade_glass.c \
+    's|color_mul(T, transmitted_radiance|color_mul(color_make(1, 1, 1), transmitted_radiance|' \
+    test_glass_weights "" "L_transmitted not multiplied by 1 - R"
+plant "hint: the reflected glass ray only past the critical angle" 09_refraction shade_glass.c \
+    's|if (e.R > 0) /\* R L_reflected \*/|if (!e.transmits)|' \
+    test_glass_weights "" "no reflected ray traced, or its L not added"
+plant "hint: one glass ray only" 09_refraction shade_glass.c \
+    's|if (e.transmits \&\& e.R < 1) /\* + (1 - R) L_transmitted \*/|else if (e.transmits \&\& e.R < 1)|' \
+    test_glass_weights "" "a ray not traced though its weight"
 # Chapter 10: a wrap that leaves C's negative remainder is named as the wrap in
 # the lookups, not as their rounding; the lookups' own mistakes are named.
 plant "hint: a repeat wrap without the fix for a negative %, in nearest" 10_interpolation texture.c \

@@ -210,6 +210,8 @@ static void expect_perspective(const camera *cam, real u, real v)
         {vec3_add(cam->e, ed), "the eye added to d: d is a direction, the point e + d is on the image plane"},
         {vec3_neg(cam->w), "the orthographic direction: perspective rays go through their point of the image"},
         {combine(-cam->d, cam->w, u * cam->width, cam->u, v * cam->height, cam->v), NOT_CENTRED},
+        {combine(-cam->d, cam->w, u * cam->width - (real)0.5, cam->u, v * cam->height - (real)0.5, cam->v),
+         "u_s = u viewWidth - 1/2: take 1/2 from u before scaling, u_s = (u - 1/2) viewWidth"},
         {combine(-cam->d, cam->w, us, cam->u, (v - (real)0.5) * cam->width, cam->v), V_S_BY_WIDTH},
         {combine(-cam->d, cam->w, (u - (real)0.5) * cam->height, cam->u, vs, cam->v), U_S_BY_HEIGHT},
         {combine(-cam->d, cam->w, (u - (real)0.5) * cam->height, cam->u, (v - (real)0.5) * cam->width, cam->v),

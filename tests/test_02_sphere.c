@@ -158,18 +158,21 @@ static const char *describe_ray(const sphere *s, ray r)
                     (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z);
 }
 
-/* The roots of a*t^2 + 2*b*t + c = 0 as (near, far, 0), by the quadratic
- * formula in long double, or (NaN, NaN, 0) when there are none: how the
- * likely mistakes below would come out. */
-static vec3 pair(long double a, long double b, long double c)
+/* The textbook roots (-b -+ sqrt(disc)) / a of a discriminant, right or
+ * wrong, as (near, far, 0), or (NaN, NaN, 0) when it is negative. */
+static vec3 roots_from(long double a, long double b, long double disc)
 {
-    long double disc = b * b - a * c;
     if (!(disc >= 0))
         return vec3_make(((real)NAN), ((real)NAN), 0);
     long double root = sqrtl(disc);
     long double t0 = (-b - root) / a, t1 = (-b + root) / a;
     return vec3_make((real)fminl(t0, t1), (real)fmaxl(t0, t1), 0);
 }
+
+/* The roots of a*t^2 + 2*b*t + c = 0 as (near, far, 0), by the quadratic
+ * formula in long double, or (NaN, NaN, 0) when there are none: how the
+ * likely mistakes below would come out. */
+static vec3 pair(long double a, long double b, long double c) { return roots_from(a, b, b * b - a * c); }
 
 /* The stable pair (5) from A, B, C and a discriminant, sorted as
  * (near, far, 0): with a wrong discriminant, how a mistake comes out. */
@@ -202,6 +205,9 @@ static void expect_roots(const sphere *s, ray r, sphere_formula f, double tolera
     long double C = fx * fx + fy * fy + fz * fz - R2;
     vec3 expected = pair(A, B, C);
     long double q = -(B + (B < 0 ? -1 : 1) * sqrtl(B * B - A * C));
+    long double c_over_a = C / A; /* t1 = C / A, then through the bound (6) as the solution's code does */
+    if (c_over_a * c_over_a * A > fabsl(C))
+        c_over_a = copysignl(sqrtl(fabsl(C) / A), c_over_a);
     const suspect_vec3 mistakes[] = {
         {stable(A, B, C, (B * B - A * C) / A), "disc = A (R^2 - l.l): the factor A is missing"},
         {stable(A, B, C, -A * C - 3 * B * B), "l = f + t_m d with t_m = -B / A: the sign of t_m is wrong"},
@@ -217,6 +223,15 @@ static void expect_roots(const sphere *s, ray r, sphere_formula f, double tolera
         {vec3_scale(expected, (real)0.5), "divided by 2A: with B = d.f (half the usual b) the roots are (-B -+ sqrt(disc)) / A"},
         {pair(A, B, C * A), "disc = A (R^2 - l.l): R^2 - l.l times A, not C times A"},
         {vec3_make(0, 0, 0), "no real roots reported as a double root at 0, or roots not written"},
+        {vec3_scale(expected, (real)A), "the roots not divided by A = d.d: t = (-B -+ sqrt(disc)) / A"},
+        {roots_from(sqrtl(A), B, B * B - sqrtl(A) * C), "A = d.d, the squared length of d, not |d|"},
+        {pair(A, 2 * B, C), "B = d.f, not 2 d.f: the equation A t^2 + 2 B t + C = 0 holds the 2 already"},
+        {roots_from(A, B, B * B - C), "disc = B^2 - A C: the factor A is missing (d is not a unit vector here)"},
+        {stable(A, B, C, B * B - A * (C + R2 - s->radius)), "disc = A (R^2 - l.l): R squared, not R"},
+        {vec3_make((real)fminl(q / A, c_over_a), (real)fmaxl(q / A, c_over_a), 0),
+         "t1 = C / q, not C / A: C / A is the product t0 t1 of the two roots"},
+        {vec3_make((real)fminl(-q / A, C / q), (real)fmaxl(-q / A, C / q), 0),
+         "t0 = q / A: the minus sign is inside q = -(B + sign(B) sqrt(disc)) already"},
     };
     const char *in = describe("sphere_roots(%s, %s) as (near, far, 0)", describe_ray(s, r), formula_name(f));
     bool found;
@@ -238,7 +253,15 @@ static void expect_roots(const sphere *s, ray r, sphere_formula f, double tolera
         };
         const suspect_vec3 *no_root = f == SPHERE_ROBUST ? mistakes : textbook;
         char why[600] = "";
-        for (size_t k = 0; k < (f == SPHERE_ROBUST ? 3 : N(textbook)); k++)
+        /* the same ray past a sphere of a thousandth the radius, which its line misses by more than twice that
+         * radius: roots there and none here is a discriminant of the wrong sign */
+        const sphere tiny = {s->center, s->radius / 1024};
+        real u0, u1;
+        const bool reversed = C + R2 - B * B / A > 4 * R2 / (1024.0L * 1024) && sphere_roots(&tiny, r, f, &u0, &u1);
+        if (reversed)
+            snprintf(why, sizeof why, "the discriminant's sign reversed: a line through the sphere has l.l < R^2, "
+                                      "so disc = A (R^2 - l.l) (robust) or B^2 - A C (textbook) is positive");
+        for (size_t k = 0; k < (f == SPHERE_ROBUST ? 3 : N(textbook)) && !reversed; k++)
             if (no_root[k].value.x != no_root[k].value.x)
                 snprintf(why + strlen(why), sizeof why - strlen(why), "%s%s", *why ? "; or " : "", no_root[k].mistake);
         fail_msg("%s\n    expected roots %.17g and %.17g\n    got      false (no roots)\n    likely mistake: %s", in,

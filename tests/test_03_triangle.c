@@ -66,7 +66,10 @@ static const char *false_hit_mistake(triangle_hit h, real t_min, real t_max)
     if (h.beta + h.gamma > 1)
         return "beta + gamma > 1 accepted: the point is beyond the edge bc, test beta + gamma <= 1 (beta <= 1 and "
                "gamma <= 1 are not enough)";
-    return "a comparison that lets t == t_min, t == t_max or a point outside an edge through, or M not checked";
+    /* t, beta and gamma all in range for a point outside: they are not this point's */
+    return "a point outside reported with t, beta and gamma in range: a column of a determinant of the wrong sign or "
+           "order, M not checked, or a comparison that lets t == t_min, t == t_max or a point outside an edge "
+           "through";
 }
 
 /* The likely mistake behind a miss where (beta, gamma) is a hit. */
@@ -75,7 +78,10 @@ static const char *lost_hit_mistake(real beta, real gamma)
     if (beta == 0 || gamma == 0 || beta + gamma == 1)
         return "the edges are open: a point on an edge (beta = 0, gamma = 0 or beta + gamma = 1) is a hit, "
                "compare with >= 0 and <= 1";
-    return "are the edges closed, beta >= 0, gamma >= 0, beta + gamma <= 1, and is the window t_min < t < t_max?";
+    /* inside, away from the edges: a sign, not an edge's comparison */
+    return "a point inside missed: t, beta or gamma came out with the wrong sign, from a column of the wrong sign "
+           "or order (each unknown's column of [a - b, a - c, d] replaced by a - p, README \"The intersection: "
+           "three equations, three unknowns\"), or a comparison of the window or the edges the wrong way round";
 }
 
 /* Asserts a hit of r at (t, beta, gamma) within tol; on failure prints the

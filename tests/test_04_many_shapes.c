@@ -53,6 +53,44 @@ static void add_shape(surface_list *list, int which)
     }
 }
 
+/* The likely mistake of the loop behind a wrong answer of
+ * surfaces_intersect, when what came back tells it ("" when it does not):
+ * *hit written without a hit, a hit outside the window, an index that is no
+ * surface hit there, the later of two surfaces at the same t, or a surface
+ * never asked (the expected one, alone in a list, is not hit). */
+static const char *loop_mistake(const surface_list *list, ray r, real t_min, real t_max, int want, real t, real tol,
+                                bool found, const hit_record *hit)
+{
+    if (!found && (hit->surface != -7 || hit->t != -7))
+        return want < 0 ? "*hit written though no surface was hit: copy the candidate only when surface_intersect "
+                          "says it hit"
+                        : "false returned after a hit was written: set found = true on each hit, and never back to "
+                          "false when a later surface misses";
+    if (found && !(hit->t > t_min && hit->t < t_max))
+        return "a hit at or outside the window (t_min, t_max), which is open at both ends: start t_best at t_max, ask "
+               "each surface with (t_min, t_best) and pass t_min on unchanged";
+    if (found && (hit->surface < 0 || hit->surface >= list->n))
+        return "hit->surface is no index of the list: set candidate.surface = k before copying the candidate";
+    hit_record own;
+    if (found && (!surface_intersect(&list->items[hit->surface], list, r, t_min, t_max, &own) ||
+                  real_abs(own.t - hit->t) > tol))
+        return "hit->surface names a surface that is not hit there: copy the candidate, with candidate.surface = k, "
+               "only when surface_intersect says it hit";
+    if (want < 0)
+        return "";
+    surface_list one = *list; /* the expected surface alone */
+    one.items = &list->items[want];
+    one.n = 1;
+    hit_record alone;
+    if (!surfaces_intersect(&one, r, t_min, t_max, &alone))
+        return "a surface of the list never asked (a list of one is not hit): for (k = 0; k < list->n; k++) asks "
+               "the first and the last";
+    if (found && hit->surface > want && real_abs(hit->t - t) <= tol)
+        return "two surfaces at the same t: the first in the list keeps it, the later ones are asked with the window "
+               "(t_min, t_best), open at t_best";
+    return "";
+}
+
 /* Asserts what surfaces_intersect(list, r, t_min, t_max) reports: a miss
  * (want < 0), or a hit on list entry want at t (within tol).  On failure it
  * names the ray, the window, what was expected, what came back and the
@@ -76,16 +114,18 @@ static void expect_closest(const surface_list *list, ray r, real t_min, real t_m
                  hit.surface, (double)hit.t);
     else
         snprintf(got, sizeof got, "no hit");
+    const char *loop = loop_mistake(list, r, t_min, t_max, want, t, tol, found, &hit);
     /* a farther hit than the closest: which way the loop went wrong, from where the surface it kept sits */
     const char *order = "";
-    if (found && want >= 0 && hit.t > t + tol)
+    if (*loop == '\0' && found && want >= 0 && hit.t > t + tol)
         order = hit.surface < want ? "\n    likely mistake: the loop stopped at the first surface it hit: go through "
                                      "the whole list, a later surface can be closer"
                                    : "\n    likely mistake: a farther surface later in the list replaced the closer "
                                      "hit: ask each surface with (t_min, t_best), then shrink t_best to its t";
-    fail_msg("ray p (%g, %g, %g), d (%g, %g, %g), window (%g, %g), %d surfaces: expected %s, got %s (%s)%s",
+    fail_msg("ray p (%g, %g, %g), d (%g, %g, %g), window (%g, %g), %d surfaces: expected %s, got %s (%s)%s%s%s",
              (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z,
-             (double)t_min, (double)t_max, list->n, expected, got, why, order);
+             (double)t_min, (double)t_max, list->n, expected, got, why, order, *loop ? "\n    likely mistake: " : "",
+             loop);
 }
 
 /* Every ordering of the four shapes, with both sphere formulas and both

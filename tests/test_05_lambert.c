@@ -113,6 +113,7 @@ static void test_inverse_square(void **state)
         {0, "nothing from a light at 45 degrees in front: l points from the point towards the light, "
             "light.pos - point, and the cosine is n . l"},
         {0.9 * 4, "no cosine: the irradiance falls with cos(theta) = n . l"},
+        {1, "clamped to 1: a radiance may exceed 1; only the display's encoding clamps"},
     };
     assert_close_why(0.9 * 4 * sqrt(0.5), at_one, FAR_TOL(3, 1),
                      "lambert(k_d.b = 0.9, I = 4, light 1 away at 45 degrees from n): blue",

@@ -152,6 +152,18 @@ static void test_light_behind_the_surface(void **state)
                                       : "count the one shadow ray cast");
         shading_release(view);
     }
+    /* A light in the floor's own plane: the normal is +y exactly and light_pos - point has no y, so
+     * n . (light_pos - point) is 0 exactly; such a light lights nothing (n . l = 0), as one behind. */
+    shading_point sp;
+    shading_view *view = shade_at(&desc, eye, spot, &sp);
+    uint64_t rays[RAY_KINDS] = {0};
+    bool blocked = light_blocked(&view->tr, &sp, vec3_add(sp.hit.point, vec3_make(3, 0, 2)), EPS_BOUND, rays);
+    if (!blocked || rays[RAY_SHADOW] != 0)
+        fail_msg("light_blocked with a light in the floor's plane, 3.6 from the point: %s, %llu shadow rays; "
+                 "expected blocked, no shadow ray\n    likely mistake: a light with n . (light_pos - point) = 0 "
+                 "is blocked as one behind: only n . (light_pos - point) > 0 is in front (> 0, not >= 0)",
+                 blocked ? "blocked" : "not blocked", (unsigned long long)rays[RAY_SHADOW]);
+    shading_release(view);
     scene_free(&desc);
 }
 

@@ -57,6 +57,7 @@ static void test_half_vector(void **state)
             {0, "no highlight in the mirror configuration: l points from the point towards the light, and h is "
                 "the sum v + l, not the difference"},
             {specular_of(1, p) / 10, "the light's intensity I missing: k_s max(0, n . h)^p I / r^2"},
+            {specular_of(1, p) * p, "p as a factor: p is the exponent, max(0, n . h)^p"},
         };
         assert_close_why(specular_of(1, p), L.r, FAR_TOL(1.44, 2.5) * p,
                          describe("blinn_phong_specular(k_s.r = 0.9, p = 20, I = 10, r = 2.5, course form, the viewer "
@@ -72,13 +73,15 @@ static void test_half_vector(void **state)
     const suspect sp[] = {
         {specular_of(c, 12), "an integer power: p = 12.5 is not an integer; real_pow(x, p)"},
         {specular_of(c, 13), "an integer power rounded up: p = 12.5 is not an integer; real_pow(x, p)"},
+        {specular_of(cos(20 * pi / 180), 12.5), "Phong's (r . v)^p, with r the mirror of l: Blinn-Phong's is "
+                                                "(n . h)^p with the half vector h = (v + l) / |v + l|"},
     };
     assert_close_why(specular_of(c, 12.5),
                      blinn_phong_specular(k_s, (real)12.5, point, n, v, &light, PHONG_COURSE).r,
                      FAR_TOL(1.44, 2.5) * 12.5,
                      "blinn_phong_specular(k_s.r = 0.9, p = 12.5, I = 10, r = 2.5, course form, n . h = cos(10 "
                      "degrees)): red",
-                     "k_s max(0, n . h)^p I / r^2 for a fractional p", sp, 2);
+                     "k_s max(0, n . h)^p I / r^2 for a fractional p", sp, sizeof sp / sizeof sp[0]);
 }
 
 /* ---- the specular term ------------------------------------------------------------------- */
@@ -117,6 +120,9 @@ static void test_exponent_behaviour(void **state)
                 {0.9 * 10 / 6.25 * pow(cos_alpha, floor(exponents[k])),
                  "the power of a fractional p taken as an integer (a loop of products, or p cast to int): p "
                  "may be any real, x^p is real_pow(x, p)"},
+                {0.9 * 10 / 6.25 * exponents[k] * cos_alpha, "p as a factor: p is the exponent, max(0, n . h)^p"},
+                {0.9 * 10 / 6.25 * pow(cos(2 * alphas[a] * pi / 180), exponents[k]),
+                 "Phong's (r . v)^p, with r the mirror of l: Blinn-Phong's is (n . h)^p with the half vector h"},
             };
             /* cos^p has the relative error of cos times p */
             assert_close_why(expected, L.r, FAR_TOL(1.44, 2.5) * (1 + exponents[k] * alphas[a] / 10),
@@ -308,7 +314,8 @@ static void test_two_lights_add(void **state)
     const suspect sl[] = {
         {desc.ambient.r, "no light added: loop over tr->desc->lights and add each unblocked one's contribution"},
         {desc.ambient.r + La.r, "only the first light: loop over all n_lights"},
-        {desc.ambient.r + Lb.r, "only the last light: add (+=) each contribution to result, do not replace it"},
+        {desc.ambient.r + Lb.r, "only the last light: the loop starts at k = 0, and adds (+=) each contribution to "
+                                "result, not replacing it"},
         {La.r + Lb.r, "ambient missing: start from result = ambient"},
         {2 * desc.ambient.r + La.r + Lb.r, "ambient added with each light: it is added once"},
         {3 * desc.ambient.r + La.r + Lb.r, "ambient added again with each light: it is added once, before the loop"},

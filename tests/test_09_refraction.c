@@ -94,6 +94,12 @@ static void test_refract_equal_indices(void **state)
     }
 }
 
+/* r d + c n: the form of T, with a coefficient c of n right or wrong. */
+static vec3 bent(vec3 d, vec3 n, double r, double c)
+{
+    return vec3_add(vec3_scale(d, (real)r), vec3_scale(n, (real)c));
+}
+
 /* Snell's law at random angles, into glass and out of it below the critical
  * angle: T is a unit vector in the plane of d and n, on the far side, and
  * eta_i sin(theta_i) = eta_t sin(theta_t). */
@@ -119,6 +125,9 @@ static void test_snell_law(void **state)
         vec3 expected = vec3_add(vec3_scale(t, (real)sin(theta_t)), vec3_scale(n, (real)-cos(theta_t)));
         if (k < 8) { /* the first few with the likely mistakes named */
             double inverted = asin(fmin(1, eta_t * sin(theta_i) / eta_i));
+            /* T = r d + (r cos(theta_i) - cos(theta_t)) n with one of its parts wrong */
+            double r = eta_i / eta_t, c_i = cos(theta_i), c_t = cos(theta_t);
+            double c_t_r = sqrt(fmax(0, (1 - r) + r * c_i * c_i)); /* cos^2(theta_t) with r for r^2 */
             const suspect_vec3 sT[] = {
                 {vec3_add(vec3_scale(t, (real)sin(inverted)), vec3_scale(n, (real)-cos(inverted))),
                  "S_t = (eta_t / eta_i) S_i: the ratio is upside down (eta_i sin(theta_i) = eta_t sin(theta_t))"},
@@ -127,6 +136,15 @@ static void test_snell_law(void **state)
                 {d, "T = d: Snell's law bends the ray"},
                 {vec3_add(d, vec3_scale(n, (real)(eta_i / eta_t * cos(theta_i) - cos(theta_t)))),
                  "d not scaled by r: S_t = r S_i, so T = r d + (r cos(theta_i) - cos(theta_t)) n"},
+                {bent(d, n, r, -r * c_i - c_t),
+                 "cos(theta_i) = d . n has the wrong sign: d points into the surface, so cos(theta_i) = -d . n"},
+                {bent(d, n, r, r * c_i - c_t * c_t), "cos(theta_t) = sqrt(cos^2(theta_t)): the square root left out"},
+                {bent(d, n, r, r * c_i - c_t_r), "cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i): r^2, not r"},
+                {bent(d, n, r, c_i - c_t),
+                 "n's coefficient without r: S_t = r (d + cos(theta_i) n), so T = r d + (r cos(theta_i) - "
+                 "cos(theta_t)) n"},
+                {bent(d, n, r, r * c_i - c_i),
+                 "cos(theta_t) taken as cos(theta_i): cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i)"},
             };
             assert_vec3_why(expected, T, TOL(8), input,
                             "S_t = (eta_i / eta_t) S_i, C_t = -cos(theta_t) n, T = C_t + S_t", sT,
@@ -246,7 +264,13 @@ static void test_fresnel_normal_incidence(void **state)
     assert_close_why(0.04, fresnel_exact(1, 1, 1, (real)1.5), TOL(1), "fresnel_exact(cos_i = 1, cos_t = 1, 1, 1.5)",
                      "R = (r_s^2 + r_p^2) / 2 = ((1 - 1.5) / (1 + 1.5))^2 head on", s0, sizeof s0 / sizeof s0[0]);
     assert_close(0.04, fresnel_exact(1, 1, (real)1.5, 1), TOL(1));
-    assert_close(0.04, fresnel_schlick(1, 1, 1, (real)1.5), TOL(1));
+    const suspect s0_schlick[] = {
+        {1, "cos^5: the power is of 1 - cos, which is 0 head on, so that R = R_0"},
+        {1 / 9.0, "r = (eta_i - eta_t) / eta_t: the sum eta_i + eta_t goes below"},
+    };
+    assert_close_why(0.04, fresnel_schlick(1, 1, 1, (real)1.5), TOL(1), "fresnel_schlick(cos_i = 1, cos_t = 1, 1, 1.5)",
+                     "R = R_0 = ((1 - 1.5) / (1 + 1.5))^2 head on", s0_schlick,
+                     sizeof s0_schlick / sizeof s0_schlick[0]);
     assert_close(0.04, fresnel_schlick(1, 1, (real)1.5, 1), TOL(1));
     /* water: (0.33 / 2.33)^2 */
     assert_close(0.33 * 0.33 / (2.33 * 2.33), fresnel_exact(1, 1, (real)1.33, 1), TOL(1));
@@ -370,6 +394,8 @@ static void test_schlick_cosines(void **state)
         {0.2 + (1 - 0.2) * pow(1 - 0.6, 5), "R_0 not squared: R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2"},
         {-0.2 + (1 + 0.2) * pow(1 - 0.6, 5), "R_0 not squared: R_0 = ((eta_i - eta_t) / (eta_i + eta_t))^2"},
         {R_0 + pow(1 - 0.6, 5), "(1 - R_0) missing: R = R_0 + (1 - R_0) (1 - cos)^5 reaches 1 at grazing"},
+        {R_0 + (1 - R_0) * pow(0.6, 5), "cos^5: the power is of 1 - cos, so that R = R_0 head on"},
+        {1 / 9.0 + 8 / 9.0 * pow(1 - 0.6, 5), "r = (eta_i - eta_t) / eta_t: the sum eta_i + eta_t goes below"},
     };
     assert_close_why(R_0 + (1 - R_0) * pow(1 - 0.6, 5), fresnel_schlick(c, c_t, 1, (real)1.5), TOL(1),
                      "fresnel_schlick(cos_i = 0.6, cos_t = 0.3, 1, 1.5)", "R = R_0 + (1 - R_0) (1 - cos)^5", s_in,
