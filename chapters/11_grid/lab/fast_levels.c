@@ -38,7 +38,8 @@ static long box_cells(fast_grid *sub, const uint32_t *subset, long n)
         int first[3], last[3];
         fast_grid_surface_bounds(&sub->list->items[subset[q]], &lo, &hi);
         fast_grid_cell_range(sub, vec3_sub(lo, m), vec3_add(hi, m), first, last);
-        cells += (long)(last[0] - first[0] + 1) * (last[1] - first[1] + 1) * (last[2] - first[2] + 1);
+        if (first[0] <= last[0] && first[1] <= last[1] && first[2] <= last[2]) /* else wholly outside */
+            cells += (long)(last[0] - first[0] + 1) * (last[1] - first[1] + 1) * (last[2] - first[2] + 1);
     }
     return cells;
 }
