@@ -39,7 +39,7 @@ bool fast_grid_empty_distances(fast_grid *g)
             for (int f1 = n1 - 1; f1 >= 0; f1--) {
                 uint8_t *s = side + m0 * f1 + m01 * f2; /* the row (f_1, f_2) */
                 /* The 6 neighbours in the rows ahead along f_1 and f_2, done, for the whole row at once
-                 * (a loop the compiler vectorizes)... */
+                 * (loads that no step of the row waits for)... */
                 const uint8_t *y = s + m0, *z = s + m01, *yz = s + m01 + m0;
                 for (int f0 = 0; f0 < n0; f0++) {
                     uint8_t l = far;
