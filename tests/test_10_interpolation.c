@@ -512,11 +512,13 @@ static vec3 texel_other_kind(const scene_texture *tex, long long x, long long y)
     return vec3_make(c.r, c.g, c.b);
 }
 
-/* The texel at (x, y) read with the column and the row swapped, each kept in range. */
+/* The texel at (x, y) read with the column and the row swapped, each wrapped by its own side and then
+ * kept inside the image as texture_image_texel keeps an index outside it: at the edge. */
 static vec3 texel_swapped(const scene_texture *tex, long long x, long long y)
 {
     int W = tex->image.width, H = tex->image.height;
-    color c = texture_image_texel(&tex->image, (int)(wrapped(tex->kind, y, H) % W), (int)(wrapped(tex->kind, x, W) % H));
+    color c = texture_image_texel(&tex->image, (int)llmin(wrapped(tex->kind, y, H), W - 1),
+                                  (int)llmin(wrapped(tex->kind, x, W), H - 1));
     return vec3_make(c.r, c.g, c.b);
 }
 
