@@ -735,13 +735,14 @@ static void test_dda_no_accumulation(void **state)
 }
 
 /* The march of r through the grid of `list` (freed here), which has g's
- * cells along x; the linear scan's hit must be surface `expected`. */
-static bool march_in_row(surface_list *list, const grid *g, ray r, int expected, hit_record *want, hit_record *got,
-                         grid_counts *counts)
+ * cells along axis a; the linear scan's hit must be surface `expected`. */
+static bool march_in_row(surface_list *list, const grid *g, int a, ray r, int expected, hit_record *want,
+                         hit_record *got, grid_counts *counts)
 {
     grid h;
     build_grid(&h, list, grid_default_options());
-    assert_true(h.n[0] == g->n[0] && h.lo.x == g->lo.x && h.cell.x == g->cell.x); /* the same cells */
+    assert_true(h.n[a] == g->n[a] && vec3_axis(h.lo, a) == vec3_axis(g->lo, a) &&
+                vec3_axis(h.cell, a) == vec3_axis(g->cell, a)); /* the same cells */
     assert_true(surfaces_intersect(list, r, 0, REAL_INFINITY, want) && want->surface == expected);
     *counts = (grid_counts){0, 0};
     bool found = grid_intersect_counted(&h, r, 0, REAL_INFINITY, got, counts);
@@ -768,7 +769,7 @@ static void expect_stop_in_this_cell(const grid *g)
     surface_list_add_sphere(&list, (sphere){{x_B + (real)0.1 * cell, (real)0.5, (real)0.5}, (real)0.1 * cell}, 0, 9);
     hit_record want, got;
     grid_counts counts;
-    bool found = march_in_row(&list, g, (ray){{-1, (real)0.5, (real)0.5}, {1, 0, 0}}, 9, &want, &got, &counts);
+    bool found = march_in_row(&list, g, 0, (ray){{-1, (real)0.5, (real)0.5}, {1, 0, 0}}, 9, &want, &got, &counts);
     if (!same_hit(true, &want, found, &got) || counts.cells != 5)
         fail_msg("grid_intersect_counted(ray along +x through a row of %d cells of %.17g: a triangle hit at x = %.17g "
                  "and a sphere hit at x = %.17g, both in cell 4)\n    expected sphere 9 at t = %.17g, 5 cells "
@@ -783,39 +784,61 @@ static void expect_stop_in_this_cell(const grid *g)
                                              : "the march ends in the cell that holds the best hit, cell 4 here");
 }
 
-/* The stop rule allows for the boundary's slack: in the row of cells of `g`
- * (10 surfaces in row_of_cells's box, as here), a triangle across the ray
- * along +x is hit half a slack before cell 3's far boundary (slack[0] of
- * box_ray_slack, 176 REAL_EPSILON here, far more than the few roundings of
- * the hit's t and of the crossing, far less than the margin, so the
- * triangle is listed in cells 3 and 4).  Within the slack the hit may be
- * the rounding of a point beyond the boundary: the march visits cell 4 too,
- * 5 cells; a rule without the slack, or with it added, stops after 4. */
-static void expect_stop_slack(const grid *g)
+/* The point `along` axis a (x or y) at (u, v) across it. */
+static vec3 on_axis(int a, real along, real u, real v) { return a ? vec3_make(u, along, v) : vec3_make(along, u, v); }
+
+/* A column of cells along y: tiny spheres at the corners of the box [0, 1] x
+ * [0, 10] x [0, 1] (surfaces 0-7), row_of_cells's box turned. */
+static void column_of_cells(surface_list *list)
 {
-    const ray r = {{-1, (real)0.5, (real)0.5}, {1, 0, 0}};
+    surface_list_init(list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+    for (int k = 0; k < 8; k++) /* the corners, x, y, z from bits 0, 1, 2 */
+        surface_list_add_sphere(list, (sphere){on_axis(1, (real)(10 * ((k >> 1) & 1)), (real)(k & 1), (real)(k >> 2)), (real)0.001}, 0, k);
+}
+
+/* The stop rule allows for the boundary's slack: in the row of cells of `g`
+ * along axis a (10 surfaces in row_of_cells's box, or column_of_cells's
+ * along y, as here), a triangle across the ray along +a is hit half a slack
+ * before cell 3's far boundary (slack[a] of box_ray_slack, 176 REAL_EPSILON
+ * here, far more than the few roundings of the hit's t and of the crossing,
+ * far less than the margin, so the triangle is listed in cells 3 and 4).
+ * Within the slack the hit may be the rounding of a point beyond the
+ * boundary: the march visits cell 4 too, 5 cells; a rule without the slack,
+ * or with it added, stops after 4.  Along y, x's slack is 0 (d_x = 0): a
+ * rule that takes x's slack for every axis stops after 4 too. */
+static void expect_stop_slack(const grid *g, int a)
+{
+    const ray r = {on_axis(a, -1, (real)0.5, (real)0.5), on_axis(a, 1, 0, 0)};
     real inv_d[3], slack[3];
     (void)box_ray_slack((box){g->lo, g->hi}, r, inv_d, slack);
-    const real next = (g->lo.x + 4 * g->cell.x - r.p.x) * inv_d[0]; /* as the march's crossing() */
-    const real x = r.p.x + (next - slack[0] / 2);
+    const real next = (vec3_axis(g->lo, a) + 4 * vec3_axis(g->cell, a) - vec3_axis(r.p, a)) * inv_d[a]; /* crossing() */
+    const real x = vec3_axis(r.p, a) + (next - slack[a] / 2);
     surface_list list;
-    row_of_cells(&list, TRIANGLE_WATERTIGHT, false);
-    surface_list_add_triangle(&list, (triangle){{x, (real)0.3, (real)0.3}, {x, (real)0.8, (real)0.4}, {x, (real)0.4, (real)0.8}},
+    if (a)
+        column_of_cells(&list);
+    else
+        row_of_cells(&list, TRIANGLE_WATERTIGHT, false);
+    surface_list_add_triangle(&list,
+                              (triangle){on_axis(a, x, (real)0.3, (real)0.3), on_axis(a, x, (real)0.8, (real)0.4),
+                                         on_axis(a, x, (real)0.4, (real)0.8)},
                               0, 8);
-    surface_list_add_sphere(&list, (sphere){{9, (real)0.1, (real)0.1}, (real)0.01}, 0, 9); /* off the ray */
+    surface_list_add_sphere(&list, (sphere){on_axis(a, 9, (real)0.1, (real)0.1), (real)0.01}, 0, 9); /* off the ray */
     hit_record want, got;
     grid_counts counts;
-    bool found = march_in_row(&list, g, r, 8, &want, &got, &counts);
+    bool found = march_in_row(&list, g, a, r, 8, &want, &got, &counts);
     if (!same_hit(true, &want, found, &got) || counts.cells != 5)
-        fail_msg("grid_intersect_counted(ray along +x through a row of %d cells: a triangle hit at t = %.17g, half the "
+        fail_msg("grid_intersect_counted(ray along +%c through a row of %d cells: a triangle hit at t = %.17g, half the "
                  "slack %.3g before cell 3's far boundary at t = %.17g)\n    expected the triangle at t = %.17g, 5 "
                  "cells visited (cell 4 too)\n    got      %s %d at t = %.17g, %llu cells\n    likely mistake: %s",
-                 g->n[0], (double)want.t, (double)slack[0], (double)next, (double)want.t,
+                 "xy"[a], g->n[a], (double)want.t, (double)slack[a], (double)next, (double)want.t,
                  found ? "surface" : "no hit, surface", found ? got.surface : -1, found ? (double)got.t : 0.0,
                  (unsigned long long)counts.cells,
-                 counts.cells == 4 ? "the stop rule without the slack (or with it added): a hit within the slack "
-                                     "of the boundary may be a point beyond it, rounded; stop only once t_best <= "
-                                     "next_a - slack_a"
+                 counts.cells == 4 ? a ? "the stop rule with another axis's slack: the slack is slack_a of the axis a "
+                                         "the cell ends by (here y; x's is 0 along y); or without the slack (or with "
+                                         "it added): stop only once t_best <= next_a - slack_a"
+                                       : "the stop rule without the slack (or with it added): a hit within the slack "
+                                         "of the boundary may be a point beyond it, rounded; stop only once t_best <= "
+                                         "next_a - slack_a"
                                    : "the march ends in the cell that holds the best hit, allowing for the slack: "
                                      "t_best <= next_a - slack_a");
 }
@@ -861,7 +884,17 @@ static void test_stop_rule(void **state)
                                         "(stop once t_best <= the cell's far boundary)"
                                       : "the march ends before the hit's cell");
     expect_stop_in_this_cell(&g);
-    expect_stop_slack(&g);
+    expect_stop_slack(&g, 0);
+    /* the same along y, in a column of cells of 10 surfaces (two stand-ins inside) */
+    surface_list column;
+    column_of_cells(&column);
+    surface_list_add_sphere(&column, (sphere){{(real)0.5, 5, (real)0.5}, (real)0.001}, 0, 8);
+    surface_list_add_sphere(&column, (sphere){{(real)0.5, 6, (real)0.5}, (real)0.001}, 0, 9);
+    grid g_column;
+    build_grid(&g_column, &column, grid_default_options());
+    expect_stop_slack(&g_column, 1);
+    grid_free(&g_column);
+    surface_list_free(&column);
     /* the window ends at x = 2 (t = 3), before any surface: no hit, and the march ends in the window's last
      * cell, as t_best starts at t_max; a rule that waits for a hit goes on to the grid's end */
     counts = (grid_counts){0, 0};
