@@ -953,6 +953,9 @@ plant "hint: the stop rule against t0" 11_grid grid_march.c \
 plant "hint: the stop rule at x's boundary" 11_grid grid_march.c \
     's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[0] - slack[0])|' \
     test_dda_axis_steps "" "the stop rule tests next_a - slack_a of the axis a the cell ends by"
+plant "hint: the stop rule with x's slack" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[a] - slack[0])|' \
+    test_stop_rule "" "the stop rule with another axis's slack"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"
