@@ -496,20 +496,20 @@ typedef enum {
     BILINEAR_VARIANTS
 } bilinear_variant;
 
-static vec3 texel_vec3(const scene_texture *tex, long long x, long long y)
+/* The texel at (x, y) wrapped as a texture of `kind` wraps. */
+static vec3 texel_of_kind(const scene_texture *tex, texture_kind kind, long long x, long long y)
 {
-    color c = texture_image_texel(&tex->image, (int)wrapped(tex->kind, x, tex->image.width),
-                                  (int)wrapped(tex->kind, y, tex->image.height));
+    color c = texture_image_texel(&tex->image, (int)wrapped(kind, x, tex->image.width),
+                                  (int)wrapped(kind, y, tex->image.height));
     return vec3_make(c.r, c.g, c.b);
 }
+
+static vec3 texel_vec3(const scene_texture *tex, long long x, long long y) { return texel_of_kind(tex, tex->kind, x, y); }
 
 /* The texel at (x, y) wrapped by the other kind of texture than tex's. */
 static vec3 texel_other_kind(const scene_texture *tex, long long x, long long y)
 {
-    texture_kind other = tex->kind == TEXTURE_REPEAT ? TEXTURE_CLAMP : TEXTURE_REPEAT;
-    color c = texture_image_texel(&tex->image, (int)wrapped(other, x, tex->image.width),
-                                  (int)wrapped(other, y, tex->image.height));
-    return vec3_make(c.r, c.g, c.b);
+    return texel_of_kind(tex, tex->kind == TEXTURE_REPEAT ? TEXTURE_CLAMP : TEXTURE_REPEAT, x, y);
 }
 
 /* The texel at (x, y) read with the column and the row swapped, each wrapped by its own side and then
