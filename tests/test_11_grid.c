@@ -793,7 +793,8 @@ static void column_of_cells(surface_list *list)
 {
     surface_list_init(list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
     for (int k = 0; k < 8; k++) /* the corners, x, y, z from bits 0, 1, 2 */
-        surface_list_add_sphere(list, (sphere){on_axis(1, (real)(10 * ((k >> 1) & 1)), (real)(k & 1), (real)(k >> 2)), (real)0.001}, 0, k);
+        surface_list_add_sphere(
+            list, (sphere){on_axis(1, (real)(10 * ((k >> 1) & 1)), (real)(k & 1), (real)(k >> 2)), (real)0.001}, 0, k);
 }
 
 /* The stop rule allows for the boundary's slack: in the row of cells of `g`
