@@ -908,6 +908,9 @@ plant "hint: the cell range times the cell size" 11_grid grid_build.c \
 plant "hint: f_hi from the grid's high corner" 11_grid grid_build.c \
     's|real f_hi = (vec3_axis(box_hi, a) - vec3_axis(g->lo, a))|real f_hi = (vec3_axis(box_hi, a) - vec3_axis(g->hi, a))|' \
     test_cell_range "" "f_hi counted from the grid's high corner"
+plant "hint: the last cell truncated" 11_grid grid_build.c \
+    's|real_to_index(real_floor(f_hi), -1|real_to_index(f_hi < 0 ? real_ceil(f_hi) : real_floor(f_hi), -1|' \
+    test_cell_range "" "last truncated towards zero"
 # The entry: a parallel axis, the crossings' sign, the miss, the slack on one side, the window's start.
 plant "hint: the entry's parallel axis never misses" 11_grid grid_march.c \
     's|if (!(p >= lo \&\& p <= hi))|if (0 \&\& !(p >= lo \&\& p <= hi))|' \
