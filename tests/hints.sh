@@ -654,6 +654,94 @@ plant "hint: bilinear's rows wrapped by the width" 10_interpolation texture.c \
 plant "hint: bilinear's fractions from the wrapped indices" 10_interpolation texture.c \
     's|real s = x - fx, t = y - fy;|real s = x - (real)texel_index(tex->kind, (long long)fx, img->width), t = y - (real)texel_index(tex->kind, (long long)fy, img->height);|' \
     test_bilinear_random "" "the fractions from the wrapped indices"
+# interpolate_vec3: each weight on its own vertex, alpha in full and real.
+plant "hint: alpha and gamma swapped" 10_interpolation interpolate.c \
+    's|vec3_scale(A_a, alpha), vec3_scale(A_b, beta)), vec3_scale(A_c, gamma)|vec3_scale(A_a, gamma), vec3_scale(A_b, beta)), vec3_scale(A_c, alpha)|' \
+    test_interpolate_vertices_edges "" "alpha and gamma swapped"
+plant "hint: the weights rotated" 10_interpolation interpolate.c \
+    's|vec3_scale(A_a, alpha), vec3_scale(A_b, beta)), vec3_scale(A_c, gamma)|vec3_scale(A_a, gamma), vec3_scale(A_b, alpha)), vec3_scale(A_c, beta)|' \
+    test_interpolate_random "" "the weights belong to the wrong vertices"
+plant "hint: vertex a left out" 10_interpolation interpolate.c \
+    's|vec3_scale(A_a, alpha)|vec3_scale(A_a, 0 * alpha)|' \
+    test_interpolate_random "" "vertex a left out"
+plant "hint: A_a not scaled by alpha" 10_interpolation interpolate.c \
+    's|vec3_scale(A_a, alpha)|A_a|; s|real alpha = 1 - beta - gamma;||' \
+    test_interpolate_vertices_edges "" "vertex a's weight left out"
+plant "hint: alpha = 1 - gamma" 10_interpolation interpolate.c \
+    's|real alpha = 1 - beta - gamma;|real alpha = 1 - gamma;|' \
+    test_interpolate_random "" "alpha = 1 - gamma"
+plant "hint: alpha = beta + gamma" 10_interpolation interpolate.c \
+    's|real alpha = 1 - beta - gamma;|real alpha = beta + gamma;|' \
+    test_interpolate_vertices_edges "" "alpha = beta \+ gamma"
+plant "hint: alpha converted to an int" 10_interpolation interpolate.c \
+    's|real alpha = 1 - beta - gamma;|int alpha = (int)(1 - beta - gamma);|' \
+    test_interpolate_random "" "alpha converted to an int"
+# The wrap: n added to a remainder of 0, negative i, a mask, the last texel.
+plant "hint: a remainder of 0 plus n" 10_interpolation texture.c \
+    's|return (int)(m < 0 ? m + n : m);|return (int)(m <= 0 ? m + n : m);|' \
+    test_texel_index_repeat "" "a remainder of 0 plus n"
+plant "hint: a negative i read as texel 0 in a repeat" 10_interpolation texture.c \
+    's|long long m = i % n;|long long m = i < 0 ? 0 : i % n;|' \
+    test_texel_index_repeat "" "a negative i read as texel 0"
+plant "hint: the wrap by i & (n - 1)" 10_interpolation texture.c \
+    's|long long m = i % n;|long long m = i \& (n - 1);|' \
+    test_texel_index_repeat "" "i & \(n - 1\) is i mod n only when n is a power of two"
+plant "hint: clamped to n - 2" 10_interpolation texture.c \
+    's|i >= n ? n - 1 : (int)i;|i >= n - 1 ? n - 2 : (int)i;|' \
+    test_texel_index_clamp "" "clamped to n - 2"
+# Nearest: 1 / 2 in integers, an int index, lround, the wrap's side, no wrap, one kind only.
+plant "hint: nearest's 1 / 2 in integers" 10_interpolation texture.c \
+    's|(long long)(\([xy]\) + (real)0.5)|(long long)(\1 + 1 / 2)|g' \
+    test_nearest "" "1 / 2 in integers is 0"
+plant "hint: nearest's index converted to int" 10_interpolation texture.c \
+    's|(long long)(\([xy]\) + (real)0.5)|(int)(\1 + (real)0.5)|g' \
+    test_nearest_quirk "" "the index converted to int overflowed"
+plant "hint: nearest by lround" 10_interpolation texture.c \
+    's|(long long)(\([xy]\) + (real)0.5)|lround(\1)|g; s|#include "texture_space.h"|#include "texture_space.h"\n#include <math.h>|' \
+    test_nearest_quirk "" "floor\(x \+ 1/2\) or round\(x\)"
+plant "hint: nearest's column wrapped by the height" 10_interpolation texture.c \
+    's|(long long)(x + (real)0.5), img->width|(long long)(x + (real)0.5), img->height|' \
+    test_nearest "" "the column wrapped by the height"
+plant "hint: nearest not wrapped" 10_interpolation texture.c \
+    's|texel_index(tex->kind, (long long)(\([xy]\) + (real)0.5), img->[a-z]*)|(int)(long long)(\1 + (real)0.5)|g' \
+    test_nearest "" "not wrapped: each index goes through texel_index"
+plant "hint: nearest always repeats" 10_interpolation texture.c \
+    's|texel_index(tex->kind, (long long)(\([xy]\) + |texel_index(TEXTURE_REPEAT, (long long)(\1 + |g' \
+    test_nearest "" "wrapped the other way"
+# Bilinear: the fractions' axes and source, the rows, the wrap of the second column and row, the weights.
+plant "hint: bilinear's s and t swapped" 10_interpolation texture.c \
+    's|real s = x - fx, t = y - fy;|real s = y - fy, t = x - fx;|' \
+    test_bilinear "" "s and t swapped"
+plant "hint: bilinear's fraction of (long long)x" 10_interpolation texture.c \
+    's|real s = x - fx, t = y - fy;|real s = x - (real)(long long)x, t = y - (real)(long long)y;|' \
+    test_bilinear_random "" "the fraction of \(long long\)x"
+plant "hint: bilinear's bottom row blended with t" 10_interpolation texture.c \
+    's|texture_image_texel(img, x0, y1), 1 - s)|texture_image_texel(img, x0, y1), 1 - t)|; s|texture_image_texel(img, x1, y1), s)|texture_image_texel(img, x1, y1), t)|' \
+    test_bilinear "" "the bottom row blended with t"
+plant "hint: bilinear's rows both weighed 1 - t" 10_interpolation texture.c \
+    's|return color_add(color_scale(top, 1 - t), color_scale(bottom, t));|return color_add(color_scale(top, 1 - t), color_scale(bottom, 1 - t));|' \
+    test_bilinear "" "both rows weighed 1 - t"
+plant "hint: bilinear's weights along x swapped in the top row" 10_interpolation texture.c \
+    's|texture_image_texel(img, x0, y0), 1 - s)|texture_image_texel(img, x0, y0), s)|; s|texture_image_texel(img, x1, y0), s)|texture_image_texel(img, x1, y0), 1 - s)|' \
+    test_bilinear "" "the weights along x swapped in the top row"
+plant "hint: bilinear's second row above" 10_interpolation texture.c \
+    's|(long long)fy + 1, img->height|(long long)fy - 1, img->height|' \
+    test_bilinear "" "the second row is y0 - 1"
+plant "hint: bilinear's x0 + 1 and y0 + 1 not wrapped" 10_interpolation texture.c \
+    's|texel_index(tex->kind, (long long)f\([xy]\) + 1, img->[a-z]*)|(int)f\1 + 1|' \
+    test_bilinear "" "x0 \+ 1 or y0 \+ 1 not wrapped"
+plant "hint: bilinear's y1 from the wrapped y0" 10_interpolation texture.c \
+    's|int y1 = texel_index(tex->kind, (long long)fy + 1, img->height);|int y1 = y0 + 1;|' \
+    test_bilinear_random "" "y1 = y0 \+ 1 from the wrapped y0"
+plant "hint: bilinear with u and v swapped" 10_interpolation texture.c \
+    's|texture_image_texel(img, x\([01]\), y\([01]\))|texture_image_texel(img, y\2, x\1)|g' \
+    test_bilinear "" "u and v swapped"
+plant "hint: bilinear reads the nearest texel" 10_interpolation texture.c \
+    's|return color_add(color_scale(top, 1 - t), color_scale(bottom, t));|(void)top, (void)bottom, (void)t; return texture_nearest(tex, uv);|' \
+    test_bilinear "" "the nearest texel: blend the four texels"
+plant "hint: bilinear always repeats" 10_interpolation texture.c \
+    's|texel_index(tex->kind, (long long)f|texel_index(TEXTURE_REPEAT, (long long)f|g' \
+    test_bilinear "" "wrapped the other way"
 # Chapter 11: the resolution without the cap, with a shrink of a half a try,
 # with the cube root for a flat scene; the entry with no case for inv_d = 0
 # (a ray along an axis then visits no cell: the entry named, not dda_step).
@@ -779,6 +867,98 @@ plant "hint: the march never stops at a hit" 11_grid grid_march.c \
 plant "hint: the stop rule at the farthest boundary" 11_grid grid_march.c \
     's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= real_fmax(m.next[0], real_fmax(m.next[1], m.next[2])) - slack[a])|' \
     test_stop_rule "" "the march ended before the sphere's cell"
+# The resolution: the first try within the cap, the cap on rounded counts, a flat axis, 2^20 an axis.
+plant "hint: the first try from lambda N above the cap" 11_grid grid_build.c \
+    's|double wanted = fmin(density \* (double)surfaces, (double)max_cells);|double wanted = density * (double)surfaces + 0 * (double)max_cells;|' \
+    test_resolution "" "s for min\(lambda N, C\) cells"
+plant "hint: the cap checked before rounding" 11_grid grid_build.c \
+    's|cells \*= na;|cells *= extent[a] > 0 ? extent[a] * s : 1;|' \
+    test_resolution "" "shrink s and round again"
+plant "hint: a flat axis with 0 cells" 11_grid grid_build.c \
+    's|fmin(fmax(round(extent\[a\] \* s), 1), 1 << 20) : 1;|fmin(fmax(round(extent[a] * s), 1), 1 << 20) : 0;|' \
+    test_resolution "" "a flat axis without cells"
+plant "hint: an axis over 2^20 cells" 11_grid grid_build.c \
+    's|fmin(fmax(round(extent\[a\] \* s), 1), 1 << 20)|fmax(round(extent[a] * s), 1)|' \
+    test_resolution "" "an axis over 2\^20 cells"
+# The cell range: the clamps' bounds, the box's sides, where f counts from and in what unit.
+plant "hint: the first cell clamped to n - 1" 11_grid grid_build.c \
+    's|real_ceil(f_lo) - 1, 0, g->n\[a\]);|real_ceil(f_lo) - 1, 0, g->n[a] - 1);|' \
+    test_cell_range "" "first clamped to n - 1"
+plant "hint: the last cell clamped at 0" 11_grid grid_build.c \
+    's|real_floor(f_hi), -1, g->n\[a\] - 1);|real_floor(f_hi), 0, g->n[a] - 1);|' \
+    test_cell_range "" "last clamped at 0 from below"
+plant "hint: the cell range not clamped" 11_grid grid_build.c \
+    's|real_to_index(real_ceil(f_lo) - 1, 0, g->n\[a\])|(int)(real_ceil(f_lo) - 1)|; s|real_to_index(real_floor(f_hi), -1, g->n\[a\] - 1)|(int)real_floor(f_hi)|' \
+    test_cell_range "" "not clamped to the grid"
+plant "hint: box_lo and box_hi swapped" 11_grid grid_build.c \
+    's|real f_lo = (vec3_axis(box_lo, a)|real f_lo = (vec3_axis(box_hi, a)|; s|real f_hi = (vec3_axis(box_hi, a)|real f_hi = (vec3_axis(box_lo, a)|' \
+    test_cell_range "" "box_lo and box_hi swapped"
+plant "hint: the first cell truncated" 11_grid grid_build.c \
+    's|real_to_index(real_ceil(f_lo) - 1, 0|real_to_index((real)(long long)f_lo, 0|' \
+    test_cell_range "" "so does a truncated f_lo"
+plant "hint: the first cell floor(f_lo) - 1" 11_grid grid_build.c \
+    's|real_to_index(real_ceil(f_lo) - 1, 0|real_to_index(real_floor(f_lo) - 1, 0|' \
+    test_cell_range "" "floor\(f_lo\) - 1 is one cell too many"
+plant "hint: the cell range counted from the origin" 11_grid grid_build.c \
+    's|(vec3_axis(box_lo, a) - vec3_axis(g->lo, a))|(vec3_axis(box_lo, a) - 0 * vec3_axis(g->lo, a))|; s|(vec3_axis(box_hi, a) - vec3_axis(g->lo, a))|(vec3_axis(box_hi, a) - 0 * vec3_axis(g->lo, a))|' \
+    test_cell_range "" "f counted from the origin"
+plant "hint: the cell range times the cell size" 11_grid grid_build.c \
+    's|/ vec3_axis(g->cell, a);|* vec3_axis(g->cell, a);|g' \
+    test_cell_range "" "divide by the cell's size"
+plant "hint: f_hi from the grid's high corner" 11_grid grid_build.c \
+    's|real f_hi = (vec3_axis(box_hi, a) - vec3_axis(g->lo, a))|real f_hi = (vec3_axis(box_hi, a) - vec3_axis(g->hi, a))|' \
+    test_cell_range "" "f_hi counted from the grid's high corner"
+plant "hint: the last cell truncated" 11_grid grid_build.c \
+    's|real_to_index(real_floor(f_hi), -1|real_to_index(f_hi < 0 ? real_ceil(f_hi) : real_floor(f_hi), -1|' \
+    test_cell_range "" "last truncated towards zero"
+# The entry: a parallel axis, the crossings' sign, the miss, the slack on one side, the window's start.
+plant "hint: the entry's parallel axis never misses" 11_grid grid_march.c \
+    's|if (!(p >= lo \&\& p <= hi))|if (0 \&\& !(p >= lo \&\& p <= hi))|' \
+    test_stop_rule "" "misses the box unless lo_a <= p_a <= hi_a"
+plant "hint: the entry's crossings' sign flipped" 11_grid grid_march.c \
+    's|real t_lo = (lo - p) \* inv_d\[a\], t_hi = (hi - p) \* inv_d\[a\];|real t_lo = (p - lo) * inv_d[a], t_hi = (p - hi) * inv_d[a];|' \
+    test_dda_cells "" "the crossings' sign flipped"
+plant "hint: the entry never misses" 11_grid grid_march.c \
+    's|return \*t0 <= \*t1;|return true;|' \
+    test_dda_cells "" "misses the box when \*t0 > \*t1"
+plant "hint: the entry's slack on the entering side only" 11_grid grid_march.c \
+    's|far = real_fmax(t_lo, t_hi) + slack\[a\];|far = real_fmax(t_lo, t_hi);|' \
+    test_dda_cells "" "enter with the slack on one side only"
+plant "hint: the entry's slack on the leaving side only" 11_grid grid_march.c \
+    's|real near = real_fmin(t_lo, t_hi) - slack\[a\],|real near = real_fmin(t_lo, t_hi),|' \
+    test_dda_cells "" "enter with the slack on one side only"
+plant "hint: the entry's window from 0, not t0" 11_grid grid_march.c \
+    's|\*t0 = real_fmax(\*t0, near);|*t0 = real_fmax(0, near);|' \
+    test_dda_cells "" "\*t0 = max\(\*t0, entering t of each axis\)"
+# dda_step: the grid's first cell, the plane for each direction, next kept up to date, the check after the step.
+plant "hint: dda_step stops at cell 0" 11_grid grid_march.c \
+    's|if (m->i\[a\] < 0 \|\| m->i\[a\] >= g->n\[a\])|if (m->i[a] <= 0 \|\| m->i[a] >= g->n[a])|' \
+    test_dda_cells "" "dda_step stops too early"
+plant "hint: dda_step's plane i + step" 11_grid grid_march.c \
+    's|m->next\[a\] = crossing(g, a, m->i\[a\] + (m->step\[a\] > 0), r, inv_d);|m->next[a] = crossing(g, a, m->i[a] + m->step[a], r, inv_d);|' \
+    test_dda_cells "" "next_a comes from the wrong plane"
+plant "hint: dda_step's plane i" 11_grid grid_march.c \
+    's|m->next\[a\] = crossing(g, a, m->i\[a\] + (m->step\[a\] > 0), r, inv_d);|m->next[a] = crossing(g, a, m->i[a], r, inv_d);|' \
+    test_dda_cells "" "next_a comes from the plane the ray just crossed"
+plant "hint: dda_step's plane i + 1 both ways" 11_grid grid_march.c \
+    's|m->next\[a\] = crossing(g, a, m->i\[a\] + (m->step\[a\] > 0), r, inv_d);|m->next[a] = crossing(g, a, m->i[a] + 1, r, inv_d);|' \
+    test_dda_cells "" "next_a comes from the wrong plane"
+plant "hint: dda_step's next not updated" 11_grid grid_march.c \
+    's|m->next\[a\] = crossing(g, a, m->i\[a\] + (m->step\[a\] > 0), r, inv_d);|(void)r, (void)inv_d;|' \
+    test_dda_cells "" "or is not updated"
+plant "hint: dda_step checks the grid before the step" 11_grid grid_march.c \
+    's|^    m->i\[a\] += m->step\[a\];|    if (m->i[a] < 0 \|\| m->i[a] >= g->n[a]) return false;|; s|^    if (m->i\[a\] < 0 \|\| m->i\[a\] >= g->n\[a\])$|    m->i[a] += m->step[a]; if (0)|' \
+    test_dda_cells "" "dda_step goes on past the grid"
+# The stop rule: this cell's boundary on the axis it ends by.
+plant "hint: the stop rule against t0" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= t0 - slack[a])|' \
+    test_stop_rule "" "the march goes on after the best hit"
+plant "hint: the stop rule at x's boundary" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[0] - slack[0])|' \
+    test_dda_axis_steps "" "the stop rule tests next_a - slack_a of the axis a the cell ends by"
+plant "hint: the stop rule with x's slack" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[a] - slack[0])|' \
+    test_stop_rule "" "the stop rule with another axis's slack"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"

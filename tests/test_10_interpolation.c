@@ -59,7 +59,7 @@ static size_t matching_once(suspect_vec3 *out, const suspect_vec3 *in, size_t n,
 
 /* The values typical mistakes of interpolate_vec3 give for A_a, A_b, A_c at
  * (beta, gamma), and what to say about each. */
-#define INTERPOLATE_MISTAKES 14
+#define INTERPOLATE_MISTAKES 15
 /* v normalized, or v itself when it is the zero vector (which has no direction). */
 static vec3 normalized_or_zero(vec3 v) { return vec3_length_squared(v) > 0 ? vec3_normalize(v) : v; }
 static void interpolate_mistakes(suspect_vec3 mistakes[INTERPOLATE_MISTAKES], vec3 A_a, vec3 A_b, vec3 A_c, real beta,
@@ -79,6 +79,8 @@ static void interpolate_mistakes(suspect_vec3 mistakes[INTERPOLATE_MISTAKES], ve
         {MIX(1 - gamma, beta, gamma), "alpha = 1 - gamma: the weight of vertex a is 1 - beta - gamma"},
         {MIX(beta + gamma, beta, gamma), "alpha = beta + gamma: it is 1 - beta - gamma"},
         {MIX(0, beta, gamma), "vertex a left out: A = alpha A_a + beta A_b + gamma A_c"},
+        {MIX((real)(int)alpha, beta, gamma), "alpha converted to an int: (int)(1 - beta - gamma) is 0 inside the "
+                                             "triangle; keep every weight a real"},
         {vec3_scale(MIX(alpha, beta, gamma), (real)(1.0 / 3)),
          "divided by 3: the weights already sum to 1 (alpha + beta + gamma = 1)"},
         {A_a, "A_a whatever beta and gamma: the exercise is still to do"},
@@ -218,11 +220,17 @@ static void expect_index(texture_kind kind, long long i, int n, long long expect
     int got = texel_index(kind, i, n);
     long long r = i % n;                                                           /* C's remainder */
     long long as_int = (long long)(int32_t)(uint32_t)(unsigned long long)i % n; /* i converted to int first */
+    long long mask = i & (n - 1);                                                /* two's complement, any n */
     const suspect repeat_mistakes[] = {
         {(double)r, "C's % keeps the sign of i (-1 % n is -1): add n to a negative remainder"},
         {(double)(r < 0 ? -r : r), "the remainder's absolute value mirrors the texture: add n to a negative remainder"},
         {(double)(r + n), "i % n + n is n too many for i >= 0: take it mod n again, or add n only when negative"},
         {(double)(r < 0 ? r + n - 1 : r), "a negative remainder plus n - 1: -1 must become n - 1, so add n"},
+        {(double)(r <= 0 ? r + n : r), "a remainder of 0 plus n: add n only to a negative remainder (m < 0, not m <= "
+                                       "0); i = 0 reads texel 0"},
+        {(double)(i < 0 ? 0 : r), "a negative i read as texel 0: a RepeatTexture wraps negative i too (-1 is the last "
+                                  "texel, n - 1)"},
+        {(double)mask, "i & (n - 1) is i mod n only when n is a power of two: take i % n (and add n when negative)"},
         {(double)(as_int < 0 ? as_int + n : as_int), "i converted to int before the %: i is a long long and may be "
                                                       "far beyond an int's range"},
         {(double)wrapped(TEXTURE_CLAMP, i, n), "clamped: a RepeatTexture wraps (i mod n)"},
@@ -345,7 +353,8 @@ static void expect_nearest(const scene_texture *tex, mesh_uv uv, int x, int y)
     double X = coordinate(uv.u, TW), Y = coordinate(1 - uv.v, TH);
     long long cx = (long long)(X + 0.5), cy = (long long)(Y + 0.5); /* the course's rounding */
     long long col = wrapped(k, cx, TW), row = wrapped(k, cy, TH);
-    const char *half = "dropped the fraction without adding 1/2 first: the nearest texel is (long long)(x + 1/2)";
+    const char *half = "dropped the fraction without adding 1/2 first (1 / 2 in integers is 0: write 0.5): the "
+                       "nearest texel is (long long)(x + 1/2)";
     const suspect_vec3 mistakes[] = {
         {numbered_colour(row, col), "u and v swapped: the column comes from x = u W, the row from y = (1 - v) H "
                                     "(texture_image_texel(img, column, row))"},
@@ -368,6 +377,10 @@ static void expect_nearest(const scene_texture *tex, mesh_uv uv, int x, int y)
                                                                   "width"},
         {numbered_colour(wrapped(other, cx, TW), wrapped(other, cy, TH)),
          "wrapped the other way: tex->kind says repeat or clamp (texel_index)"},
+        /* texture_image_texel keeps an index outside the image at the edge: clamped */
+        {numbered_colour(wrapped(TEXTURE_CLAMP, cx, TW), wrapped(TEXTURE_CLAMP, cy, TH)),
+         "not wrapped: each index goes through texel_index(tex->kind, i, n) (texture_image_texel only keeps it inside "
+         "the image)"},
         {numbered_colour(0, 0), fabs(X) > 2147483647.0 || fabs(Y) > 2147483647.0
                                     ? "texel (0, 0) for a coordinate beyond an int's range: the index converted to "
                                       "int overflowed; keep it a long long"
@@ -476,21 +489,36 @@ typedef enum {
     BILINEAR_PLUS_ONE_Y,
     BILINEAR_ROWS_BY_WIDTH, /* y0 and y1 wrapped by the width */
     BILINEAR_FRACTION_WRAPPED, /* s = x - x0 with x0 wrapped into the image */
+    BILINEAR_ST_SWAPPED,       /* s = y - y0, t = x - x0 */
+    BILINEAR_OTHER_KIND,       /* every index wrapped by the other kind of texture */
+    BILINEAR_FRACTION_TRUNCATED, /* x0 = floor(x), but s = x - (long long)x: negative for x < 0 */
+    BILINEAR_T_BOTH,           /* both rows weigh 1 - t */
     BILINEAR_VARIANTS
 } bilinear_variant;
 
-static vec3 texel_vec3(const scene_texture *tex, long long x, long long y)
+/* The texel at (x, y) wrapped as a texture of `kind` wraps. */
+static vec3 texel_of_kind(const scene_texture *tex, texture_kind kind, long long x, long long y)
 {
-    color c = texture_image_texel(&tex->image, (int)wrapped(tex->kind, x, tex->image.width),
-                                  (int)wrapped(tex->kind, y, tex->image.height));
+    color c = texture_image_texel(&tex->image, (int)wrapped(kind, x, tex->image.width),
+                                  (int)wrapped(kind, y, tex->image.height));
     return vec3_make(c.r, c.g, c.b);
 }
 
-/* The texel at (x, y) read with the column and the row swapped, each kept in range. */
+static vec3 texel_vec3(const scene_texture *tex, long long x, long long y) { return texel_of_kind(tex, tex->kind, x, y); }
+
+/* The texel at (x, y) wrapped by the other kind of texture than tex's. */
+static vec3 texel_other_kind(const scene_texture *tex, long long x, long long y)
+{
+    return texel_of_kind(tex, tex->kind == TEXTURE_REPEAT ? TEXTURE_CLAMP : TEXTURE_REPEAT, x, y);
+}
+
+/* The texel at (x, y) read with the column and the row swapped, each wrapped by its own side and then
+ * kept inside the image as texture_image_texel keeps an index outside it: at the edge. */
 static vec3 texel_swapped(const scene_texture *tex, long long x, long long y)
 {
     int W = tex->image.width, H = tex->image.height;
-    color c = texture_image_texel(&tex->image, (int)(wrapped(tex->kind, y, H) % W), (int)(wrapped(tex->kind, x, W) % H));
+    color c = texture_image_texel(&tex->image, (int)llmin(wrapped(tex->kind, y, H), W - 1),
+                                  (int)llmin(wrapped(tex->kind, x, W), H - 1));
     return vec3_make(c.r, c.g, c.b);
 }
 
@@ -507,6 +535,12 @@ static vec3 bilinear_as(const scene_texture *tex, double x, double y, bilinear_v
     double s = x - fx, t = v == BILINEAR_T_IS_S ? s : y - fy;
     if (v == BILINEAR_FRACTION_WRAPPED)
         s = x - (double)wrapped(tex->kind, (long long)fx, W), t = y - (double)wrapped(tex->kind, (long long)fy, H);
+    if (v == BILINEAR_FRACTION_TRUNCATED)
+        s = x - trunc(x), t = y - trunc(y);
+    if (v == BILINEAR_ST_SWAPPED) {
+        double s_was = s;
+        s = t, t = s_was;
+    }
     long long x0 = (long long)fx, y0 = (long long)fy, x1 = x0 + 1, y1 = v == BILINEAR_ROW_ABOVE ? y0 - 1 : y0 + 1;
     if (v == BILINEAR_NO_WRAP || v == BILINEAR_NO_WRAP_X)
         x1 = x1 >= 0 && x1 < W ? x1 : wrapped(tex->kind, x0, W);
@@ -525,10 +559,12 @@ static vec3 bilinear_as(const scene_texture *tex, double x, double y, bilinear_v
     double ws = corner || v == BILINEAR_S_SWAPPED || v == BILINEAR_S_SWAPPED_TOP ? 1 - s : s;
     double wb = v == BILINEAR_BOTTOM_T ? t : corner || v == BILINEAR_S_SWAPPED || v == BILINEAR_S_SWAPPED_BOTTOM ? 1 - s : s;
     double wt = corner || v == BILINEAR_T_SWAPPED ? 1 - t : t;
-    vec3 (*T)(const scene_texture *, long long, long long) = v == BILINEAR_UV_SWAPPED ? texel_swapped : texel_vec3;
+    vec3 (*T)(const scene_texture *, long long, long long) = v == BILINEAR_UV_SWAPPED   ? texel_swapped
+                                                             : v == BILINEAR_OTHER_KIND ? texel_other_kind
+                                                                                        : texel_vec3;
     vec3 top = vec3_add(vec3_scale(T(tex, x0, y0), (real)(1 - ws)), vec3_scale(T(tex, x1, y0), (real)ws));
     vec3 bottom = vec3_add(vec3_scale(T(tex, x0, y1), (real)(1 - wb)), vec3_scale(T(tex, x1, y1), (real)wb));
-    return vec3_add(vec3_scale(top, (real)(1 - wt)), vec3_scale(bottom, (real)wt));
+    return vec3_add(vec3_scale(top, (real)(1 - wt)), vec3_scale(bottom, (real)(v == BILINEAR_T_BOTH ? 1 - wt : wt)));
 }
 
 /* texture_bilinear(tex, uv) is `expected` within `tolerance` (`known` says
@@ -577,6 +613,14 @@ static void expect_bilinear_is(const scene_texture *tex, mesh_uv uv, vec3 expect
         [BILINEAR_ROWS_BY_WIDTH] = "the rows wrapped by the width: y0 and y0 + 1 wrap by the height",
         [BILINEAR_FRACTION_WRAPPED] = "the fractions from the wrapped indices: s = x - floor(x) and t = y - floor(y), "
                                       "before any wrapping (the wrap only picks the texels)",
+        [BILINEAR_ST_SWAPPED] = "s and t swapped: s = x - x0 blends along x (the columns), t = y - y0 along y (the "
+                                "rows)",
+        [BILINEAR_OTHER_KIND] = "wrapped the other way: tex->kind says repeat or clamp (texel_index(tex->kind, i, n) "
+                                "for each of the four indices)",
+        [BILINEAR_FRACTION_TRUNCATED] = "the fraction of (long long)x: for x < 0 it is negative; s = x - floor(x) and t "
+                                        "= y - floor(y), from the same floor as the indices",
+        [BILINEAR_T_BOTH] = "both rows weighed 1 - t: the row y0 weighs 1 - t, the row y0 + 1 weighs t (the weights sum "
+                            "to 1)",
     };
     double x = coordinate(uv.u, tex->image.width), y = coordinate(1 - uv.v, tex->image.height);
     suspect_vec3 mistakes[BILINEAR_VARIANTS + 1];

@@ -87,6 +87,12 @@ static void expect_resolution(const double extent[3], long surfaces, double dens
     if ((double)n[0] * n[1] * n[2] > 1e3 * lambda_n)
         why = "far more cells than lambda N: the product of extents is over the spanned axes only (a flat axis's "
               "zero extent makes s infinite)";
+    for (int a = 0; a < 3; a++) {
+        if (n[a] > 1 << 20)
+            why = "an axis over 2^20 cells: n_a = min(max(round(e_a s), 1), 2^20), an int however large s is";
+        if (extent[a] == 0 && n[a] == 0)
+            why = "a flat axis without cells: an axis of zero extent gets one cell (n_a = 1), else the grid has none";
+    }
     bool named = false;
     for (size_t k = 0; k < sizeof mistakes / sizeof mistakes[0]; k++) {
         int m[3];
@@ -126,6 +132,19 @@ static void expect_capped_resolution(void)
                        "product is above it (> C, not >= C)"
                  : "s = (min(lambda N, cap) / (e_x e_y e_z))^(1/3) cells per unit, n_a = round(e_a s), and the "
                    "first try fits here");
+    /* lambda N = 5000 over the cap 4096: the first try is s for the cap's 4096 cells, (4096 / 64)^(1/3) = 4,
+     * and 32 x 8 x 16 = 4096 fits at once.  A first try for lambda N = 5000 cells, s = 4.27, gives 34 x 9 x
+     * 17 = 5202, and one shrink by 0.99 (4096 / 5202)^(1/3) = 0.914 lands below: 31 x 8 x 16. */
+    grid_resolution(box, 1000, 5, 4096, n);
+    if (n[0] != 32 || n[1] != 8 || n[2] != 16)
+        fail_msg("grid_resolution(extent 8 x 2 x 4, 1000 surfaces, density 5, cap 4096)\n    expected 32 x 8 x 16 "
+                 "cells (s = (4096 / 64)^(1/3) = 4: the first try fits)\n    got      %d x %d x %d\n    likely "
+                 "mistake: %s",
+                 n[0], n[1], n[2],
+                 (double)n[0] * n[1] * n[2] > 4096
+                     ? "the cap: while n_x n_y n_z is above it, shrink s and round again"
+                     : "the first try's s from lambda N cells, above the cap: it is s for min(lambda N, C) cells, "
+                       "here the cap's 4096, which fit at once (or a product equal to the cap shrunk: > C, not >= C)");
     grid_resolution(box, 1000, 8, 990, n);
     const int lowest[3] = {18, 4, 9}, highest[3] = {20, 5, 10};
     const double cells = (double)n[0] * n[1] * n[2];
@@ -157,6 +176,9 @@ static void test_resolution(void **state)
     /* thin in y: s = (8000 / 0.32)^(1/3) = 29.24, e_y s = 0.29 rounds to 0, yet y is spanned: one cell;
      * round(233.92) = 234, round(116.96) = 117 */
     expect_resolution((const double[3]){8, 0.01, 4}, 1000, 8, 1L << 20, (const int[3]){234, 1, 117});
+    /* a thin line: s = (10^6 / 10^-18)^(1/3) = 10^8 cells per unit; x is held at 2^20 cells, y and z round
+     * 0.1 to 0 and get one each: 2^20 cells, within the cap 2^24, so no shrinking */
+    expect_resolution((const double[3]){1, 1e-9, 1e-9}, 500000, 2, 1L << 24, (const int[3]){1 << 20, 1, 1});
     rng_state = 18;
     surface_list list;
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
@@ -273,12 +295,16 @@ static void expect_range(const grid *g, vec3 lo, vec3 hi, const int *want_first,
         const double F = f_lo, L = f_hi, right_first = clamp_cell(ceil(F) - 1, 0, n), right_last = clamp_cell(floor(L), -1, n - 1);
         const real f_lo_x = (l[a] - o[0]) / cell[0], f_hi_x = (u[a] - o[0]) / cell[0];
         const real f_lo_xc = (l[a] - o[a]) / cell[0], f_hi_xc = (u[a] - o[a]) / cell[0]; /* x's cell size only */
+        const real f_lo_0 = l[a] / cell[a], f_hi_0 = u[a] / cell[a];                     /* from the origin */
+        const real f_lo_times = (l[a] - o[a]) * cell[a], f_hi_times = (u[a] - o[a]) * cell[a];
+        const real f_hi_hi = (u[a] - vec3_axis(g->hi, a)) / cell[a]; /* from the grid's high corner */
         const struct {
             double first, last;
             const char *why;
         } mistakes[] = {
             {clamp_cell(floor(F), 0, n), right_last, "first = floor(f_lo): a box whose low side lies on a cell boundary "
-                                                     "(f_lo whole) touches the cell below too: first = ceil(f_lo) - 1"},
+                                                     "(f_lo whole) touches the cell below too (so does a truncated "
+                                                     "f_lo): first = ceil(f_lo) - 1"},
             {right_first, clamp_cell(ceil(L) - 1, -1, n - 1), "last = ceil(f_hi) - 1: a box whose high side lies on a "
                                                               "cell boundary touches the cell above too: last = floor(f_hi)"},
             {right_first, clamp_cell(trunc(L), -1, n - 1), "last truncated towards zero: for -1 < f_hi < 0 (a box "
@@ -304,6 +330,13 @@ static void expect_range(const grid *g, vec3 lo, vec3 hi, const int *want_first,
              "first = ceil(f_lo) - 1, last = floor(f_hi)"},
             {right_first, clamp_cell(floor(F), -1, n - 1), "f_hi computed from box_lo: the last cell is floor(f_hi) "
                                                            "with f_hi = (box_hi_a - lo_a) / cell_a"},
+            {clamp_cell(ceil((double)f_lo_0) - 1, 0, n), clamp_cell(floor((double)f_hi_0), -1, n - 1),
+             "f counted from the origin: f = (x - lo_a) / cell_a counts cells from the grid's low corner lo_a"},
+            {clamp_cell(ceil((double)f_lo_times) - 1, 0, n), clamp_cell(floor((double)f_hi_times), -1, n - 1),
+             "f = (x - lo_a) cell_a: divide by the cell's size, f = (x - lo_a) / cell_a, to count cells"},
+            {right_first, clamp_cell(floor((double)f_hi_hi), -1, n - 1),
+             "f_hi counted from the grid's high corner: f_lo and f_hi both count from lo_a, f_hi = (box_hi_a - lo_a) "
+             "/ cell_a"},
         };
         /* beyond an int's range the likely mistake is the conversion, whatever else the result looks like */
         const bool beyond_int = fabs(F) > 2147483647.0 || fabs(L) > 2147483647.0;
@@ -312,10 +345,11 @@ static void expect_range(const grid *g, vec3 lo, vec3 hi, const int *want_first,
                                        "with real_to_index (common/box.h), then convert"
                                      : "first = ceil(f_lo) - 1, last = floor(f_hi), clamped to 0 .. n - 1 (first > "
                                        "last: none)";
+        bool named = false;
         for (size_t k = 0; !beyond_int && k < sizeof mistakes / sizeof mistakes[0]; k++)
             if (mistakes[k].first == first[a] && mistakes[k].last == last[a]) {
-                why = mistakes[k].why;
-                break;
+                why = named ? describe("%s\n    or, the same numbers: %s", why, mistakes[k].why) : mistakes[k].why;
+                named = true;
             }
         fail_msg("grid_cell_range(grid from (%g, %g, %g), cells %g x %g x %g, n = %d x %d x %d; box (%.9g, %.9g, "
                  "%.9g) .. (%.9g, %.9g, %.9g)), axis %c: f_lo = %.9g, f_hi = %.9g (in cells)\n"
@@ -431,15 +465,19 @@ static void expect_march_cells(const grid *g, ray r, const char *what, int cells
  * edge x = hi_x, y = hi_y outside by half the reach of box_ray_slack (it
  * leaves x's slab at t = 2, enters y's at t = 2 + reach / 2: the gap is
  * far more than the roundings of these crossings, far less than the two
- * slacks) enters the widened box: the march errs towards a cell too many. */
+ * slacks) enters the widened box: the march errs towards a cell too many.
+ * So does one outside by 1.5 reach: the slacks of x and y are reach each
+ * (|d_a| = 1), and the gap is within their sum, 2 reach, but beyond either
+ * alone (half a reach either way, again far more than the roundings). */
 static void expect_entry_edges(const grid *g)
 {
     const ray on_face = {{g->lo.x - 1, g->hi.y, 0}, {1, 0, 0}};
     real inv_d[3], slack[3];
     const real reach = box_ray_slack((box){g->lo, g->hi}, (ray){{g->hi.x - 2, g->hi.y + 2, 0}, {1, -1, 0}}, inv_d, slack);
     const ray past_edge = {{g->hi.x - 2, g->hi.y + 2 + reach / 2, 0}, {1, -1, 0}};
-    for (int k = 0; k < 2; k++) {
-        const ray r = k ? past_edge : on_face;
+    const ray farther = {{g->hi.x - 2, g->hi.y + 2 + reach * (real)1.5, 0}, {1, -1, 0}};
+    for (int k = 0; k < 3; k++) {
+        const ray r = k == 2 ? farther : k ? past_edge : on_face;
         grid_counts counts = {0, 0};
         hit_record hit;
         assert_false(grid_intersect_counted(g, r, 0, REAL_INFINITY, &hit, &counts));
@@ -447,13 +485,18 @@ static void expect_entry_edges(const grid *g)
             fail_msg("grid_intersect_counted(ray from (%.17g, %.17g, %.17g) along (%g, %g, 0), %s)\n    expected at "
                      "least 1 cell visited\n    got      0\n    likely mistake: %s",
                      (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y,
-                     k ? "passing the box's edge x = hi_x, y = hi_y outside by half the reach of the slack"
-                       : "in the plane of the box's face y = hi_y",
-                     k ? "enter without the slack (or with it taken inwards): each entering t is lowered and each "
-                         "leaving t raised by its axis's slack_a, so that a ray within rounding of the box's edge "
-                         "still visits its cells (the march errs towards a cell too many, never one too few)"
-                       : "enter: a ray with d_a = 0 on a face of axis a is inside that slab: lo_a <= p_a <= hi_a, "
-                         "the faces included");
+                     k == 2 ? "passing the box's edge x = hi_x, y = hi_y outside by 1.5 times the reach of the "
+                              "slack, within the two slacks together"
+                     : k    ? "passing the box's edge x = hi_x, y = hi_y outside by half the reach of the slack"
+                            : "in the plane of the box's face y = hi_y",
+                     k == 2 ? "enter with the slack on one side only: the entering t is lowered by slack_a AND the "
+                              "leaving t raised by slack_a, so that the gap between two axes' crossings is covered by "
+                              "both slacks"
+                     : k    ? "enter without the slack (or with it taken inwards): each entering t is lowered and each "
+                              "leaving t raised by its axis's slack_a, so that a ray within rounding of the box's edge "
+                              "still visits its cells (the march errs towards a cell too many, never one too few)"
+                            : "enter: a ray with d_a = 0 on a face of axis a is inside that slab: lo_a <= p_a <= hi_a, "
+                              "the faces included");
     }
 }
 
@@ -487,7 +530,8 @@ static void expect_entry(const grid *g)
                  "negative, through the grid's box)\n    expected %d cells visited\n    got      0 (the ray missed "
                  "the box)\n    likely mistake: enter: for d_a < 0 the ray enters the slab at hi_a and leaves it at "
                  "lo_a; the entering t is the smaller of (lo_a - p_a) inv_d_a and (hi_a - p_a) inv_d_a (take the "
-                 "min and the max, or swap them when d_a < 0)",
+                 "min and the max, or swap them when d_a < 0); or the crossings' sign flipped: t = (lo_a - p_a) "
+                 "inv_d_a, from the ray's origin to the plane",
                  (double)down.p.x, (double)down.p.y, (double)down.p.z, (double)down.d.x, (double)down.d.y,
                  (double)down.d.z, cells);
     expect_march_cells(g, down, "ray with every component negative", cells);
@@ -584,6 +628,15 @@ static void test_dda_axis_steps(void **state)
                                         "and the max); or "
                                       : "",
                              "xyz"[a]);
+                /* the next sphere's near side lies more than a cell away (the cells are smaller than the
+                 * spacing times (m_a - 1) / m_a, plus a few hundredths): the march visits more than one cell */
+                if (!fg && counts.cells == 1)
+                    fail_msg("grid_intersect_counted(ray from sphere %d's centre along %c%c, t_min = %g)\n    expected "
+                             "sphere %d, more than a cell away\n    got      no hit, after 1 cell\n    likely mistake: "
+                             "the march ended after its first cell: the stop rule tests next_a - slack_a of the axis "
+                             "a the cell ends by (the nearest boundary, here %c's; another axis's next is infinite "
+                             "along an axis), or dda_step gave false at once",
+                             s, sign > 0 ? '+' : '-', "xyz"[a], (double)(2 * radius), want.surface, "xyz"[a]);
                 if (!same_hit(fw, &want, fg, &got))
                     fail_msg("grid_intersect(ray from sphere %d's centre (%.17g, %.17g, %.17g) along %c%c, t_min = "
                              "%g) through a grid of %d x %d x %d cells\n    expected sphere %d at t = %.17g\n"
@@ -682,13 +735,14 @@ static void test_dda_no_accumulation(void **state)
 }
 
 /* The march of r through the grid of `list` (freed here), which has g's
- * cells along x; the linear scan's hit must be surface `expected`. */
-static bool march_in_row(surface_list *list, const grid *g, ray r, int expected, hit_record *want, hit_record *got,
-                         grid_counts *counts)
+ * cells along axis a; the linear scan's hit must be surface `expected`. */
+static bool march_in_row(surface_list *list, const grid *g, int a, ray r, int expected, hit_record *want,
+                         hit_record *got, grid_counts *counts)
 {
     grid h;
     build_grid(&h, list, grid_default_options());
-    assert_true(h.n[0] == g->n[0] && h.lo.x == g->lo.x && h.cell.x == g->cell.x); /* the same cells */
+    assert_true(h.n[a] == g->n[a] && vec3_axis(h.lo, a) == vec3_axis(g->lo, a) &&
+                vec3_axis(h.cell, a) == vec3_axis(g->cell, a)); /* the same cells */
     assert_true(surfaces_intersect(list, r, 0, REAL_INFINITY, want) && want->surface == expected);
     *counts = (grid_counts){0, 0};
     bool found = grid_intersect_counted(&h, r, 0, REAL_INFINITY, got, counts);
@@ -715,7 +769,7 @@ static void expect_stop_in_this_cell(const grid *g)
     surface_list_add_sphere(&list, (sphere){{x_B + (real)0.1 * cell, (real)0.5, (real)0.5}, (real)0.1 * cell}, 0, 9);
     hit_record want, got;
     grid_counts counts;
-    bool found = march_in_row(&list, g, (ray){{-1, (real)0.5, (real)0.5}, {1, 0, 0}}, 9, &want, &got, &counts);
+    bool found = march_in_row(&list, g, 0, (ray){{-1, (real)0.5, (real)0.5}, {1, 0, 0}}, 9, &want, &got, &counts);
     if (!same_hit(true, &want, found, &got) || counts.cells != 5)
         fail_msg("grid_intersect_counted(ray along +x through a row of %d cells of %.17g: a triangle hit at x = %.17g "
                  "and a sphere hit at x = %.17g, both in cell 4)\n    expected sphere 9 at t = %.17g, 5 cells "
@@ -730,39 +784,62 @@ static void expect_stop_in_this_cell(const grid *g)
                                              : "the march ends in the cell that holds the best hit, cell 4 here");
 }
 
-/* The stop rule allows for the boundary's slack: in the row of cells of `g`
- * (10 surfaces in row_of_cells's box, as here), a triangle across the ray
- * along +x is hit half a slack before cell 3's far boundary (slack[0] of
- * box_ray_slack, 176 REAL_EPSILON here, far more than the few roundings of
- * the hit's t and of the crossing, far less than the margin, so the
- * triangle is listed in cells 3 and 4).  Within the slack the hit may be
- * the rounding of a point beyond the boundary: the march visits cell 4 too,
- * 5 cells; a rule without the slack, or with it added, stops after 4. */
-static void expect_stop_slack(const grid *g)
+/* The point `along` axis a (x or y) at (u, v) across it. */
+static vec3 on_axis(int a, real along, real u, real v) { return a ? vec3_make(u, along, v) : vec3_make(along, u, v); }
+
+/* A column of cells along y: tiny spheres at the corners of the box [0, 1] x
+ * [0, 10] x [0, 1] (surfaces 0-7), row_of_cells's box turned. */
+static void column_of_cells(surface_list *list)
 {
-    const ray r = {{-1, (real)0.5, (real)0.5}, {1, 0, 0}};
+    surface_list_init(list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+    for (int k = 0; k < 8; k++) /* the corners, x, y, z from bits 0, 1, 2 */
+        surface_list_add_sphere(
+            list, (sphere){on_axis(1, (real)(10 * ((k >> 1) & 1)), (real)(k & 1), (real)(k >> 2)), (real)0.001}, 0, k);
+}
+
+/* The stop rule allows for the boundary's slack: in the row of cells of `g`
+ * along axis a (10 surfaces in row_of_cells's box, or column_of_cells's
+ * along y, as here), a triangle across the ray along +a is hit half a slack
+ * before cell 3's far boundary (slack[a] of box_ray_slack, 176 REAL_EPSILON
+ * here, far more than the few roundings of the hit's t and of the crossing,
+ * far less than the margin, so the triangle is listed in cells 3 and 4).
+ * Within the slack the hit may be the rounding of a point beyond the
+ * boundary: the march visits cell 4 too, 5 cells; a rule without the slack,
+ * or with it added, stops after 4.  Along y, x's slack is 0 (d_x = 0): a
+ * rule that takes x's slack for every axis stops after 4 too. */
+static void expect_stop_slack(const grid *g, int a)
+{
+    const ray r = {on_axis(a, -1, (real)0.5, (real)0.5), on_axis(a, 1, 0, 0)};
     real inv_d[3], slack[3];
     (void)box_ray_slack((box){g->lo, g->hi}, r, inv_d, slack);
-    const real next = (g->lo.x + 4 * g->cell.x - r.p.x) * inv_d[0]; /* as the march's crossing() */
-    const real x = r.p.x + (next - slack[0] / 2);
+    const real next = (vec3_axis(g->lo, a) + 4 * vec3_axis(g->cell, a) - vec3_axis(r.p, a)) * inv_d[a]; /* crossing() */
+    const real x = vec3_axis(r.p, a) + (next - slack[a] / 2);
     surface_list list;
-    row_of_cells(&list, TRIANGLE_WATERTIGHT, false);
-    surface_list_add_triangle(&list, (triangle){{x, (real)0.3, (real)0.3}, {x, (real)0.8, (real)0.4}, {x, (real)0.4, (real)0.8}},
+    if (a)
+        column_of_cells(&list);
+    else
+        row_of_cells(&list, TRIANGLE_WATERTIGHT, false);
+    surface_list_add_triangle(&list,
+                              (triangle){on_axis(a, x, (real)0.3, (real)0.3), on_axis(a, x, (real)0.8, (real)0.4),
+                                         on_axis(a, x, (real)0.4, (real)0.8)},
                               0, 8);
-    surface_list_add_sphere(&list, (sphere){{9, (real)0.1, (real)0.1}, (real)0.01}, 0, 9); /* off the ray */
+    surface_list_add_sphere(&list, (sphere){on_axis(a, 9, (real)0.1, (real)0.1), (real)0.01}, 0, 9); /* off the ray */
     hit_record want, got;
     grid_counts counts;
-    bool found = march_in_row(&list, g, r, 8, &want, &got, &counts);
+    bool found = march_in_row(&list, g, a, r, 8, &want, &got, &counts);
     if (!same_hit(true, &want, found, &got) || counts.cells != 5)
-        fail_msg("grid_intersect_counted(ray along +x through a row of %d cells: a triangle hit at t = %.17g, half the "
+        fail_msg("grid_intersect_counted(ray along +%c through a row of %d cells: a triangle hit at t = %.17g, half the "
                  "slack %.3g before cell 3's far boundary at t = %.17g)\n    expected the triangle at t = %.17g, 5 "
                  "cells visited (cell 4 too)\n    got      %s %d at t = %.17g, %llu cells\n    likely mistake: %s",
-                 g->n[0], (double)want.t, (double)slack[0], (double)next, (double)want.t,
+                 "xy"[a], g->n[a], (double)want.t, (double)slack[a], (double)next, (double)want.t,
                  found ? "surface" : "no hit, surface", found ? got.surface : -1, found ? (double)got.t : 0.0,
                  (unsigned long long)counts.cells,
-                 counts.cells == 4 ? "the stop rule without the slack (or with it added): a hit within the slack "
-                                     "of the boundary may be a point beyond it, rounded; stop only once t_best <= "
-                                     "next_a - slack_a"
+                 counts.cells == 4 ? a ? "the stop rule with another axis's slack: the slack is slack_a of the axis a "
+                                         "the cell ends by (here y; x's is 0 along y); or without the slack (or with "
+                                         "it added): stop only once t_best <= next_a - slack_a"
+                                       : "the stop rule without the slack (or with it added): a hit within the slack "
+                                         "of the boundary may be a point beyond it, rounded; stop only once t_best <= "
+                                         "next_a - slack_a"
                                    : "the march ends in the cell that holds the best hit, allowing for the slack: "
                                      "t_best <= next_a - slack_a");
 }
@@ -808,7 +885,17 @@ static void test_stop_rule(void **state)
                                         "(stop once t_best <= the cell's far boundary)"
                                       : "the march ends before the hit's cell");
     expect_stop_in_this_cell(&g);
-    expect_stop_slack(&g);
+    expect_stop_slack(&g, 0);
+    /* the same along y, in a column of cells of 10 surfaces (two stand-ins inside) */
+    surface_list column;
+    column_of_cells(&column);
+    surface_list_add_sphere(&column, (sphere){{(real)0.5, 5, (real)0.5}, (real)0.001}, 0, 8);
+    surface_list_add_sphere(&column, (sphere){{(real)0.5, 6, (real)0.5}, (real)0.001}, 0, 9);
+    grid g_column;
+    build_grid(&g_column, &column, grid_default_options());
+    expect_stop_slack(&g_column, 1);
+    grid_free(&g_column);
+    surface_list_free(&column);
     /* the window ends at x = 2 (t = 3), before any surface: no hit, and the march ends in the window's last
      * cell, as t_best starts at t_max; a rule that waits for a hit goes on to the grid's end */
     counts = (grid_counts){0, 0};
