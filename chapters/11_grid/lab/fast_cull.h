@@ -4,7 +4,10 @@
  * the cell, in bytes (fast_build.c's cull_box).  Once per cell the march
  * computes the span of the ray in the same units (cull_span); a box beside
  * that span is passed by with one word test (box_beside_span), and the few
- * left get the slab test (passes_box) before the surface test.
+ * left get the slab test (passes_box) before the surface test.  Their
+ * loops over the three axes are unrolled as fast_march.c's are, but
+ * cull_start's: unrolled, it has gcc warn that the fields it sets may be
+ * read unset (-Wmaybe-uninitialized, through `started`).
  */
 #ifndef CH11_LAB_FAST_CULL_H
 #define CH11_LAB_FAST_CULL_H
@@ -26,7 +29,6 @@ typedef struct {
     real enter[3], leave[3], unit[3];
     int near[3], far[3];
     real near_top[3], far_top[3]; /* 0 or FAST_GRID_BOX_STEPS unit_a: the frame's own sides, near and far */
-    real slack[3];                /* the march's slack_a, infinite where inv_d_a = 0 (every box then passes) */
     bool started;                 /* cull_start has filled in the fields above */
 } cull_frame;
 
@@ -48,8 +50,7 @@ static inline bool passes_box(const uint8_t box[8], const cull_frame *f, real t_
  * (inv_d and slack as the march has them): the steps' length in t, the
  * sides the ray enters and leaves by, the slack.  Once per grid and ray, at
  * the first cell that culls (many rays meet none). */
-static inline void cull_start(cull_frame *f, const fast_grid *g, const real d[3], const real inv_d[3],
-                              const real slack[3])
+static inline void cull_start(cull_frame *f, const fast_grid *g, const real d[3], const real inv_d[3])
 {
     for (int a = 0; a < 3; a++) {
         f->unit[a] = g->frame_step[a] * inv_d[a];
@@ -57,18 +58,21 @@ static inline void cull_start(cull_frame *f, const fast_grid *g, const real d[3]
         f->far[a] = d[a] < 0 ? a : 3 + a;
         f->near_top[a] = (d[a] < 0 ? FAST_GRID_BOX_STEPS : 0) * f->unit[a];
         f->far_top[a] = (d[a] < 0 ? 0 : FAST_GRID_BOX_STEPS) * f->unit[a];
-        f->slack[a] = inv_d[a] != 0 ? slack[a] : REAL_INFINITY;
     }
     f->started = true;
 }
 
-/* The cull frame of cell i: its base_a, widened by the slack, for passes_box. */
-static inline void cull_cell(cull_frame *f, const fast_grid *g, const int i[3], const real p[3], const real inv_d[3])
+/* The cull frame of cell i: its base_a, widened by the march's slack_a
+ * (infinite where inv_d_a = 0: every box then passes), for passes_box. */
+static inline void cull_cell(cull_frame *f, const fast_grid *g, const int i[3], const real p[3], const real inv_d[3],
+                             const real slack[3])
 {
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         real base = inv_d[a] != 0 ? (g->plane[a][i[a]] - g->margin - p[a]) * inv_d[a] : 0;
-        f->enter[a] = base - f->slack[a];
-        f->leave[a] = base + f->slack[a];
+        real widen = inv_d[a] != 0 ? slack[a] : REAL_INFINITY;
+        f->enter[a] = base - widen;
+        f->leave[a] = base + widen;
     }
 }
 
@@ -87,6 +91,7 @@ static inline void cull_span(const cull_frame *f, const fast_grid *g, const int 
 {
     const real top = FAST_GRID_BOX_STEPS;
     real t_in = t_min, t_out = upper, origin[3];
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         origin[a] = g->plane[a][i[a]] - g->margin;
         real t0 = f->enter[a] + f->near_top[a];
@@ -97,6 +102,7 @@ static inline void cull_span(const cull_frame *f, const fast_grid *g, const int 
     const real t_abs = real_abs(t_in) > real_abs(t_out) ? real_abs(t_in) : real_abs(t_out);
     const real rounding = reach + 16 * REAL_EPSILON * t_abs * d_max;
     uint64_t packed_lo = 0, packed_hi = 0;
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         real per_unit = g->per_unit[a];
         real q0 = (p[a] + t_in * d[a] - origin[a]) * per_unit, q1 = (p[a] + t_out * d[a] - origin[a]) * per_unit;

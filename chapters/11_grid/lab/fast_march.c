@@ -1,4 +1,9 @@
-/* fast_march.c - chapter 11's lab: the fast grid's march: mailbox, leaps, batches, two levels. */
+/* fast_march.c - chapter 11's lab: the fast grid's march: mailbox, leaps, batches, two levels.
+ *
+ * The loops over the three axes are unrolled (`#pragma GCC unroll 3`, which
+ * clang honours too): gcc's -O2 keeps such a loop rolled, with its per-axis
+ * values in memory; unrolled, the query runs 7 % fewer instructions
+ * (speed6.md). */
 #include "11_grid/lab/fast_grid.h"
 
 #include <math.h>
@@ -122,6 +127,7 @@ static inline bool dda_leap(const fast_grid *g, dda *m, int side, const ray_fram
      * (infinity on an axis it never crosses); the first of them is the exit. */
     real t_face[3];
     int far_end[3]; /* the index of the cube's last cell along each axis, the cell before its far face */
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         far_end[a] = m->i[a] + step[a] * (side - 1);
         t_face[a] = step[a] ? crossing(g, a, far_end[a] + ahead[a], p, inv_d) : REAL_INFINITY;
@@ -134,6 +140,7 @@ static inline bool dda_leap(const fast_grid *g, dda *m, int side, const ray_fram
     if (beyond < 0 || beyond >= g->n[axis])
         return false; /* the cube's face is beyond the grid's */
     const real back = rf->reach + 16 * REAL_EPSILON * real_abs(t_exit) * rf->d_max;
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         if (a == axis) {
             m->i[a] = beyond;
@@ -167,6 +174,7 @@ static inline void frame_of(ray_frame *f, const fast_grid *g, ray r)
     const real reach = 16 * REAL_EPSILON * (vec3_max_abs(r.p) + g->scale);
     real inv_d[3];
     long octant = 0;
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         inv_d[a] = 1 / d[a];
         f->parallel[a] = !isfinite(inv_d[a]); /* d_a = +0 or -0, or tiny */
@@ -197,6 +205,7 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
      * the loop below would leave t0 = 0 <= t1.  It is skipped. */
     const bool inside = t_min == 0 && upper >= 0 && f->p[0] >= lo[0] && f->p[0] <= hi[0] && f->p[1] >= lo[1] &&
                         f->p[1] <= hi[1] && f->p[2] >= lo[2] && f->p[2] <= hi[2];
+#pragma GCC unroll 3
     for (int a = 0; a < 3 && !inside; a++) {
         if (f->parallel[a]) {
             if (!(f->p[a] >= lo[a] && f->p[a] <= hi[a]))
@@ -217,6 +226,7 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
     if (!inside && !(t0 <= t1)) /* misses the box, or the window ends before it */
         return false;
     const real back = f->reach + 16 * REAL_EPSILON * real_abs(t0) * f->d_max;
+#pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         m->move[a] = f->step[a] * g->stride[a];
         real x = f->inv_d[a] != 0 ? f->p[a] + t0 * f->d[a] : f->p[a];
@@ -287,8 +297,8 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
     }
     uint64_t span_lo, span_hi;
     if (!f->started)
-        cull_start(f, g, rf->d, rf->inv_d, rf->slack);
-    cull_cell(f, g, m->i, rf->p, rf->inv_d);
+        cull_start(f, g, rf->d, rf->inv_d);
+    cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->slack);
     cull_span(f, g, m->i, rf->p, rf->d, rf->reach, rf->d_max, s->t_min, s->upper, &span_lo, &span_hi);
     for (uint32_t e = first; e < last;) {
         const uint32_t end = last - e > BATCH ? e + BATCH : last, batch = end - e;
