@@ -4,10 +4,13 @@
 # Sets up the Gradescope zip (ZIP, or `make autograder CHAPTER=05` built
 # here) as docs/instructor-guide.md says, under a folder of /tmp standing for
 # /autograder, and grades each submission of tests/hostile/ with its
-# run_autograder: the five forging attacks (a constructor that forges the
+# run_autograder: the forging attacks (a constructor that forges the
 # per-test token, lambert finding it on the stack, definitions of cmocka's
 # _fail and _cmocka_run_group_tests, a table of the suite's published inputs,
-# the compiled reference re-emitted as assembly; and one the grader's own
+# the compiled reference re-emitted as assembly, and the same hidden from
+# the check for assembly: after a #line naming a system header, under an #if
+# on a flag of the compile's own, in a section attribute's name; a correct
+# lambert called through a static indirect function; and one the grader's own
 # design invites: running the reference's suite to write the records), a
 # symlink tree with a
 # newline in a folder's name aimed at the grader's grade.conf, and the
@@ -71,9 +74,17 @@ make_submission() {
     empty) ;;
     table) awk -v t="$work/table.inc" '$0 == "TABLE" { while ((getline l < t) > 0) print l; next } { print }' \
         "$here/table.c.in" >"$sub/lambert.c" ;;
-    asm_reference)
+    asm_reference | line_asm | ansi_asm | section_asm)
         (cd "$work" && rm -rf ar && mkdir ar && cd ar && ar x "$reference_lib" lambert.o) &&
-            "$here/asm-from-object.sh" "$work/ar/lambert.o" >"$sub/lambert.c" ;;
+            "$here/asm-from-object.sh" "$work/ar/lambert.o" >"$work/asm.c" || return 1
+        case $name in
+        asm_reference) cp "$work/asm.c" "$sub/lambert.c" ;;
+        line_asm) { echo '#line 1 "/usr/include/stdio.h"'; cat "$work/asm.c"; } >"$sub/lambert.c" ;;
+        ansi_asm) { echo '#ifdef __STRICT_ANSI__'; cat "$work/asm.c"; echo '#endif'; } >"$sub/lambert.c" ;;
+        section_asm) awk -f "$here/section-from-asm.awk" "$work/asm.c" >"$sub/lambert.c" ;;
+        esac ;;
+    local_ifunc) { sed 's/^color lambert(/static color formula(/' "$here/alternative.c"; cat "$here/local_ifunc.c.in"; } \
+        >"$sub/lambert.c" ;;
     symlink)
         mkdir -p "$sub/x
 05_lambert" "$sub/05_lambert"
@@ -86,7 +97,8 @@ make_submission() {
 
 # NAME EXPECTED_SCORE: each case and what it must give (the score of 14 points).
 cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
-asm_reference:0 exec_reference:0 symlink:0 memory:0 litter:0 bad_utf8:0 hang:0"
+asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 exec_reference:0 symlink:0 memory:0 litter:0
+bad_utf8:0 hang:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -111,6 +123,11 @@ for c in $cases; do
     case $name in
     correct) grep -q "matches the compiled reference" "$work/$name.out" || problem "correct: not flagged as the reference's code" ;;
     alternative) grep -q "matches the compiled reference" "$work/$name.out" && problem "alternative: flagged as the reference's code" ;;
+    line_asm | ansi_asm) grep -q "refused: it holds assembly" "$work/$name.out" || problem "$name: not refused as assembly" ;;
+    section_asm) grep -q "refused: it holds an attribute whose text goes to the assembler" "$work/$name.out" ||
+        problem "section_asm: the section attribute not refused" ;;
+    local_ifunc) grep -q "refused: it holds an indirect function" "$work/$name.out" ||
+        problem "local_ifunc: the static indirect function not refused" ;;
     memory)
         got=$(grep -ho 'memory: got [0-9]* MiB' "$json" | awk '{ print $3 }' | sort -n | tail -n 1)
         [ -n "$got" ] && [ "$got" -le 1024 ] || problem "memory: the test took ${got:-?} MiB (limit 1024)" ;;
