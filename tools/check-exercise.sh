@@ -153,16 +153,16 @@ for file in "$@"; do
     # Assembly, after preprocessing: the identifiers asm, __asm, __asm__ in
     # any line of the file as the compiler saw it (what it includes too: a
     # #line or a system_header pragma would make the file's own lines look
-    # like a header's), outside strings and characters, but for the C
-    # library's renaming of a declaration, __asm__ ("" "name"); and what
-    # hands the assembler a text as it is.  The file compiled, so what it
+    # like a header's), outside strings and characters, but for the renaming
+    # of a declaration (the C library's `) __asm__ ("" "name")`, no code);
+    # and what hands the assembler a text as it is.  The file compiled, so what it
     # includes is there.
     if ! preprocess "$src" "$tmp/pre.c"; then
         problems="$problems, something the preprocessor cannot read again"
     else
         grep -v '^# [0-9]' "$tmp/pre.c" >"$tmp/lines.c"
         tr '\n' ' ' <"$tmp/lines.c" |
-            sed -E 's/(^|[^A-Za-z0-9_])__asm__ \(""( "[A-Za-z0-9_]+")+\)/\1/g
+            sed -E 's/([])A-Za-z0-9_][[:space:]]*)(__asm__|__asm|asm)[[:space:]]*\(([[:space:]]*"[A-Za-z0-9_.@]*")+[[:space:]]*\)/\1/g
                     s/"([^"\\]|\\.)*"//g; s/'\''([^'\''\\]|\\.)*'\''//g' >"$tmp/code"
         grep -qE '(^|[^A-Za-z0-9_])(__)?asm(__)?($|[^A-Za-z0-9_])' "$tmp/code" && problems="$problems, assembly (asm)"
         attributes=$(grep -oE '(^|[^A-Za-z0-9_])(__)?(section|alias|weakref|ifunc|symver|target_clones)(__)?[[:space:]]*\(' \
