@@ -27,7 +27,8 @@
  * test and in one line per chapter worth no points (with --require-full it
  * must pass too).
  *
- * Limits: every run has its own folder (HOME, TMPDIR; the working folder
+ * Limits: every run is a session of its own (no controlling terminal to
+ * type into) and has its own folder (HOME, TMPDIR; the working folder
  * with --user), removed after it, at most --memory MB of memory (1024) and
  * files of 64 MB; the whole grading stops starting tests after --budget
  * seconds (3600), and the tests not run fail, said so.
@@ -254,7 +255,8 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
 }
 
 /* Runs argv with stdin from /dev/null and stdout+stderr captured (the first
- * OUTPUT_LIMIT bytes), in its own process group, killed after `timeout`
+ * OUTPUT_LIMIT bytes), in a session of its own (its process group, no
+ * controlling terminal), killed after `timeout`
  * seconds.  An untrusted run (a test) has the limits above, a folder of its
  * own (working folder with --user, HOME, TMPDIR) removed afterwards, and
  * with --user runs as that user, whose every process and file in the shared
@@ -292,7 +294,13 @@ static int run(char *const argv[], double timeout, buffer *out, run_kind kind, b
         return -1;
     }
     if (pid == 0) {
-        setpgid(0, 0);
+        /* A session of its own, so a process group too, and no controlling
+         * terminal: a test cannot type into the terminal the grading runs in
+         * (TIOCSTI on /dev/tty), whose shell, root's, would run the line. */
+        if (setsid() < 0) {
+            fprintf(stderr, "grade: cannot start a session for the test\n");
+            _exit(127);
+        }
         int null = open("/dev/null", O_RDONLY);
         if (null >= 0)
             dup2(null, STDIN_FILENO);
@@ -314,7 +322,8 @@ static int run(char *const argv[], double timeout, buffer *out, run_kind kind, b
         fprintf(stderr, "grade: cannot run %s: %s\n", argv[0], strerror(errno));
         _exit(127);
     }
-    setpgid(pid, pid); /* also here, so that the kill below cannot miss */
+    /* (No setpgid here as well: made a group's leader first, the child could
+     * not start its session.  It does so before anything else.) */
     close(fds[1]);
     if (answers)
         close(ans[1]);

@@ -15,7 +15,8 @@
 # symlink tree with a
 # newline in a folder's name aimed at the grader's grade.conf, and the
 # resource attacks (memory, files left in HOME and /tmp, bytes that are not
-# UTF-8, a test that never ends), besides the correct solution, a correct
+# UTF-8, a test that never ends), a line typed into the terminal the
+# grading runs in (graded in one, for that), besides the correct solution, a correct
 # one written otherwise and an empty submission.  Prints one line per
 # submission (score, expected, what was checked) and fails naming every
 # expectation that does not hold (HOSTILE_ONLY="table hang" runs only
@@ -98,7 +99,7 @@ make_submission() {
 # NAME EXPECTED_SCORE: each case and what it must give (the score of 14 points).
 cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
 asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 exec_reference:0 symlink:0 memory:0 litter:0
-bad_utf8:0 hang:0"
+bad_utf8:0 tty:0 hang:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -107,7 +108,14 @@ for c in $cases; do
     [ -z "${HOSTILE_ONLY:-}" ] || [[ " $HOSTILE_ONLY " == *" $name "* ]] || continue
     make_submission "$name" || { problem "$name: could not make the submission"; continue; }
     start=$(date +%s)
-    (cd "$root/source" && AUTOGRADER_ROOT=$root bash run_autograder) >"$work/$name.out" 2>&1
+    if [ "$name" = tty ]; then # in a terminal, then a shell that reads a line from it, as root's would
+        rm -f "$work/keyboard" && mkfifo "$work/keyboard" && exec 7<>"$work/keyboard" # input that never ends
+        script -qec "cd '$root/source' && AUTOGRADER_ROOT='$root' bash run_autograder; read -r -t 2 typed;
+            echo \"after grading the terminal gave: \${typed:-nothing}\"" /dev/null <&7
+        exec 7<&-
+    else
+        (cd "$root/source" && AUTOGRADER_ROOT=$root bash run_autograder)
+    fi >"$work/$name.out" 2>&1
     took=$(($(date +%s) - start))
     json=$root/results/results.json
     cp "$json" "$work/$name.json" 2>/dev/null
@@ -128,6 +136,8 @@ for c in $cases; do
         problem "section_asm: the section attribute not refused" ;;
     local_ifunc) grep -q "refused: it holds an indirect function" "$work/$name.out" ||
         problem "local_ifunc: the static indirect function not refused" ;;
+    tty) grep -q "after grading the terminal gave: nothing" "$work/$name.out" ||
+        problem "tty: a line typed into the grading's terminal: $(grep -a 'terminal gave' "$work/$name.out")" ;;
     memory)
         got=$(grep -ho 'memory: got [0-9]* MiB' "$json" | awk '{ print $3 }' | sort -n | tail -n 1)
         [ -n "$got" ] && [ "$got" -le 1024 ] || problem "memory: the test took ${got:-?} MiB (limit 1024)" ;;
