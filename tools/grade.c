@@ -40,7 +40,7 @@
  * records) nor reach them; the environment is emptied but for PATH, HOME, TMPDIR and
  * LANG, and after every run every process of that user is killed (and
  * reaped: the grader is the subreaper of the tests' orphans) and its files
- * in /tmp, /var/tmp and /dev/shm removed, so nothing it started (even
+ * in /tmp, /var/tmp, /dev/shm and /run/lock removed, so nothing it started (even
  * in a session or process group of its own) or left outlives its test.
  *
  * Writes a score table to stdout, a Gradescope results.json (--json; the

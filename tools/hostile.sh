@@ -14,7 +14,7 @@
 # design invites: running the reference's suite to write the records), a
 # symlink tree with a
 # newline in a folder's name aimed at the grader's grade.conf, and the
-# resource attacks (memory, files left in HOME and /tmp, bytes that are not
+# resource attacks (memory, files left in HOME, /tmp and /run/lock, bytes that are not
 # UTF-8, a test that never ends), a line typed into the terminal the
 # grading runs in (graded in one, for that), besides the correct solution, a correct
 # one written otherwise and an empty submission.  Prints one line per
@@ -143,7 +143,7 @@ for c in $cases; do
         [ -n "$got" ] && [ "$got" -le 1024 ] || problem "memory: the test took ${got:-?} MiB (limit 1024)" ;;
     litter)
         grep -q "litter: found" "$json" && problem "litter: a test found files an earlier test left"
-        left=$(find /tmp /var/tmp /dev/shm -xdev -user "$user" 2>/dev/null | head -n 5)
+        left=$(find /tmp /var/tmp /dev/shm /run/lock -xdev -user "$user" 2>/dev/null | head -n 5)
         [ -z "$left" ] || problem "litter: files of $user left after grading: $left" ;;
     hang)
         grep -q "time budget" "$work/$name.out" || problem "hang: the time budget did not stop the grading"
