@@ -367,8 +367,8 @@ grade_check = $(if $(filter chapters,$(SOURCE)),if [ -x $1 ]; then \
 	        grep refused $1.check >>$1.log; }; \
 	    $(if $4,cat $1.check;) fi,true)
 
-# The grader: tools/grade.c, the verdict (judge.c) and the scratch folders (scratch.c).
-$(BUILD)/tools/grade: $(addprefix $(BUILD)/obj/tools/,grade.o judge.o scratch.o)
+# The grader: tools/grade.c, the verdict (judge.c), the scratch folders (scratch.c), no network (offline.c).
+$(BUILD)/tools/grade: $(addprefix $(BUILD)/obj/tools/,grade.o judge.o scratch.o offline.o)
 	@mkdir -p $(@D)
 	$(QLINK)$(CC) $^ -lm -o $@
 

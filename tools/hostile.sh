@@ -16,7 +16,8 @@
 # newline in a folder's name aimed at the grader's grade.conf, and the
 # resource attacks (memory, files left in HOME, /tmp and /run/lock, bytes that are not
 # UTF-8, a test that never ends), a line typed into the terminal the
-# grading runs in (graded in one, for that), besides the correct solution, a correct
+# grading runs in (graded in one, for that), answers asked of a server
+# over the network, besides the correct solution, a correct
 # one written otherwise and an empty submission.  Prints one line per
 # submission (score, expected, what was checked) and fails naming every
 # expectation that does not hold (HOSTILE_ONLY="table hang" runs only
@@ -99,7 +100,7 @@ make_submission() {
 # NAME EXPECTED_SCORE: each case and what it must give (the score of 14 points).
 cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
 asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 exec_reference:0 symlink:0 memory:0 litter:0
-bad_utf8:0 tty:0 hang:0"
+bad_utf8:0 tty:0 oracle:0 hang:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -107,6 +108,16 @@ for c in $cases; do
     name=${c%:*} expected=${c#*:}
     [ -z "${HOSTILE_ONLY:-}" ] || [[ " $HOSTILE_ONLY " == *" $name "* ]] || continue
     make_submission "$name" || { problem "$name: could not make the submission"; continue; }
+    server=""
+    if [ "$name" = oracle ]; then # the network server the submission asks (as root: the test's user cannot stop it)
+        python3 "$here/oracle-server.py" 40505 & server=$!
+        python3 -c 'import socket, time, sys
+for k in range(50):
+    try:
+        c = socket.create_connection(("127.0.0.1", 40505)); c.sendall(b"0x1p+0 " * 9 + b"0x1p+1 " * 3 + b"0x1p+0 " * 3 + b"\n"); sys.exit(not c.recv(99))
+    except OSError: time.sleep(0.1)
+sys.exit(1)' || problem "oracle: its server does not answer"
+    fi
     start=$(date +%s)
     if [ "$name" = tty ]; then # in a terminal, then a shell that reads a line from it, as root's would
         rm -f "$work/keyboard" && mkfifo "$work/keyboard" && exec 7<>"$work/keyboard" # input that never ends
@@ -117,6 +128,7 @@ for c in $cases; do
         (cd "$root/source" && AUTOGRADER_ROOT=$root bash run_autograder)
     fi >"$work/$name.out" 2>&1
     took=$(($(date +%s) - start))
+    [ -z "$server" ] || { kill "$server"; wait "$server"; } 2>/dev/null
     json=$root/results/results.json
     cp "$json" "$work/$name.json" 2>/dev/null
     score=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1], encoding="utf-8", errors="strict"))["score"])' \
