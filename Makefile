@@ -329,7 +329,8 @@ grade-run: $(BUILD)/tools/grade
 	    case $$c in $(foreach c,$(GRADE_CHAPTERS),$c$(rparen) ex="$(EXERCISES_$c)";;) esac; \
 	    rm -f $(GRADE_DIR)/test_$$c $(BUILD)/obj/chapters/$$c/*.o; \
 	    $(MAKE) --no-print-directory -s WERROR= COMPILE_AS=$(GRADE_USER) $(GRADE_DIR)/test_$$c >$(GRADE_DIR)/test_$$c.log 2>&1 || { \
-	        echo "$$c: the files of $(SOURCE)/$$c/ do not compile:"; tail -n 20 $(GRADE_DIR)/test_$$c.log; }; \
+	        echo "$$c: the files of $(SOURCE)/$$c/ do not compile:"; \
+	        tail -n 20 $(GRADE_DIR)/test_$$c.log | LC_ALL=C tr '\000-\010\013-\037\177' '?'; }; \
 	    $(call grade_check,$(GRADE_DIR)/test_$$c,$(if $(HANDOUT),reference/double/lib$$c.a,$(BUILD)/obj/solutions/$$c),$(BUILD),print); \
 	    float=- float_log=- float_ref=-; \
 	    if [ "$(GRADE_FLOAT)" = 1 ]; then \

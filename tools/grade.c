@@ -417,6 +417,29 @@ static char *read_file(const char *path)
     return buf_take(&b);
 }
 
+static int utf8_length(const unsigned char *p);
+
+/* Prints at most n bytes of s, a text of the test's or the compiler's, for a
+ * terminal: a control character but tab and newline, a C1 control (U+0080
+ * to U+009F, which terminals obey too) and a byte that is not well-formed
+ * UTF-8 each as '?', so that no escape sequence of a submission's reaches
+ * the terminal (to clear it, or hide the score table that follows). */
+static void print_clean(const char *s, size_t n)
+{
+    const unsigned char *p = (const unsigned char *)s, *end = p + n;
+    while (p < end && *p) {
+        int len = utf8_length(p);
+        if (len == 0 || (len == 1 && ((*p < 0x20 && *p != '\t' && *p != '\n') || *p == 0x7F)) ||
+            (p[0] == 0xC2 && p[1] <= 0x9F) || p + len > end) {
+            putchar('?');
+            p += len ? len : 1;
+        } else {
+            fwrite(p, 1, (size_t)len, stdout);
+            p += len;
+        }
+    }
+}
+
 /* Prints the lines of a failed test's output that say why: at most four of
  * the test's messages (its own, cmocka's ERROR and LINE lines), then the
  * grader's notes ("grade: ...") and the float build's verdict, which are
@@ -443,7 +466,9 @@ static void print_reason(const char *output)
                 const char *cut = strstr(line, " is still an exercise (") ? strstr(line, "); it returns") : NULL;
                 if (cut && cut < line + n)
                     shown_n = (size_t)(cut - line) + 1;
-                printf("        %.*s\n", (int)(shown_n > 400 ? 400 : shown_n), line);
+                printf("        ");
+                print_clean(line, shown_n > 400 ? 400 : shown_n);
+                putchar('\n');
                 shown++;
             }
             line += n + (end != NULL);
@@ -536,14 +561,16 @@ static int grade_chapter(const chapter_files *c, double timeout)
     char *log = log_text(c->buildlog), *flog = log_text(c->float_log);
     printf("%s%s\n", chapter, built ? "" : ": the student's files do not compile or were refused; every test fails");
     if (built && *log) { /* warnings: shown, not counted */
-        printf("  compiler messages (not counted):\n%s", log);
+        printf("  compiler messages (not counted):\n");
+        print_clean(log, strlen(log));
         buf_str(&summary, "\n");
         buf_str(&summary, chapter);
         buf_str(&summary, ": the compiler's messages for your files (warnings cost no points; fix them):\n");
         buf_str(&summary, log);
     }
     if (with_float && !float_built && built) {
-        printf("  the float build (REAL=float) does not compile:\n%s", flog);
+        printf("  the float build (REAL=float) does not compile:\n");
+        print_clean(flog, strlen(flog));
         buf_str(&summary, "\n");
         buf_str(&summary, chapter);
         buf_str(&summary, ": your files do not compile in the float build (REAL=float):\n");
@@ -593,8 +620,10 @@ static int grade_chapter(const chapter_files *c, double timeout)
                v == PASSED ? points : 0, v == SKIPPED ? 0 : points);
         if (v == FAILED && built)
             print_reason(out.s);
-        if (v == SKIPPED && out.s) /* why (run_test kept the suite's note) */
-            printf("        %.*s", (int)(strlen(out.s) > 400 ? 400 : strlen(out.s)), out.s);
+        if (v == SKIPPED && out.s) { /* why (run_test kept the suite's note) */
+            printf("        ");
+            print_clean(out.s, strlen(out.s) > 400 ? 400 : strlen(out.s));
+        }
         free(out.s);
     }
     if (with_float) { /* one line for the float build, worth nothing */

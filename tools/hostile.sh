@@ -15,7 +15,7 @@
 # symlink tree with a
 # newline in a folder's name aimed at the grader's grade.conf, and the
 # resource attacks (memory, files left in HOME, /tmp and /run/lock, bytes that are not
-# UTF-8, a test that never ends), a line typed into the terminal the
+# UTF-8, a test that never ends), escape sequences for the terminal, a line typed into the terminal the
 # grading runs in (graded in one, for that), answers asked of a server
 # over the network, besides the correct solution, a correct
 # one written otherwise and an empty submission.  Prints one line per
@@ -85,6 +85,7 @@ make_submission() {
         ansi_asm) { echo '#ifdef __STRICT_ANSI__'; cat "$work/asm.c"; echo '#endif'; } >"$sub/lambert.c" ;;
         section_asm) awk -f "$here/section-from-asm.awk" "$work/asm.c" >"$sub/lambert.c" ;;
         esac ;;
+    escape) { cat "$here/escape.c"; printf '#warning \033[8m the compiler shows this line as it is\n'; } >"$sub/lambert.c" ;;
     local_ifunc) { sed 's/^color lambert(/static color formula(/' "$here/alternative.c"; cat "$here/local_ifunc.c.in"; } \
         >"$sub/lambert.c" ;;
     symlink)
@@ -100,7 +101,7 @@ make_submission() {
 # NAME EXPECTED_SCORE: each case and what it must give (the score of 14 points).
 cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
 asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 exec_reference:0 symlink:0 memory:0 litter:0
-bad_utf8:0 tty:0 oracle:0 hang:0"
+bad_utf8:0 escape:0 tty:0 oracle:0 hang:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -148,6 +149,7 @@ sys.exit(1)' || problem "oracle: its server does not answer"
         problem "section_asm: the section attribute not refused" ;;
     local_ifunc) grep -q "refused: it holds an indirect function" "$work/$name.out" ||
         problem "local_ifunc: the static indirect function not refused" ;;
+    escape) ! grep -q "$(printf '\033')" "$work/$name.out" || problem "escape: an escape sequence reached the terminal" ;;
     tty) grep -q "after grading the terminal gave: nothing" "$work/$name.out" ||
         problem "tty: a line typed into the grading's terminal: $(grep -a 'terminal gave' "$work/$name.out")" ;;
     memory)
