@@ -366,7 +366,7 @@ grade_check = $(if $(filter chapters,$(SOURCE)),if [ -x $1 ]; then \
 	        COMPILE_AS=$(GRADE_USER) \
 	        tools/check-exercise.sh $2 chapters/$$c $3/obj/chapters/$$c $$ex >$1.check || { rm -f $1; \
 	        grep refused $1.check >>$1.log; }; \
-	    $(if $4,cat $1.check;) fi,true)
+	    $(if $4,LC_ALL=C tr '\000-\010\013-\037\177' '?' <$1.check;) fi,true)
 
 # The grader: tools/grade.c, the verdict (judge.c), the scratch folders (scratch.c), no network (offline.c).
 $(BUILD)/tools/grade: $(addprefix $(BUILD)/obj/tools/,grade.o judge.o scratch.o offline.o)
