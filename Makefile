@@ -368,8 +368,8 @@ grade_check = $(if $(filter chapters,$(SOURCE)),if [ -x $1 ]; then \
 	        grep refused $1.check >>$1.log; }; \
 	    $(if $4,LC_ALL=C tr '\000-\010\013-\037\177' '?' <$1.check;) fi,true)
 
-# The grader: tools/grade.c, the verdict (judge.c), the scratch folders (scratch.c), no network (offline.c).
-$(BUILD)/tools/grade: $(addprefix $(BUILD)/obj/tools/,grade.o judge.o scratch.o offline.o)
+# The grader: tools/grade.c, the verdict (judge.c), the scratch folders (scratch.c), the tests' seal (seal.c).
+$(BUILD)/tools/grade: $(addprefix $(BUILD)/obj/tools/,grade.o judge.o scratch.o seal.o)
 	@mkdir -p $(@D)
 	$(QLINK)$(CC) $^ -lm -o $@
 

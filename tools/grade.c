@@ -28,8 +28,9 @@
  * must pass too).
  *
  * Limits: every run is a session of its own (no controlling terminal to
- * type into), without the network (offline.h: no answers asked of a
- * server) and has its own folder (HOME, TMPDIR; the working folder
+ * type into), sealed (seal.h: no network to ask a server for answers, no
+ * memory made executable to run a copy of the compiled reference in) and
+ * has its own folder (HOME, TMPDIR; the working folder
  * with --user), removed after it, at most --memory MB of memory (1024) and
  * files of 64 MB; the whole grading stops starting tests after --budget
  * seconds (3600), and the tests not run fail, said so.
@@ -69,8 +70,8 @@
 #include <unistd.h>
 
 #include "judge.h"
-#include "offline.h"
 #include "scratch.h"
+#include "seal.h"
 
 enum { OUTPUT_LIMIT = 16384 }; /* bytes of a test's output that are kept */
 
@@ -247,8 +248,8 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
                 _exit(127);
             }
         }
-        if (offline() != 0) { /* no test runs with the network (offline.h) */
-            fprintf(stderr, "grade: cannot cut the test off the network (seccomp)\n");
+        if (seal() != 0) { /* no network, no code made at run time (seal.h) */
+            fprintf(stderr, "grade: cannot seal the test (seccomp)\n");
             _exit(127);
         }
         char *env[] = {"PATH=/usr/bin:/bin", home, tmpdir, "LANG=C.UTF-8", NULL};
@@ -256,7 +257,7 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
     } else { /* a student's own machine: the environment as it is, HOME and TMPDIR of the run's own */
         putenv(home);
         putenv(tmpdir);
-        offline(); /* where it can: nothing there is sealed against the student */
+        seal(); /* where it can: nothing there is sealed against the student */
         execv(argv[0], argv);
     }
 }

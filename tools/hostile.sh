@@ -10,7 +10,9 @@
 # the compiled reference re-emitted as assembly, and the same hidden from
 # the check for assembly: after a #line naming a system header, under an #if
 # on a flag of the compile's own, in a section attribute's name; a correct
-# lambert called through a static indirect function; and one the grader's own
+# lambert called through a static indirect function; the compiled
+# reference's bytes copied into memory made executable at run time; and one
+# the grader's own
 # design invites: running the reference's suite to write the records), a
 # symlink tree with a
 # newline in a folder's name aimed at the grader's grade.conf, and the
@@ -85,6 +87,12 @@ make_submission() {
         ansi_asm) { echo '#ifdef __STRICT_ANSI__'; cat "$work/asm.c"; echo '#endif'; } >"$sub/lambert.c" ;;
         section_asm) awk -f "$here/section-from-asm.awk" "$work/asm.c" >"$sub/lambert.c" ;;
         esac ;;
+    copy)
+        (cd "$work" && rm -rf ar && mkdir ar && cd ar && ar x "$reference_lib" lambert.o) &&
+            "$here/bytes-from-object.sh" "$work/ar/lambert.o" >"$work/bytes.txt" || return 1
+        awk -v b="$work/bytes.txt" 'BEGIN { while ((getline l < b) > 0) v[substr(l, 1, index(l, " ") - 1)] = substr(l, index(l, " ") + 1) }
+            { for (k in v) if ((i = index($0, "{" k "}")) > 0) $0 = substr($0, 1, i) v[k] substr($0, i + length(k) + 1); print }' \
+            "$here/copy.c.in" >"$sub/lambert.c" ;;
     escape) { cat "$here/escape.c"; printf '#warning \033[8m the compiler shows this line as it is\n'; } >"$sub/lambert.c" ;;
     local_ifunc) { sed 's/^color lambert(/static color formula(/' "$here/alternative.c"; cat "$here/local_ifunc.c.in"; } \
         >"$sub/lambert.c" ;;
@@ -100,7 +108,7 @@ make_submission() {
 
 # NAME EXPECTED_SCORE: each case and what it must give (the score of 14 points).
 cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
-asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 exec_reference:0 symlink:0 memory:0 litter:0
+asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 copy:0 exec_reference:0 symlink:0 memory:0 litter:0
 bad_utf8:0 escape:0 tty:0 oracle:0 hang:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
