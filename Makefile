@@ -329,7 +329,8 @@ grade-run: $(BUILD)/tools/grade
 	    case $$c in $(foreach c,$(GRADE_CHAPTERS),$c$(rparen) ex="$(EXERCISES_$c)";;) esac; \
 	    rm -f $(GRADE_DIR)/test_$$c $(BUILD)/obj/chapters/$$c/*.o; \
 	    $(MAKE) --no-print-directory -s WERROR= COMPILE_AS=$(GRADE_USER) $(GRADE_DIR)/test_$$c >$(GRADE_DIR)/test_$$c.log 2>&1 || { \
-	        echo "$$c: the files of $(SOURCE)/$$c/ do not compile:"; tail -n 20 $(GRADE_DIR)/test_$$c.log; }; \
+	        echo "$$c: the files of $(SOURCE)/$$c/ do not compile:"; \
+	        tail -n 20 $(GRADE_DIR)/test_$$c.log | LC_ALL=C tr '\000-\010\013-\037\177' '?'; }; \
 	    $(call grade_check,$(GRADE_DIR)/test_$$c,$(if $(HANDOUT),reference/double/lib$$c.a,$(BUILD)/obj/solutions/$$c),$(BUILD),print); \
 	    float=- float_log=- float_ref=-; \
 	    if [ "$(GRADE_FLOAT)" = 1 ]; then \
@@ -361,13 +362,14 @@ rparen := )
 # (and, with print, on the terminal); a match of the reference's code is
 # flagged on the terminal (with print) only, for the instructor.
 grade_check = $(if $(filter chapters,$(SOURCE)),if [ -x $1 ]; then \
-	    CC="$(CC)" CPPFLAGS="$(CPPFLAGS) $(if $(findstring float,$3),-DRT_REAL_FLOAT)" \
+	    CC="$(CC)" CPPFLAGS="$(CPPFLAGS) $(filter-out -Werror,$(CFLAGS)) $(if $(findstring float,$3),-DRT_REAL_FLOAT)" \
+	        COMPILE_AS=$(GRADE_USER) \
 	        tools/check-exercise.sh $2 chapters/$$c $3/obj/chapters/$$c $$ex >$1.check || { rm -f $1; \
 	        grep refused $1.check >>$1.log; }; \
-	    $(if $4,cat $1.check;) fi,true)
+	    $(if $4,LC_ALL=C tr '\000-\010\013-\037\177' '?' <$1.check;) fi,true)
 
-# The grader: tools/grade.c, the verdict (judge.c) and the scratch folders (scratch.c).
-$(BUILD)/tools/grade: $(addprefix $(BUILD)/obj/tools/,grade.o judge.o scratch.o)
+# The grader: tools/grade.c, the verdict (judge.c), the scratch folders (scratch.c), the tests' seal (seal.c).
+$(BUILD)/tools/grade: $(addprefix $(BUILD)/obj/tools/,grade.o judge.o scratch.o seal.o)
 	@mkdir -p $(@D)
 	$(QLINK)$(CC) $^ -lm -o $@
 

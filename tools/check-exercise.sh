@@ -12,7 +12,15 @@
 #   - no constructor or destructor (.init_array, .fini_array, .ctors,
 #     .dtors, .preinit_array, .init, .fini sections);
 #   - no assembly (asm, __asm__ after preprocessing, which also rules out
-#     .incbin): the source is preprocessed with $CC $CPPFLAGS.
+#     .incbin) in the file as its compile saw it ($CC $CPPFLAGS, all the
+#     compile's flags; as the user COMPILE_AS, when set); nor any text
+#     the compiler hands the assembler as it is, which would be assembly all
+#     the same: the attributes that name a section or a symbol (section,
+#     alias, weakref, ifunc, symver, target_clones; a newline in a section's
+#     name starts a line of assembly) and #ident;
+#   - no code outside .text (a section both writable and executable) and no
+#     executable stack (a nested function whose address is taken), where
+#     bytes written as data would run.
 # A refusal is one line on stdout naming the file and what was found, and
 # the exit status is 1.  An exercise function whose instructions are the
 # reference's, one for one, is flagged on stdout ("matches the compiled
@@ -103,6 +111,19 @@ instructions() {
         awk -F'\t' '/^ *[0-9a-f]+:\t/ { sub(/ *[#<].*/, "", $2); print $2 }'
 }
 
+# preprocess SOURCE OUT: SOURCE as its compile saw it, with the same flags
+# ($CPPFLAGS: all of the compile's), and as the user who compiled it
+# (COMPILE_AS, tools/compile-as.sh: the same files readable, the same
+# folder), so that no #if (__has_include, __STRICT_ANSI__, _OPENMP) shows
+# this check another file than the compiler.
+preprocess() {
+    if [ -n "${COMPILE_AS:-}" ]; then
+        tools/compile-as.sh "$COMPILE_AS" "$2" "$1" ${CC:-cc} ${CPPFLAGS:-} -E >/dev/null 2>&1
+    else
+        timeout -k 5 60 ${CC:-cc} ${CPPFLAGS:-} -E "$1" -o "$2" >/dev/null 2>&1
+    fi
+}
+
 for file in "$@"; do
     src=$sources/$file obj=$objects/${file%.c}.o
     ref=$(reference_object "${file%.c}.o") || { echo "$src: no reference object to check it against" >&2; exit 1; }
@@ -117,17 +138,39 @@ for file in "$@"; do
             problems="$problems, a definition of $name"
         fi
     done <<<"$defined"
+    # a static one too (nm -g lists only the global)
+    [[ $problems == *"indirect function"* ]] || nm --defined-only "$obj" | awk '$2 == "i" { exit 1 }' ||
+        problems="$problems, an indirect function (its resolver runs before main)"
     sections=$(objdump -h "$obj" | awk '$2 ~ /^\.(init_array|fini_array|preinit_array|ctors|dtors|init|fini)($|\.)/ { print $2 }' | sort -u | tr '\n' ' ')
     [ -n "$sections" ] && problems="$problems, a constructor or destructor (section ${sections% })"
+    # Where bytes written as data could run: code outside .text, an executable stack.
+    problems="$problems$(objdump -h "$obj" | awk '
+        /^ *[0-9]+ / { name = $2; getline; flags = $0
+            if (name == ".note.GNU-stack") { marked = 1; if (flags ~ /CODE/) stack = 1 }
+            else if (flags ~ /ALLOC/ && flags ~ /CODE/ && (name !~ /^\.text($|\.)/ || flags !~ /READONLY/)) code = code " " name }
+        END { if (code != "") printf ", code outside .text (section%s)", code
+              if (stack || !marked) printf ", an executable stack (a nested function whose address is taken)" }')"
     # Assembly, after preprocessing: the identifiers asm, __asm, __asm__ in
-    # the file's own lines (headers of the C library have theirs), outside
-    # strings and characters.  The file compiled, so what it includes is
-    # there (and was readable by whoever compiled it).
-    if ! timeout -k 5 60 ${CC:-cc} ${CPPFLAGS:-} -E - <"$src" >"$tmp/pre.c" 2>/dev/null; then
+    # any line of the file as the compiler saw it (what it includes too: a
+    # #line or a system_header pragma would make the file's own lines look
+    # like a header's), outside strings and characters, but for the renaming
+    # of a declaration (the C library's `) __asm__ ("" "name")`, no code);
+    # and what hands the assembler a text as it is.  The file compiled, so what it
+    # includes is there.
+    if ! preprocess "$src" "$tmp/pre.c"; then
         problems="$problems, something the preprocessor cannot read again"
-    elif awk '/^# [0-9]+ "/ { own = $3 == "\"<stdin>\""; next } own' "$tmp/pre.c" |
-        sed -E 's/"([^"\\]|\\.)*"//g; s/'\''([^'\''\\]|\\.)*'\''//g' | grep -qE '(^|[^A-Za-z0-9_])(__)?asm(__)?($|[^A-Za-z0-9_])'; then
-        problems="$problems, assembly (asm)"
+    else
+        grep -v '^# [0-9]' "$tmp/pre.c" >"$tmp/lines.c"
+        tr '\n' ' ' <"$tmp/lines.c" |
+            sed -E 's/([])A-Za-z0-9_][[:space:]]*)(__asm__|__asm|asm)[[:space:]]*\(([[:space:]]*"[A-Za-z0-9_.@]*")+[[:space:]]*\)/\1/g
+                    s/"([^"\\]|\\.)*"//g; s/'\''([^'\''\\]|\\.)*'\''//g' >"$tmp/code"
+        grep -qE '(^|[^A-Za-z0-9_])(__)?asm(__)?($|[^A-Za-z0-9_])' "$tmp/code" && problems="$problems, assembly (asm)"
+        attributes=$(grep -oE '(^|[^A-Za-z0-9_])(__)?(section|alias|weakref|ifunc|symver|target_clones)(__)?[[:space:]]*\(' \
+            "$tmp/code" | tr -cd 'a-z_\n' | sed 's/^_*//; s/_*$//' | sort -u | tr '\n' ' ')
+        [ -n "$attributes" ] &&
+            problems="$problems, an attribute whose text goes to the assembler (${attributes% }: assembly all the same)"
+        grep -qE '^[[:space:]]*#[[:space:]]*(ident|sccs|pragma[[:space:]]+(ident|sccs))([^A-Za-z0-9_]|$)' "$tmp/lines.c" &&
+            problems="$problems, #ident (its text goes to the assembler: assembly all the same)"
     fi
     if [ -n "$problems" ]; then
         echo "$src: refused: it holds ${problems#, }; an exercise file may define only $(echo $allowed | sed 's/ /, /g') (helpers static), in C"

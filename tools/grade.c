@@ -27,7 +27,10 @@
  * test and in one line per chapter worth no points (with --require-full it
  * must pass too).
  *
- * Limits: every run has its own folder (HOME, TMPDIR; the working folder
+ * Limits: every run is a session of its own (no controlling terminal to
+ * type into), sealed (seal.h: no network to ask a server for answers, no
+ * memory made executable to run a copy of the compiled reference in) and
+ * has its own folder (HOME, TMPDIR; the working folder
  * with --user), removed after it, at most --memory MB of memory (1024) and
  * files of 64 MB; the whole grading stops starting tests after --budget
  * seconds (3600), and the tests not run fail, said so.
@@ -39,7 +42,7 @@
  * records) nor reach them; the environment is emptied but for PATH, HOME, TMPDIR and
  * LANG, and after every run every process of that user is killed (and
  * reaped: the grader is the subreaper of the tests' orphans) and its files
- * in /tmp, /var/tmp and /dev/shm removed, so nothing it started (even
+ * in /tmp, /var/tmp, /dev/shm and /run/lock removed, so nothing it started (even
  * in a session or process group of its own) or left outlives its test.
  *
  * Writes a score table to stdout, a Gradescope results.json (--json; the
@@ -68,6 +71,7 @@
 
 #include "judge.h"
 #include "scratch.h"
+#include "seal.h"
 
 enum { OUTPUT_LIMIT = 16384 }; /* bytes of a test's output that are kept */
 
@@ -244,17 +248,23 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
                 _exit(127);
             }
         }
+        if (seal() != 0) { /* no network, no code made at run time (seal.h) */
+            fprintf(stderr, "grade: cannot seal the test (seccomp)\n");
+            _exit(127);
+        }
         char *env[] = {"PATH=/usr/bin:/bin", home, tmpdir, "LANG=C.UTF-8", NULL};
         execve(argv[0], argv, env);
     } else { /* a student's own machine: the environment as it is, HOME and TMPDIR of the run's own */
         putenv(home);
         putenv(tmpdir);
+        seal(); /* where it can: nothing there is sealed against the student */
         execv(argv[0], argv);
     }
 }
 
 /* Runs argv with stdin from /dev/null and stdout+stderr captured (the first
- * OUTPUT_LIMIT bytes), in its own process group, killed after `timeout`
+ * OUTPUT_LIMIT bytes), in a session of its own (its process group, no
+ * controlling terminal), killed after `timeout`
  * seconds.  An untrusted run (a test) has the limits above, a folder of its
  * own (working folder with --user, HOME, TMPDIR) removed afterwards, and
  * with --user runs as that user, whose every process and file in the shared
@@ -292,7 +302,13 @@ static int run(char *const argv[], double timeout, buffer *out, run_kind kind, b
         return -1;
     }
     if (pid == 0) {
-        setpgid(0, 0);
+        /* A session of its own, so a process group too, and no controlling
+         * terminal: a test cannot type into the terminal the grading runs in
+         * (TIOCSTI on /dev/tty), whose shell, root's, would run the line. */
+        if (setsid() < 0) {
+            fprintf(stderr, "grade: cannot start a session for the test\n");
+            _exit(127);
+        }
         int null = open("/dev/null", O_RDONLY);
         if (null >= 0)
             dup2(null, STDIN_FILENO);
@@ -314,7 +330,8 @@ static int run(char *const argv[], double timeout, buffer *out, run_kind kind, b
         fprintf(stderr, "grade: cannot run %s: %s\n", argv[0], strerror(errno));
         _exit(127);
     }
-    setpgid(pid, pid); /* also here, so that the kill below cannot miss */
+    /* (No setpgid here as well: made a group's leader first, the child could
+     * not start its session.  It does so before anything else.) */
     close(fds[1]);
     if (answers)
         close(ans[1]);
@@ -401,6 +418,29 @@ static char *read_file(const char *path)
     return buf_take(&b);
 }
 
+static int utf8_length(const unsigned char *p);
+
+/* Prints at most n bytes of s, a text of the test's or the compiler's, for a
+ * terminal: a control character but tab and newline, a C1 control (U+0080
+ * to U+009F, which terminals obey too) and a byte that is not well-formed
+ * UTF-8 each as '?', so that no escape sequence of a submission's reaches
+ * the terminal (to clear it, or hide the score table that follows). */
+static void print_clean(const char *s, size_t n)
+{
+    const unsigned char *p = (const unsigned char *)s, *end = p + n;
+    while (p < end && *p) {
+        int len = utf8_length(p);
+        if (len == 0 || (len == 1 && ((*p < 0x20 && *p != '\t' && *p != '\n') || *p == 0x7F)) ||
+            (p[0] == 0xC2 && p[1] <= 0x9F) || p + len > end) {
+            putchar('?');
+            p += len ? len : 1;
+        } else {
+            fwrite(p, 1, (size_t)len, stdout);
+            p += len;
+        }
+    }
+}
+
 /* Prints the lines of a failed test's output that say why: at most four of
  * the test's messages (its own, cmocka's ERROR and LINE lines), then the
  * grader's notes ("grade: ...") and the float build's verdict, which are
@@ -427,7 +467,9 @@ static void print_reason(const char *output)
                 const char *cut = strstr(line, " is still an exercise (") ? strstr(line, "); it returns") : NULL;
                 if (cut && cut < line + n)
                     shown_n = (size_t)(cut - line) + 1;
-                printf("        %.*s\n", (int)(shown_n > 400 ? 400 : shown_n), line);
+                printf("        ");
+                print_clean(line, shown_n > 400 ? 400 : shown_n);
+                putchar('\n');
                 shown++;
             }
             line += n + (end != NULL);
@@ -520,14 +562,16 @@ static int grade_chapter(const chapter_files *c, double timeout)
     char *log = log_text(c->buildlog), *flog = log_text(c->float_log);
     printf("%s%s\n", chapter, built ? "" : ": the student's files do not compile or were refused; every test fails");
     if (built && *log) { /* warnings: shown, not counted */
-        printf("  compiler messages (not counted):\n%s", log);
+        printf("  compiler messages (not counted):\n");
+        print_clean(log, strlen(log));
         buf_str(&summary, "\n");
         buf_str(&summary, chapter);
         buf_str(&summary, ": the compiler's messages for your files (warnings cost no points; fix them):\n");
         buf_str(&summary, log);
     }
     if (with_float && !float_built && built) {
-        printf("  the float build (REAL=float) does not compile:\n%s", flog);
+        printf("  the float build (REAL=float) does not compile:\n");
+        print_clean(flog, strlen(flog));
         buf_str(&summary, "\n");
         buf_str(&summary, chapter);
         buf_str(&summary, ": your files do not compile in the float build (REAL=float):\n");
@@ -577,8 +621,10 @@ static int grade_chapter(const chapter_files *c, double timeout)
                v == PASSED ? points : 0, v == SKIPPED ? 0 : points);
         if (v == FAILED && built)
             print_reason(out.s);
-        if (v == SKIPPED && out.s) /* why (run_test kept the suite's note) */
-            printf("        %.*s", (int)(strlen(out.s) > 400 ? 400 : strlen(out.s)), out.s);
+        if (v == SKIPPED && out.s) { /* why (run_test kept the suite's note) */
+            printf("        ");
+            print_clean(out.s, strlen(out.s) > 400 ? 400 : strlen(out.s));
+        }
         free(out.s);
     }
     if (with_float) { /* one line for the float build, worth nothing */

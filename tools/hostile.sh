@@ -4,15 +4,22 @@
 # Sets up the Gradescope zip (ZIP, or `make autograder CHAPTER=05` built
 # here) as docs/instructor-guide.md says, under a folder of /tmp standing for
 # /autograder, and grades each submission of tests/hostile/ with its
-# run_autograder: the five forging attacks (a constructor that forges the
+# run_autograder: the forging attacks (a constructor that forges the
 # per-test token, lambert finding it on the stack, definitions of cmocka's
 # _fail and _cmocka_run_group_tests, a table of the suite's published inputs,
-# the compiled reference re-emitted as assembly; and one the grader's own
+# the compiled reference re-emitted as assembly, and the same hidden from
+# the check for assembly: after a #line naming a system header, under an #if
+# on a flag of the compile's own, in a section attribute's name; a correct
+# lambert called through a static indirect function; the compiled
+# reference's bytes copied into memory made executable at run time; and one
+# the grader's own
 # design invites: running the reference's suite to write the records), a
 # symlink tree with a
 # newline in a folder's name aimed at the grader's grade.conf, and the
-# resource attacks (memory, files left in HOME and /tmp, bytes that are not
-# UTF-8, a test that never ends), besides the correct solution, a correct
+# resource attacks (memory, files left in HOME, /tmp and /run/lock, bytes that are not
+# UTF-8, a test that never ends), escape sequences for the terminal, a line typed into the terminal the
+# grading runs in (graded in one, for that), answers asked of a server
+# over the network, besides the correct solution, a correct
 # one written otherwise and an empty submission.  Prints one line per
 # submission (score, expected, what was checked) and fails naming every
 # expectation that does not hold (HOSTILE_ONLY="table hang" runs only
@@ -71,9 +78,24 @@ make_submission() {
     empty) ;;
     table) awk -v t="$work/table.inc" '$0 == "TABLE" { while ((getline l < t) > 0) print l; next } { print }' \
         "$here/table.c.in" >"$sub/lambert.c" ;;
-    asm_reference)
+    asm_reference | line_asm | ansi_asm | section_asm)
         (cd "$work" && rm -rf ar && mkdir ar && cd ar && ar x "$reference_lib" lambert.o) &&
-            "$here/asm-from-object.sh" "$work/ar/lambert.o" >"$sub/lambert.c" ;;
+            "$here/asm-from-object.sh" "$work/ar/lambert.o" >"$work/asm.c" || return 1
+        case $name in
+        asm_reference) cp "$work/asm.c" "$sub/lambert.c" ;;
+        line_asm) { echo '#line 1 "/usr/include/stdio.h"'; cat "$work/asm.c"; } >"$sub/lambert.c" ;;
+        ansi_asm) { echo '#ifdef __STRICT_ANSI__'; cat "$work/asm.c"; echo '#endif'; } >"$sub/lambert.c" ;;
+        section_asm) awk -f "$here/section-from-asm.awk" "$work/asm.c" >"$sub/lambert.c" ;;
+        esac ;;
+    copy)
+        (cd "$work" && rm -rf ar && mkdir ar && cd ar && ar x "$reference_lib" lambert.o) &&
+            "$here/bytes-from-object.sh" "$work/ar/lambert.o" >"$work/bytes.txt" || return 1
+        awk -v b="$work/bytes.txt" 'BEGIN { while ((getline l < b) > 0) v[substr(l, 1, index(l, " ") - 1)] = substr(l, index(l, " ") + 1) }
+            { for (k in v) if ((i = index($0, "{" k "}")) > 0) $0 = substr($0, 1, i) v[k] substr($0, i + length(k) + 1); print }' \
+            "$here/copy.c.in" >"$sub/lambert.c" ;;
+    escape) { cat "$here/escape.c"; printf '#warning \033[8m the compiler shows this line as it is\n'; } >"$sub/lambert.c" ;;
+    local_ifunc) { sed 's/^color lambert(/static color formula(/' "$here/alternative.c"; cat "$here/local_ifunc.c.in"; } \
+        >"$sub/lambert.c" ;;
     symlink)
         mkdir -p "$sub/x
 05_lambert" "$sub/05_lambert"
@@ -86,7 +108,8 @@ make_submission() {
 
 # NAME EXPECTED_SCORE: each case and what it must give (the score of 14 points).
 cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
-asm_reference:0 exec_reference:0 symlink:0 memory:0 litter:0 bad_utf8:0 hang:0"
+asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 copy:0 exec_reference:0 symlink:0 memory:0 litter:0
+bad_utf8:0 escape:0 tty:0 oracle:0 hang:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -94,9 +117,27 @@ for c in $cases; do
     name=${c%:*} expected=${c#*:}
     [ -z "${HOSTILE_ONLY:-}" ] || [[ " $HOSTILE_ONLY " == *" $name "* ]] || continue
     make_submission "$name" || { problem "$name: could not make the submission"; continue; }
+    server=""
+    if [ "$name" = oracle ]; then # the network server the submission asks (as root: the test's user cannot stop it)
+        python3 "$here/oracle-server.py" 40505 & server=$!
+        python3 -c 'import socket, time, sys
+for k in range(50):
+    try:
+        c = socket.create_connection(("127.0.0.1", 40505)); c.sendall(b"0x1p+0 " * 9 + b"0x1p+1 " * 3 + b"0x1p+0 " * 3 + b"\n"); sys.exit(not c.recv(99))
+    except OSError: time.sleep(0.1)
+sys.exit(1)' || problem "oracle: its server does not answer"
+    fi
     start=$(date +%s)
-    (cd "$root/source" && AUTOGRADER_ROOT=$root bash run_autograder) >"$work/$name.out" 2>&1
+    if [ "$name" = tty ]; then # in a terminal, then a shell that reads a line from it, as root's would
+        rm -f "$work/keyboard" && mkfifo "$work/keyboard" && exec 7<>"$work/keyboard" # input that never ends
+        script -qec "cd '$root/source' && AUTOGRADER_ROOT='$root' bash run_autograder; read -r -t 2 typed;
+            echo \"after grading the terminal gave: \${typed:-nothing}\"" /dev/null <&7
+        exec 7<&-
+    else
+        (cd "$root/source" && AUTOGRADER_ROOT=$root bash run_autograder)
+    fi >"$work/$name.out" 2>&1
     took=$(($(date +%s) - start))
+    [ -z "$server" ] || { kill "$server"; wait "$server"; } 2>/dev/null
     json=$root/results/results.json
     cp "$json" "$work/$name.json" 2>/dev/null
     score=$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1], encoding="utf-8", errors="strict"))["score"])' \
@@ -111,12 +152,20 @@ for c in $cases; do
     case $name in
     correct) grep -q "matches the compiled reference" "$work/$name.out" || problem "correct: not flagged as the reference's code" ;;
     alternative) grep -q "matches the compiled reference" "$work/$name.out" && problem "alternative: flagged as the reference's code" ;;
+    line_asm | ansi_asm) grep -q "refused: it holds assembly" "$work/$name.out" || problem "$name: not refused as assembly" ;;
+    section_asm) grep -q "refused: it holds an attribute whose text goes to the assembler" "$work/$name.out" ||
+        problem "section_asm: the section attribute not refused" ;;
+    local_ifunc) grep -q "refused: it holds an indirect function" "$work/$name.out" ||
+        problem "local_ifunc: the static indirect function not refused" ;;
+    escape) ! grep -q "$(printf '\033')" "$work/$name.out" || problem "escape: an escape sequence reached the terminal" ;;
+    tty) grep -q "after grading the terminal gave: nothing" "$work/$name.out" ||
+        problem "tty: a line typed into the grading's terminal: $(grep -a 'terminal gave' "$work/$name.out")" ;;
     memory)
         got=$(grep -ho 'memory: got [0-9]* MiB' "$json" | awk '{ print $3 }' | sort -n | tail -n 1)
         [ -n "$got" ] && [ "$got" -le 1024 ] || problem "memory: the test took ${got:-?} MiB (limit 1024)" ;;
     litter)
         grep -q "litter: found" "$json" && problem "litter: a test found files an earlier test left"
-        left=$(find /tmp /var/tmp /dev/shm -xdev -user "$user" 2>/dev/null | head -n 5)
+        left=$(find /tmp /var/tmp /dev/shm /run/lock -xdev -user "$user" 2>/dev/null | head -n 5)
         [ -z "$left" ] || problem "litter: files of $user left after grading: $left" ;;
     hang)
         grep -q "time budget" "$work/$name.out" || problem "hang: the time budget did not stop the grading"

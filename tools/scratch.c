@@ -35,7 +35,7 @@ static int remove_owned(const char *path, const struct stat *st, int type, struc
 
 void scratch_remove_owned(uid_t uid)
 {
-    static const char *const shared[] = {"/tmp", "/var/tmp", "/dev/shm"};
+    static const char *const shared[] = {"/tmp", "/var/tmp", "/dev/shm", "/run/lock"};
     owner = uid;
     for (size_t k = 0; k < sizeof shared / sizeof shared[0]; k++)
         nftw(shared[k], remove_owned, 32, FTW_DEPTH | FTW_PHYS | FTW_MOUNT);

@@ -1,5 +1,6 @@
 /* Hostile submission for chapter 05 (tools/hostile.sh): each test leaves a
- * 16 MiB file in $HOME, $TMPDIR and /tmp, and first says whether one left by
+ * 16 MiB file in $HOME, $TMPDIR and every folder anyone may write (/tmp,
+ * /var/tmp, /dev/shm, /run/lock), and first says whether one left by
  * an earlier test is there ("litter: found ...").  Nothing must carry over
  * from one test to the next, and nothing must stay behind after grading.
  * lambert returns zeros. */
@@ -40,12 +41,15 @@ color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)
     static int done;
     if (!done) { /* look everywhere first: HOME and TMPDIR may be one folder */
         done = 1;
+        static const char *const shared[] = {"/tmp", "/var/tmp", "/dev/shm", "/run/lock"};
         look(getenv("HOME"), "HOME");
         look(getenv("TMPDIR"), "TMPDIR");
-        look("/tmp", "/tmp");
+        for (size_t k = 0; k < sizeof shared / sizeof shared[0]; k++)
+            look(shared[k], shared[k]);
         leave(getenv("HOME"));
         leave(getenv("TMPDIR"));
-        leave("/tmp");
+        for (size_t k = 0; k < sizeof shared / sizeof shared[0]; k++)
+            leave(shared[k]);
     }
     return color_make(0, 0, 0);
 }

@@ -1,0 +1,29 @@
+/* seal.h - what a test's process may not do, by a filter of system calls.
+ *
+ * seal(), in the process about to exec a test, installs a filter (seccomp)
+ * that the test and every process it starts keep:
+ *   - no network: socket() of any family but AF_UNIX fails (EACCES), and so
+ *     does io_uring (ENOSYS), which could open a socket without that call.
+ *     No test needs it, and with it a submission could ask a server (a
+ *     student's own, running the hand-out's compiled reference) for its
+ *     answers instead of computing them;
+ *   - no code made at run time in memory: mmap() with PROT_EXEC of anonymous
+ *     or writable memory, mprotect() adding PROT_EXEC, shmat() with
+ *     SHM_EXEC and a personality that makes readable memory executable
+ *     fail (EACCES), so that a submission cannot copy the hand-out's
+ *     compiled reference into memory and run it.  A file mapped with
+ *     PROT_EXEC still works, as the loader maps the libraries so: a file of
+ *     those bytes, or a write through /proc/self/mem, is not refused
+ *     (docs/instructor-guide.md, "What the grader guarantees");
+ *   - a system call of another ABI than the machine's own (32-bit calls on
+ *     x86-64) kills the process.
+ * Files, threads and pipes work as before.
+ */
+#ifndef RT_TOOLS_SEAL_H
+#define RT_TOOLS_SEAL_H
+
+/* 0, or -1 when the filter cannot be installed (a kernel without seccomp,
+ * a machine other than x86-64 and aarch64). */
+int seal(void);
+
+#endif
