@@ -5,9 +5,9 @@
  * computes the span of the ray in the same units (cull_span); a box beside
  * that span is passed by with one word test (box_beside_span), and the few
  * left get the slab test (passes_box) before the surface test.  Their
- * loops over the three axes are unrolled as fast_march.c's are, but
- * cull_start's: unrolled, it has gcc warn that the fields it sets may be
- * read unset (-Wmaybe-uninitialized, through `started`).
+ * loops over the three axes are unrolled as fast_march.c's are, all but
+ * cull_start's: unrolled, it makes gcc warn that the fields it sets may be
+ * read unset (-Wmaybe-uninitialized, which does not follow `started`).
  */
 #ifndef CH11_LAB_FAST_CULL_H
 #define CH11_LAB_FAST_CULL_H
@@ -47,9 +47,9 @@ static inline bool passes_box(const uint8_t box[8], const cull_frame *f, real t_
 /* end snippet */
 
 /* What the cull frame of every cell of g has for the ray with direction d
- * (inv_d and slack as the march has them): the steps' length in t, the
- * sides the ray enters and leaves by, the slack.  Once per grid and ray, at
- * the first cell that culls (many rays meet none). */
+ * (inv_d as the march has it): the steps' length in t and the sides the
+ * ray enters and leaves by.  Once per grid and ray, at the first cell that
+ * culls (many rays meet none). */
 static inline void cull_start(cull_frame *f, const fast_grid *g, const real d[3], const real inv_d[3])
 {
     for (int a = 0; a < 3; a++) {
