@@ -1,15 +1,6 @@
 /* watertight.c - Woop, Benthin and Wald's watertight ray/triangle test (2013). */
 #include "watertight.h"
 
-
-/* v's coordinate along axis k (0: x, 1: y, 2: z), read from an array rather
- * than chosen by branches: the test reads nine of them per triangle. */
-static inline real component(vec3 v, int k)
-{
-    const real c[3] = {v.x, v.y, v.z};
-    return c[k];
-}
-
 /* The axis along which |d| is largest. */
 static int largest_axis(vec3 d)
 {
@@ -23,7 +14,7 @@ bool watertight_ray_make(ray r, watertight_ray *wr)
     /* 1. Ray space: the axis where d is largest becomes z, the other two follow
      *    cyclically (swapped when d_z < 0, which keeps the triangle's winding). */
     int kz = largest_axis(r.d), kx = (kz + 1) % 3, ky = (kx + 1) % 3;
-    real dz = component(r.d, kz);
+    real dz = along(&r.d, kz);
     if (!(dz != 0 && isfinite(dz)))
         return false; /* no direction at all */
     if (dz < 0) {
@@ -32,9 +23,9 @@ bool watertight_ray_make(ray r, watertight_ray *wr)
         ky = swap;
     }
     /* The shear that maps d to (0, 0, 1): x' = x - S_x z, y' = y - S_y z, z' = S_z z. */
-    real sx = component(r.d, kx) / dz, sy = component(r.d, ky) / dz, sz = 1 / dz;
+    real sx = along(&r.d, kx) / dz, sy = along(&r.d, ky) / dz, sz = 1 / dz;
     /* end snippet */
     *wr = (watertight_ray){.r = r, .kx = kx, .ky = ky, .kz = kz, .sx = sx, .sy = sy, .sz = sz,
-                           .p = {component(r.p, kx), component(r.p, ky), component(r.p, kz)}};
+                           .p = {along(&r.p, kx), along(&r.p, ky), along(&r.p, kz)}};
     return true;
 }
