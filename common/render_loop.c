@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include "explain.h"
+#include "threads.h"
 
 static double now(void)
 {
@@ -111,6 +112,7 @@ render_stats render_image_mapped(image *img, sample_fn sample, const void *scene
     int rows_done = 0, reported = 0;
     render_stats stats = {0};
 
+    threads_bind(threads); /* once per process: renderer_main has done it before the scene is read */
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (int j = 0; j < ny; j++) {
         uint64_t row_rays[RAY_KINDS] = {0};

@@ -1,5 +1,6 @@
 #include "renderer.h"
 
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 
@@ -7,6 +8,7 @@
 #include "explain.h"
 #include "png_write.h"
 #include "scene_cost.h"
+#include "threads.h"
 
 int renderer_main(const renderer *r, int argc, char **argv)
 {
@@ -21,6 +23,8 @@ int renderer_main(const renderer *r, int argc, char **argv)
     case OPTIONS_ERROR: return 2;
     case OPTIONS_OK: break;
     }
+    /* The render's threads, started and bound while the scene is read (threads.h) */
+    threads_bind(opt.threads > 0 ? opt.threads : omp_get_max_threads());
 
     char err[1024];
     scene desc;

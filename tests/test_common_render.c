@@ -1,8 +1,16 @@
 /* The render loop (common/render_loop.h): pixel centres, samples, threads. */
+#ifdef __linux__
+#define _GNU_SOURCE /* sched_getaffinity, cpu_set_t */
+#include <sched.h>
+#endif
+
+#include <omp.h>
+#include <stdlib.h>
 #include <string.h>
 
 #include "render_loop.h"
 #include "suite.h"
+#include "threads.h"
 
 /* A "scene" that returns the sample position as a colour. */
 static color position(const void *scene, real u, real v, uint64_t *rays)
@@ -237,7 +245,44 @@ static void test_nonfinite_samples_are_counted_and_kept_out(void **state)
     image_free(&img);
 }
 
+/* threads_bind: after it, each thread of a team of that size may run on
+ * one processor only, and no two on the same one.  Skipped where it binds
+ * nothing by design: off Linux, with fewer than two processors, or when the
+ * environment chooses the binding. */
+static void test_each_thread_is_bound_to_a_processor_of_its_own(void **state)
+{
+    (void)state;
+#ifdef __linux__
+    cpu_set_t allowed;
+    assert_int_equal(0, sched_getaffinity(0, sizeof allowed, &allowed));
+    if (CPU_COUNT(&allowed) < 2 || getenv("OMP_PROC_BIND") || getenv("OMP_PLACES"))
+        skip();
+    threads_bind(2);
+    int count[2] = {0, 0}, cpu[2] = {-1, -1};
+#pragma omp parallel num_threads(2)
+    {
+        const int k = omp_get_thread_num();
+        cpu_set_t mine;
+        if (sched_getaffinity(0, sizeof mine, &mine) == 0) {
+            count[k] = CPU_COUNT(&mine);
+            for (int c = 0; c < CPU_SETSIZE; c++)
+                if (CPU_ISSET(c, &mine))
+                    cpu[k] = c;
+        }
+    }
+    assert_int_equal(1, count[0]);
+    assert_int_equal(1, count[1]);
+    assert_true(cpu[0] != cpu[1]);
+    assert_true(CPU_ISSET(cpu[0], &allowed) && CPU_ISSET(cpu[1], &allowed));
+#else
+    skip();
+#endif
+}
+
 static const graded_test tests[] = {
+    /* first: the others' renders bind the process's threads, and this one
+     * reads the processors the process may run on before any binding */
+    GRADED(test_each_thread_is_bound_to_a_processor_of_its_own, 0),
     GRADED(test_one_sample_is_the_pixel_centre, 0),
     GRADED(test_stratified_samples_stay_in_their_strata, 0),
     GRADED(test_samples_average_to_the_pixel_mean, 0),

@@ -31,6 +31,7 @@
 #include "04_many_shapes/closest_hit.h"
 #include "11_grid/lab/fast_grid.h"
 #include "mesh.h"
+#include "threads.h"
 
 static double now(void)
 {
@@ -380,6 +381,7 @@ int main(int argc, char **argv)
     double grid_build_time = now() - t0;
 
     tracer tr = {&list, &g, scene, rays, size, NULL};
+    threads_bind(2); /* the 2-thread runs' team, bound as the renderers bind theirs */
     /* 1 thread by CPU time; the speed-up of 2 threads by wall-clock time, 1 against 2. */
     /* The 1-thread runs alternate grid and Embree, so that both see the same
      * load on the shared machine; medians of each. */
