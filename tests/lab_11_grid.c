@@ -18,14 +18,16 @@
 #define GRID_QUERY_KNOBS (&fast_defaults)
 /* a few densities with every knob on, one level and two (the default split,
  * and splits so low that most cells with surfaces get grids of their own),
- * then mailboxing, leaping and culling off one at a time and all together */
+ * then mailboxing, leaping and culling off one at a time and all together;
+ * the last two prefetch (these small scenes' grids would not by size) */
 static const fast_grid_options knob_sets[] = {
-    {0.3, 1L << 20, true, true, true, 0},   {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT},
-    {10, 1L << 20, true, true, true, 0},    {2, 1L << 20, true, true, true, 0},
-    {0.3, 1L << 20, true, true, true, 2},   {2, 1L << 20, true, true, true, 4},
-    {2, 1L << 20, false, true, true, 0},    {2, 1L << 20, true, false, true, 0},
-    {2, 1L << 20, true, true, false, 0},    {2, 1L << 20, false, false, false, 0},
-    {2, 1L << 20, false, false, false, 3},
+    {0.3, 1L << 20, true, true, true, 0, 0},   {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT, 0},
+    {10, 1L << 20, true, true, true, 0, 0},    {2, 1L << 20, true, true, true, 0, 0},
+    {0.3, 1L << 20, true, true, true, 2, 0},   {2, 1L << 20, true, true, true, 4, 0},
+    {2, 1L << 20, false, true, true, 0, 0},    {2, 1L << 20, true, false, true, 0, 0},
+    {2, 1L << 20, true, true, false, 0, 0},    {2, 1L << 20, false, false, false, 0, 0},
+    {2, 1L << 20, false, false, false, 3, 0},  {2, 1L << 20, true, true, true, 4, FAST_GRID_PREFETCH_ON},
+    {0.3, 1L << 20, true, true, true, 0, FAST_GRID_PREFETCH_ON},
 };
 #define N_KNOB_SETS (sizeof knob_sets / sizeof knob_sets[0])
 
@@ -183,6 +185,42 @@ static void test_next_above(void **state)
     }
 }
 
+/* Prefetching by size: off for a grid and surfaces within FAST_GRID_PREFETCH_FROM
+ * bytes, on beyond, and as the knob says when it says. */
+static void test_prefetch_by_size(void **state)
+{
+    (void)state;
+    rng_state = 5;
+    const long big = (long)(FAST_GRID_PREFETCH_FROM / (long)sizeof(surface)) + 1; /* the surfaces alone exceed it */
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+    random_scene(&list, 100, vec3_make(3, -2, 7), 5);
+    fast_grid g;
+    fast_grid_options opt = fast_grid_default_options();
+    build_fast(&g, &list, opt);
+    assert_true(fast_grid_memory(&g) + (size_t)list.n * sizeof(surface) <= (size_t)FAST_GRID_PREFETCH_FROM);
+    assert_false(g.prefetch);
+    fast_grid_free(&g);
+    opt.prefetch = FAST_GRID_PREFETCH_ON;
+    build_fast(&g, &list, opt);
+    assert_true(g.prefetch);
+    fast_grid_free(&g);
+    random_scene(&list, (int)big - 100, vec3_make(3, -2, 7), 5);
+    assert_int_equal(big, list.n);
+    opt.prefetch = FAST_GRID_PREFETCH_AUTO;
+    build_fast(&g, &list, opt);
+    assert_true(g.prefetch);
+    fast_grid_free(&g);
+    opt.prefetch = FAST_GRID_PREFETCH_OFF;
+    build_fast(&g, &list, opt);
+    assert_false(g.prefetch);
+    fast_grid_free(&g);
+    opt.prefetch = FAST_GRID_PREFETCH_OFF + 1;
+    char err[256];
+    assert_int_equal(-1, fast_grid_build(&g, &list, opt, err, sizeof err));
+    surface_list_free(&list);
+}
+
 static const graded_test tests[] = {
     GRADED(test_random_scenes, 0),
     GRADED(test_zero_components, 0),
@@ -195,6 +233,7 @@ static const graded_test tests[] = {
     GRADED(test_mailbox_counts, 0),
     GRADED(test_next_above, 0),
     GRADED(test_empty_cubes, 0),
+    GRADED(test_prefetch_by_size, 0),
     GRADED(test_directions_of_any_length, 0),
     GRADED(test_cornell_scenes, 0),
     GRADED(test_builtin_scenes_as_chapter_10, 0),

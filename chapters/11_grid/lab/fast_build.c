@@ -16,7 +16,8 @@ fast_grid_options fast_grid_default_options(void)
                           .mailbox = true,
                           .leap = true,
                           .cull = true,
-                          .split = FAST_GRID_DEFAULT_SPLIT};
+                          .split = FAST_GRID_DEFAULT_SPLIT,
+                          .prefetch = FAST_GRID_PREFETCH_AUTO};
 }
 
 static real get(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
@@ -351,9 +352,10 @@ out_of_memory:
 int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options opt, char *err, size_t err_size)
 {
     *g = (fast_grid){.list = list, .mailbox = opt.mailbox, .cull = opt.cull};
-    if (!(opt.density > 0) || opt.max_cells < 1 || opt.max_cells > (1L << 30)) {
-        snprintf(err, err_size, "grid: density must be > 0 and the cell cap 1 .. 2^30 (got %g, %ld)", opt.density,
-                 opt.max_cells);
+    if (!(opt.density > 0) || opt.max_cells < 1 || opt.max_cells > (1L << 30) ||
+        opt.prefetch < FAST_GRID_PREFETCH_AUTO || opt.prefetch > FAST_GRID_PREFETCH_OFF) {
+        snprintf(err, err_size, "grid: density must be > 0, the cell cap 1 .. 2^30, prefetching 0 .. 2 (got %g, %ld, %d)",
+                 opt.density, opt.max_cells, opt.prefetch);
         return -1;
     }
     /* The box of every surface with finite bounds; the others are tested for every ray. */
@@ -405,6 +407,10 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
         status = fast_grid_split(g, opt, err, err_size);
     if (status != 0)
         fast_grid_free(g);
+    else if (opt.prefetch == FAST_GRID_PREFETCH_AUTO)
+        g->prefetch = fast_grid_memory(g) + (size_t)list->n * sizeof(surface) > (size_t)FAST_GRID_PREFETCH_FROM;
+    else
+        g->prefetch = opt.prefetch == FAST_GRID_PREFETCH_ON;
     return status;
 
 out_of_memory:

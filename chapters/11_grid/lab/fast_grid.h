@@ -34,8 +34,16 @@ typedef struct {
     bool leap;       /* leap over blocks of empty cells in one step */
     bool cull;       /* test a surface only when the ray passes through its box */
     int split;       /* a cell that lists more surfaces than this gets a grid of its own; 0: one level */
+    int prefetch;    /* FAST_GRID_PREFETCH_*: fetch the next cell and the surfaces to test ahead of their use */
 } fast_grid_options;
 /* end snippet */
+
+/* Prefetching: AUTO (0, so the default of a zeroed struct) when the grid and
+ * its surfaces take more than FAST_GRID_PREFETCH_FROM bytes (below that they
+ * stay in the processor's caches, where the extra work only costs), ON
+ * always, OFF never. */
+enum { FAST_GRID_PREFETCH_AUTO, FAST_GRID_PREFETCH_ON, FAST_GRID_PREFETCH_OFF };
+#define FAST_GRID_PREFETCH_FROM (4L << 20)
 
 #define FAST_GRID_DEFAULT_DENSITY 2.0
 #define FAST_GRID_DEFAULT_MAX_CELLS (1L << 24)
@@ -95,6 +103,7 @@ struct fast_grid {
     real scale;               /* the largest coordinate of the box, for the rounding bounds */
     bool mailbox;
     bool cull;                /* refs[].box is filled in */
+    bool prefetch;            /* the march prefetches (the top grid's choice holds for its subs) */
     size_t peak_bytes;        /* the most memory the build held at once */
 };
 /* end snippet */
@@ -107,7 +116,7 @@ typedef struct {
 } fast_grid_counts;
 
 /* The default knobs: FAST_GRID_DEFAULT_DENSITY, FAST_GRID_DEFAULT_MAX_CELLS, mailboxing, leaping and culling
- * on, two levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell. */
+ * on, two levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell, prefetching by size. */
 fast_grid_options fast_grid_default_options(void);
 
 /* Builds the grid of `list`, which must outlive it and not change.  Returns
