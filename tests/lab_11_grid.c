@@ -185,6 +185,18 @@ static void test_next_above(void **state)
     }
 }
 
+/* Whether a grid of `list` built with the knob `prefetch` prefetches. */
+static bool prefetches(const surface_list *list, int prefetch)
+{
+    fast_grid g;
+    fast_grid_options opt = fast_grid_default_options();
+    opt.prefetch = prefetch;
+    build_fast(&g, list, opt);
+    const bool on = g.prefetch;
+    fast_grid_free(&g);
+    return on;
+}
+
 /* Prefetching by size: off for a grid and surfaces within FAST_GRID_PREFETCH_FROM
  * bytes, on beyond, and as the knob says when it says. */
 static void test_prefetch_by_size(void **state)
@@ -196,25 +208,16 @@ static void test_prefetch_by_size(void **state)
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
     random_scene(&list, 100, vec3_make(3, -2, 7), 5);
     fast_grid g;
-    fast_grid_options opt = fast_grid_default_options();
-    build_fast(&g, &list, opt);
+    build_fast(&g, &list, fast_grid_default_options());
     assert_true(fast_grid_memory(&g) + (size_t)list.n * sizeof(surface) <= (size_t)FAST_GRID_PREFETCH_FROM);
-    assert_false(g.prefetch);
     fast_grid_free(&g);
-    opt.prefetch = FAST_GRID_PREFETCH_ON;
-    build_fast(&g, &list, opt);
-    assert_true(g.prefetch);
-    fast_grid_free(&g);
+    assert_false(prefetches(&list, FAST_GRID_PREFETCH_AUTO));
+    assert_true(prefetches(&list, FAST_GRID_PREFETCH_ON));
     random_scene(&list, (int)big - 100, vec3_make(3, -2, 7), 5);
     assert_int_equal(big, list.n);
-    opt.prefetch = FAST_GRID_PREFETCH_AUTO;
-    build_fast(&g, &list, opt);
-    assert_true(g.prefetch);
-    fast_grid_free(&g);
-    opt.prefetch = FAST_GRID_PREFETCH_OFF;
-    build_fast(&g, &list, opt);
-    assert_false(g.prefetch);
-    fast_grid_free(&g);
+    assert_true(prefetches(&list, FAST_GRID_PREFETCH_AUTO));
+    assert_false(prefetches(&list, FAST_GRID_PREFETCH_OFF));
+    fast_grid_options opt = fast_grid_default_options();
     opt.prefetch = FAST_GRID_PREFETCH_OFF + 1;
     char err[256];
     assert_int_equal(-1, fast_grid_build(&g, &list, opt, err, sizeof err));
