@@ -12,10 +12,15 @@
 void threads_bind(int threads)
 {
 #ifdef __linux__
+    /* the processors the process may run on, read before the first binding
+     * (which leaves the calling thread, whose mask new threads inherit, one) */
+    static cpu_set_t allowed;
+    static int read = 0;
     static _Thread_local int bound; /* the team size this thread's team was bound for */
-    cpu_set_t allowed;
-    if (threads <= 1 || bound == threads || getenv("OMP_PROC_BIND") || getenv("OMP_PLACES") ||
-        sched_getaffinity(0, sizeof allowed, &allowed) != 0 || CPU_COUNT(&allowed) < threads)
+    if (!read)
+        read = sched_getaffinity(0, sizeof allowed, &allowed) == 0 ? 1 : -1;
+    if (threads <= 1 || bound == threads || read < 0 || getenv("OMP_PROC_BIND") || getenv("OMP_PLACES") ||
+        CPU_COUNT(&allowed) < threads)
         return;
     int arrived = 0;
 #pragma omp parallel num_threads(threads)

@@ -16,7 +16,9 @@
  * bound.  Does nothing for one thread, when the process may run on fewer
  * processors than `threads`, when the environment already chooses a
  * binding (OMP_PROC_BIND or OMP_PLACES), or off Linux.  The binding holds
- * for the rest of the process: later teams of as many threads reuse it. */
+ * for the rest of the process: later teams of as many threads reuse it, and
+ * a team of another size is bound again, over the processors the process
+ * could run on at the first call.  Call it from outside parallel regions. */
 void threads_bind(int threads);
 
 #endif
