@@ -15,11 +15,11 @@ void threads_bind(int threads)
     /* the processors the process may run on, read before the first binding
      * (which leaves the calling thread, whose mask new threads inherit, one) */
     static cpu_set_t allowed;
-    static int read = 0;
+    static int allowed_known = 0; /* 1: read, -1: could not be read */
     static _Thread_local int bound; /* the team size this thread's team was bound for */
-    if (!read)
-        read = sched_getaffinity(0, sizeof allowed, &allowed) == 0 ? 1 : -1;
-    if (threads <= 1 || bound == threads || read < 0 || getenv("OMP_PROC_BIND") || getenv("OMP_PLACES") ||
+    if (!allowed_known)
+        allowed_known = sched_getaffinity(0, sizeof allowed, &allowed) == 0 ? 1 : -1;
+    if (threads <= 1 || bound == threads || allowed_known < 0 || getenv("OMP_PROC_BIND") || getenv("OMP_PLACES") ||
         CPU_COUNT(&allowed) < threads)
         return;
     int arrived = 0;

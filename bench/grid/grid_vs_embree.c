@@ -3,6 +3,7 @@
  * only (bench/grid/grid.mk); never part of `make` or `make test`.
  *
  *     grid_vs_embree MESH.obj | sphere:N   [--size 512] [--linear-rows K] [--random] [--cramer] [--split N]
+ *                    [--prefetch auto|on|off]
  *
  * One primary ray per pixel of a WxW image looking at the mesh (or, with
  * --random, as many incoherent rays: see make_random_rays); every
@@ -15,7 +16,8 @@
  * itself), the grid's knobs side by side, and how often the three agree on
  * the triangle hit.  The triangle test is the renderers' default, the
  * watertight one (--cramer: chapter 03's Cramer's rule); the grid has two
- * levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell (--split N; 0: one).  The linear scan traces every K-th row only (K =
+ * levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell (--split N; 0: one) and prefetches by its
+ * size (--prefetch, fast_grid.h).  The linear scan traces every K-th row only (K =
  * --linear-rows; 0 skips it) and its rate is that of the rows it traced.
  */
 #include <math.h>
@@ -325,14 +327,21 @@ int main(int argc, char **argv)
             random_rays = true;
         else if (!strcmp(argv[k], "--split") && k + 1 < argc)
             grid_options.split = atoi(argv[++k]);
+        else if (!strcmp(argv[k], "--prefetch") && k + 1 < argc) {
+            const char *v = argv[++k];
+            grid_options.prefetch = !strcmp(v, "auto") ? FAST_GRID_PREFETCH_AUTO
+                                    : !strcmp(v, "on") ? FAST_GRID_PREFETCH_ON
+                                    : !strcmp(v, "off") ? FAST_GRID_PREFETCH_OFF
+                                                        : -1; /* refused by the usage check */
+        }
         else if (!strcmp(argv[k], "--cramer"))
             test = TRIANGLE_CRAMER;
         else
             what = argv[k];
     }
-    if (!what || size < 1 || runs < 1) {
+    if (!what || size < 1 || runs < 1 || grid_options.prefetch < 0) {
         fprintf(stderr, "usage: grid_vs_embree MESH.obj|sphere:N [--size 512] [--linear-rows 32] [--runs 5] [--knobs 1|2|0] "
-                        "[--random] [--cramer] [--split N]\n");
+                        "[--random] [--cramer] [--split N] [--prefetch auto|on|off]\n");
         return 2;
     }
     float_mesh fm;
@@ -444,7 +453,7 @@ int main(int argc, char **argv)
             fast_grid h;
             fast_grid_options opt = {.density = densities[k], .max_cells = FAST_GRID_DEFAULT_MAX_CELLS,
                                      .mailbox = variant != 1, .leap = variant != 2, .cull = variant != 3,
-                                     .split = grid_options.split};
+                                     .split = grid_options.split, .prefetch = grid_options.prefetch};
             t0 = now();
             if (fast_grid_build(&h, &list, opt, err, sizeof err) != 0) {
                 fprintf(stderr, "grid_vs_embree: %s\n", err);
