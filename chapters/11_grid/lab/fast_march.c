@@ -82,14 +82,17 @@ static inline bool dda_step(const fast_grid *g, dda *m, int a, const ray_frame *
 }
 /* end snippet */
 
-/* The axis whose boundary the ray crosses first: the cell's far side.  From
- * the three comparisons, without branches (which way they go changes from
- * cell to cell, and a mispredicted branch costs more than the lookup). */
+/* The axis whose boundary the ray crosses first: the cell's far side.  x
+ * when it is strictly first; else y when it is before z and x is not before
+ * it; else z.  In arithmetic on the comparisons, without branches (which way
+ * they go changes from cell to cell, and a mispredicted branch costs more)
+ * and without a table (whose load would lengthen every step's chain): the
+ * two cases exclude each other. */
 static inline int nearest_axis(const dda *m)
 {
-    static const int8_t axis[8] = {2, 1, 2, 1, 2, 2, 0, 0}; /* by (x<y, x<z, y<z) */
-    int k = ((m->next[0] < m->next[1]) << 2) | ((m->next[0] < m->next[2]) << 1) | (m->next[1] < m->next[2]);
-    return axis[k];
+    const real x = m->next[0], y = m->next[1], z = m->next[2];
+    const int x_first = (x < y) & (x < z), y_first = (y < z) & !(x < y);
+    return 2 - y_first - 2 * x_first;
 }
 
 /* The cell index along axis a of coordinate f (in cells from the grid's low
