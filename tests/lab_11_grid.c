@@ -19,15 +19,22 @@
 /* a few densities with every knob on, one level and two (the default split,
  * and splits so low that most cells with surfaces get grids of their own),
  * then mailboxing, leaping and culling off one at a time and all together;
- * the last two prefetch (these small scenes' grids would not by size) */
+ * the last two prefetch (these small scenes' grids would not by size); the
+ * second and the last keep the triangles' normals, as the lab does */
 static const fast_grid_options knob_sets[] = {
-    {0.3, 1L << 20, true, true, true, 0, 0},   {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT, 0},
-    {10, 1L << 20, true, true, true, 0, 0},    {2, 1L << 20, true, true, true, 0, 0},
-    {0.3, 1L << 20, true, true, true, 2, 0},   {2, 1L << 20, true, true, true, 4, 0},
-    {2, 1L << 20, false, true, true, 0, 0},    {2, 1L << 20, true, false, true, 0, 0},
-    {2, 1L << 20, true, true, false, 0, 0},    {2, 1L << 20, false, false, false, 0, 0},
-    {2, 1L << 20, false, false, false, 3, 0},  {2, 1L << 20, true, true, true, 4, FAST_GRID_PREFETCH_ON},
-    {0.3, 1L << 20, true, true, true, 0, FAST_GRID_PREFETCH_ON},
+    {0.3, 1L << 20, true, true, true, 0, 0, false},
+    {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT, 0, true},
+    {10, 1L << 20, true, true, true, 0, 0, false},
+    {2, 1L << 20, true, true, true, 0, 0, false},
+    {0.3, 1L << 20, true, true, true, 2, 0, false},
+    {2, 1L << 20, true, true, true, 4, 0, false},
+    {2, 1L << 20, false, true, true, 0, 0, false},
+    {2, 1L << 20, true, false, true, 0, 0, false},
+    {2, 1L << 20, true, true, false, 0, 0, false},
+    {2, 1L << 20, false, false, false, 0, 0, false},
+    {2, 1L << 20, false, false, false, 3, 0, false},
+    {2, 1L << 20, true, true, true, 4, FAST_GRID_PREFETCH_ON, false},
+    {0.3, 1L << 20, true, true, true, 0, FAST_GRID_PREFETCH_ON, true},
 };
 #define N_KNOB_SETS (sizeof knob_sets / sizeof knob_sets[0])
 
@@ -224,6 +231,72 @@ static void test_prefetch_by_size(void **state)
     surface_list_free(&list);
 }
 
+/* fast_grid_closest answers as fast_grid_intersect does, without the
+ * record: the same surface, t, beta and gamma (==), with both triangle
+ * tests, on scenes of small triangles and spheres far from the origin, for
+ * rays from outside and inside aimed at a point well inside a triangle (so
+ * that most hit one: a ray that grazes its target's plane may be refused by
+ * the certainty check); and the normals knob costs exactly a vec3 per
+ * surface. */
+static void test_closest_without_record(void **state)
+{
+    (void)state;
+    rng_state = 23;
+    const int n_rays = 2000;
+    for (int scene_no = 0; scene_no < 2; scene_no++) {
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, triangle_tests[scene_no]);
+        const vec3 centre = uniform_vec(vec3_make(-500, -500, -500), vec3_make(500, 500, 500));
+        const real half = uniform(2, 30);
+        const vec3 lo = vec3_sub(centre, vec3_make(half, half, half)), hi = vec3_add(centre, vec3_make(half, half, half));
+        for (int k = 0; k < 120; k++) { /* sizes a few hundredths of the box: a ray rarely passes another surface */
+            const vec3 c = uniform_vec(lo, hi);
+            const real size = half * uniform((real)0.02, (real)0.06);
+            if (k % 2)
+                surface_list_add_sphere(&list, (sphere){c, size}, 0, k);
+            else
+                surface_list_add_triangle(&list, (triangle){vec3_add(c, vec3_scale(random_direction(), size)),
+                                                            vec3_add(c, vec3_scale(random_direction(), size)),
+                                                            vec3_add(c, vec3_scale(random_direction(), size))},
+                                          0, k);
+        }
+        fast_grid g;
+        fast_grid_options opt = fast_grid_default_options();
+        build_fast(&g, &list, opt);
+        const size_t without = fast_grid_memory(&g);
+        fast_grid_free(&g);
+        opt.normals = true;
+        build_fast(&g, &list, opt);
+        assert_int_equal(without + (size_t)list.n * sizeof(vec3), fast_grid_memory(&g));
+        int triangle_hits = 0;
+        for (int k = 0; k < n_rays; k++) {
+            const triangle *target = &list.items[2 * (next_u64() % 60)].triangle;
+            const real beta = uniform((real)0.2, (real)0.4), gamma = uniform((real)0.2, (real)0.4);
+            const vec3 aim = vec3_add(target->a, vec3_add(vec3_scale(vec3_sub(target->b, target->a), beta),
+                                                          vec3_scale(vec3_sub(target->c, target->a), gamma)));
+            const vec3 p = vec3_add(centre, vec3_scale(random_direction(), (k % 2 ? 3 : 1) * half));
+            const ray r = {p, vec3_sub(aim, p)};
+            hit_record rec;
+            fast_grid_hit h;
+            const bool found = fast_grid_intersect(&g, r, 0, REAL_INFINITY, &rec);
+            if (found != fast_grid_closest(&g, r, 0, REAL_INFINITY, &h))
+                fail_msg("ray %d: fast_grid_intersect %s, fast_grid_closest does not", k, found ? "hits" : "misses");
+            if (!found)
+                continue;
+            triangle_hits += list.items[rec.surface].kind == SHAPE_TRIANGLE;
+            if (h.surface != rec.surface || h.t != rec.t || h.beta != rec.beta || h.gamma != rec.gamma)
+                fail_msg("ray %d: the record says surface %d at t = %a (beta %a, gamma %a), fast_grid_closest %d "
+                         "at %a (%a, %a)", k, rec.surface, (double)rec.t, (double)rec.beta, (double)rec.gamma,
+                         h.surface, (double)h.t, (double)h.beta, (double)h.gamma);
+        }
+        /* most rays meet their target first: beta and gamma were compared on triangles */
+        if (triangle_hits < n_rays / 2)
+            fail_msg("only %d of %d rays hit a triangle first", triangle_hits, n_rays);
+        fast_grid_free(&g);
+        surface_list_free(&list);
+    }
+}
+
 static const graded_test tests[] = {
     GRADED(test_random_scenes, 0),
     GRADED(test_zero_components, 0),
@@ -237,6 +310,7 @@ static const graded_test tests[] = {
     GRADED(test_next_above, 0),
     GRADED(test_empty_cubes, 0),
     GRADED(test_prefetch_by_size, 0),
+    GRADED(test_closest_without_record, 0),
     GRADED(test_directions_of_any_length, 0),
     GRADED(test_cornell_scenes, 0),
     GRADED(test_builtin_scenes_as_chapter_10, 0),

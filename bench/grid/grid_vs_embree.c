@@ -279,10 +279,13 @@ static double trace(const tracer *tr, int method, int step, int threads, bool cp
                 rtcIntersect1(tr->scene, &context, &rh);
                 tr->prim[k] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? -1 : (int)rh.hit.primID;
             } else {
-                hit_record hit;
-                bool found = method == GRID ? fast_grid_intersect(tr->g, to_ray(fr), 0, REAL_INFINITY, &hit)
-                                            : surfaces_intersect(tr->list, to_ray(fr), 0, REAL_INFINITY, &hit);
-                tr->prim[k] = found ? hit.surface : -1;
+                if (method == GRID) {
+                    fast_grid_hit hit;
+                    tr->prim[k] = fast_grid_closest(tr->g, to_ray(fr), 0, REAL_INFINITY, &hit) ? hit.surface : -1;
+                } else {
+                    hit_record hit;
+                    tr->prim[k] = surfaces_intersect(tr->list, to_ray(fr), 0, REAL_INFINITY, &hit) ? hit.surface : -1;
+                }
             }
         }
     }

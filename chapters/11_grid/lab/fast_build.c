@@ -17,7 +17,8 @@ fast_grid_options fast_grid_default_options(void)
                           .leap = true,
                           .cull = true,
                           .split = FAST_GRID_DEFAULT_SPLIT,
-                          .prefetch = FAST_GRID_PREFETCH_AUTO};
+                          .prefetch = FAST_GRID_PREFETCH_AUTO,
+                          .normals = false};
 }
 
 static real get(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
@@ -405,6 +406,14 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
     int status = fast_grid_fill(g, NULL, list->n, opt.leap, err, err_size);
     if (status == 0)
         status = fast_grid_split(g, opt, err, err_size);
+    if (status == 0 && opt.normals) { /* each triangle's normal, as the hit's record has it */
+        g->normal = calloc((size_t)list->n, sizeof *g->normal);
+        if (!g->normal)
+            goto out_of_memory;
+        for (int k = 0; k < list->n; k++)
+            if (list->items[k].kind == SHAPE_TRIANGLE)
+                g->normal[k] = triangle_normal(&list->items[k].triangle);
+    }
     if (status != 0)
         fast_grid_free(g);
     else if (opt.prefetch == FAST_GRID_PREFETCH_AUTO)
@@ -425,6 +434,7 @@ void fast_grid_free(fast_grid *g)
     free(g->refs);
     free(g->unbinned);
     free(g->empty);
+    free(g->normal);
     if (g->plane[0])
         free(g->plane[0] - g->beyond);
     for (long k = 0; k < g->n_subs; k++)
@@ -436,6 +446,7 @@ void fast_grid_free(fast_grid *g)
     g->start = g->unbinned = NULL;
     g->refs = NULL;
     g->empty = NULL;
+    g->normal = NULL;
     g->n_cells = g->n_refs = g->n_unbinned = 0;
 }
 
@@ -443,6 +454,6 @@ size_t fast_grid_memory(const fast_grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
     return sizeof *g + (cells + (size_t)g->n_unbinned) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof *g->refs +
-           (g->empty ? 8 * (size_t)g->n_cells : 0) +
+           (g->empty ? 8 * (size_t)g->n_cells : 0) + (g->normal ? (size_t)g->list->n * sizeof *g->normal : 0) +
            (g->plane[0] ? plane_count(g) * sizeof(real) : 0) + fast_grid_subs_memory(g);
 }

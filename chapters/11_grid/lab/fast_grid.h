@@ -35,6 +35,7 @@ typedef struct {
     bool cull;       /* test a surface only when the ray passes through its box */
     int split;       /* a cell that lists more surfaces than this gets a grid of its own; 0: one level */
     int prefetch;    /* FAST_GRID_PREFETCH_*: fetch the next cell and the surfaces to test ahead of their use */
+    bool normals;    /* keep each triangle's unit normal for the hit's record (24 bytes a surface) */
 } fast_grid_options;
 /* end snippet */
 
@@ -95,6 +96,8 @@ struct fast_grid {
                                * cells ahead in octant o holds nothing; 0 for a cell with
                                * surfaces.  NULL when leaping is off */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
+    vec3 *normal;             /* with the normals knob, per surface: a triangle's triangle_normal (the
+                               * record of a hit needs it; a division and a square root in a chain); else NULL */
     fast_grid *subs;          /* the grids of the cells that have their own (two levels), over the
                                * cell's box and the surfaces it lists; they have no subs themselves */
     long n_subs;
@@ -116,7 +119,7 @@ typedef struct {
 } fast_grid_counts;
 
 /* The default knobs: FAST_GRID_DEFAULT_DENSITY, FAST_GRID_DEFAULT_MAX_CELLS, mailboxing, leaping and culling
- * on, two levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell, prefetching by size. */
+ * on, two levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell, prefetching by size, no normals kept. */
 fast_grid_options fast_grid_default_options(void);
 
 /* Builds the grid of `list`, which must outlive it and not change.  Returns
@@ -140,5 +143,16 @@ bool fast_grid_intersect(const fast_grid *g, ray r, real t_min, real t_max, hit_
 
 /* The same, adding what the march did to *counts (when not NULL). */
 bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit, fast_grid_counts *counts);
+
+/* The hit alone, without its record: what a caller that only asks which
+ * surface, where along the ray and where on a triangle (beta, gamma) gets,
+ * as Embree's rtcIntersect1 returns it.  surface_hit_record makes the rest. */
+typedef struct {
+    int surface;
+    real t, beta, gamma;
+} fast_grid_hit;
+
+/* fast_grid_intersect's hit, without the record: the same surface, t, beta and gamma. */
+bool fast_grid_closest(const fast_grid *g, ray r, real t_min, real t_max, fast_grid_hit *hit);
 
 #endif

@@ -375,12 +375,12 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
 }
 /* end snippet */
 
-bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit, fast_grid_counts *counts)
+/* The search of ray r through g, to its end: the best hit is s->best (-1: none). */
+static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min, real t_max, fast_grid_counts *counts)
 {
-    search s;
-    search_start(&s, g->list, r, t_min, t_max);
+    search_start(s, g->list, r, t_min, t_max);
     for (long u = 0; u < g->n_unbinned; u++)
-        test_surface(&s, g->unbinned[u]);
+        test_surface(s, g->unbinned[u]);
     march_state ms;
     ms.cells = ms.culled = 0;
     ms.prefetch = g->prefetch;
@@ -389,20 +389,39 @@ bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_m
             ms.mailbox[b] = UINT32_MAX;
         ray_frame rf;
         frame_of(&rf, g, r);
-        march(g, &s, &rf, &ms);
+        march(g, s, &rf, &ms);
     }
     if (counts) {
         counts->cells += ms.cells;
-        counts->tests += s.tests;
+        counts->tests += s->tests;
         counts->culled += ms.culled;
     }
+}
+
+bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit, fast_grid_counts *counts)
+{
+    search s;
+    search_grid(g, &s, r, t_min, t_max, counts);
     if (s.best < 0)
         return false;
-    *hit = search_record(&s);
+    *hit = search_record(&s, g->normal);
     return true;
 }
 
 bool fast_grid_intersect(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit)
 {
     return fast_grid_intersect_counted(g, r, t_min, t_max, hit, NULL);
+}
+
+bool fast_grid_closest(const fast_grid *g, ray r, real t_min, real t_max, fast_grid_hit *hit)
+{
+    search s;
+    search_grid(g, &s, r, t_min, t_max, NULL);
+    if (s.best < 0)
+        return false;
+    hit->surface = s.best;
+    hit->t = s.best_t;
+    hit->beta = s.recorded ? s.hit.beta : s.tri.beta;
+    hit->gamma = s.recorded ? s.hit.gamma : s.tri.gamma;
+    return true;
 }

@@ -119,13 +119,15 @@ static inline void test_surface(search *s, uint32_t k)
 }
 /* end snippet */
 
-/* The best hit's record, as surface_intersect would have filled it in. */
-static inline hit_record search_record(const search *s)
+/* The best hit's record, as surface_intersect would have filled it in;
+ * `normal`: each triangle's triangle_normal, made at build time, or NULL. */
+static inline hit_record search_record(const search *s, const vec3 *normal)
 {
     hit_record h = s->hit;
     if (!s->recorded) {
         const surface *item = &s->list->items[s->best];
-        h = surface_hit_record(item, s->r, s->best_t, triangle_normal(&item->triangle), s->tri.beta, s->tri.gamma);
+        const vec3 n = normal ? normal[s->best] : triangle_normal(&item->triangle);
+        h = surface_hit_record(item, s->r, s->best_t, n, s->tri.beta, s->tri.gamma);
     }
     h.surface = s->best;
     return h;
