@@ -14,7 +14,10 @@
  * (from wall-clock time), the build times
  * and the memory of the grid and of Embree's BVH (both without the mesh
  * itself), the grid's knobs side by side, and how often the three agree on
- * the triangle hit.  The triangle test is the renderers' default, the
+ * the triangle hit.  The grid answers as rtcIntersect1 does, with the hit
+ * alone (its triangle, t and barycentric coordinates: fast_grid_closest),
+ * without the record that a renderer makes from it (the linear scan makes
+ * the record).  The triangle test is the renderers' default, the
  * watertight one (--cramer: chapter 03's Cramer's rule); the grid has two
  * levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell (--split N; 0: one) and prefetches by its
  * size (--prefetch, fast_grid.h).  The linear scan traces every K-th row only (K =
