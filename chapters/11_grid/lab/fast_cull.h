@@ -14,6 +14,10 @@
 
 #include "11_grid/lab/fast_grid.h"
 
+/* cull_span's clamps, -1/2, FAST_GRID_BOX_STEPS + 1/2 and FAST_GRID_BOX_STEPS - 1/2,
+ * defined in fast_cull.c (there: why). */
+extern const real fast_cull_span_clamp[3];
+
 /* snippet: cull */
 /* Whether the ray can meet the part of a surface's box inside the cell,
  * `box` (cull_box: steps of the cell's frame), at some t in (t_min, upper):
@@ -89,7 +93,6 @@ static inline void cull_cell(cull_frame *f, const fast_grid *g, const int i[3], 
 static inline void cull_span(const cull_frame *f, const fast_grid *g, const int i[3], const real p[3], const real d[3],
                              real reach, real d_max, real t_min, real upper, uint64_t *span_lo, uint64_t *span_hi)
 {
-    const real top = FAST_GRID_BOX_STEPS;
     real t_in = t_min, t_out = upper, origin[3];
 #pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
@@ -108,8 +111,16 @@ static inline void cull_span(const cull_frame *f, const fast_grid *g, const int 
         real q0 = (p[a] + t_in * d[a] - origin[a]) * per_unit, q1 = (p[a] + t_out * d[a] - origin[a]) * per_unit;
         real widen = 1 + rounding * per_unit;
         real q_lo = (q0 < q1 ? q0 : q1) - widen, q_hi = (q0 < q1 ? q1 : q0) + widen;
-        int span_a_lo = q_lo > 0 && q_lo < top ? (int)q_lo : q_lo >= top ? FAST_GRID_BOX_STEPS : 0; /* NaN: 0 */
-        int span_a_hi = q_hi < top - 1 && q_hi > 0 ? (int)q_hi + 1 : q_hi <= 0 ? 0 : FAST_GRID_BOX_STEPS; /* NaN: top */
+        /* lo_a: q_lo truncated, in 0 .. top (a NaN: 0); hi_a: q_hi truncated plus one, in 0 .. top
+         * (0 when q_hi <= 0; a NaN: top).  Clamped without branches (whether a side is clamped
+         * changes from cell to cell), to half a step beyond the ends, which truncates to the ends. */
+        const real below = fast_cull_span_clamp[0], beyond = fast_cull_span_clamp[1], last = fast_cull_span_clamp[2];
+        real lo_c = q_lo > below ? q_lo : below; /* also NaN */
+        lo_c = lo_c < beyond ? lo_c : beyond;
+        real hi_c = q_hi < last ? q_hi : last; /* also NaN */
+        const int above = hi_c > 0;
+        hi_c = hi_c > below ? hi_c : below;
+        const int span_a_lo = (int)lo_c, span_a_hi = ((int)hi_c + 1) & -above;
         packed_lo |= (uint64_t)span_a_lo << (8 * (3 + a));
         packed_hi |= (uint64_t)span_a_hi << (8 * a);
     }
