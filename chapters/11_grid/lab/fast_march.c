@@ -262,18 +262,15 @@ static inline void prefetch_surface(const surface_list *list, uint32_t k)
 
 static void march(const fast_grid *g, search *s, const ray_frame *rf, march_state *ms);
 
-/* One entry of the cell: skipped when its surface was tested already along
- * the ray, culled when the ray passes by its box in the cell, else tested. */
-static inline void consider(const fast_grid_entry *entry, const cull_frame *f, bool cull, bool use_mailbox,
-                            search *s, march_state *ms)
+/* Whether surface k was tested already along the ray (the mailbox). */
+static inline bool tested_already(const march_state *ms, bool use_mailbox, uint32_t k)
 {
-    const uint32_t k = entry->surface;
-    if (use_mailbox && ms->mailbox[k % MAILBOX] == k)
-        return; /* tested already along this ray */
-    if (cull && !passes_box(entry->box, f, s->t_min, s->upper)) {
-        ms->culled++;
-        return; /* the ray passes by its box in this cell */
-    }
+    return use_mailbox && ms->mailbox[k % MAILBOX] == k;
+}
+
+/* Surface k against the ray, noted in the mailbox. */
+static inline void test_noted(search *s, march_state *ms, bool use_mailbox, uint32_t k)
+{
     if (use_mailbox)
         ms->mailbox[k % MAILBOX] = k;
     test_surface(s, k);
@@ -285,8 +282,12 @@ static inline void consider(const fast_grid_entry *entry, const cull_frame *f, b
  * march reaches its cell.  A cell of SIFT_FROM entries or more goes in
  * batches of up to BATCH entries: first the entries whose boxes are not
  * beside the ray's span, gathered without branches (which entries pass is
- * different in every cell: a branch on it is often guessed wrong); then
- * each of those.  A cell of fewer entries tests them one by one without
+ * different in every cell: a branch on it is often guessed wrong); then, of
+ * those, the ones not tested already along the ray whose boxes the ray
+ * passes through (passes_box), gathered the same way; then each of those
+ * is tested, after a second look at its box if a hit in the batch has
+ * closed the window since.  A cell of fewer
+ * entries tests them one by one without
  * culling: most are large surfaces (a floor's triangles are listed in every
  * cell under it), culled again in every cell until tested once, where a
  * test settles them for the rest of the ray.  A cell with a grid of
@@ -310,7 +311,8 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
         for (uint32_t e = first; e < last && ms->prefetch; e++)
             prefetch_surface(s->list, refs[e].surface);
         for (uint32_t e = first; e < last; e++)
-            consider(&refs[e], f, false, use_mailbox, s, ms);
+            if (!tested_already(ms, use_mailbox, refs[e].surface))
+                test_noted(s, ms, use_mailbox, refs[e].surface);
         return;
     }
     uint64_t span_lo, span_hi;
@@ -329,8 +331,23 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
         ms->culled += batch - n_near;
         for (uint32_t j = 0; j < n_near && ms->prefetch; j++)
             prefetch_surface(s->list, near_ray[j]->surface);
-        for (uint32_t j = 0; j < n_near; j++)
-            consider(near_ray[j], f, cull, use_mailbox, s, ms);
+        uint32_t n_test = 0;
+        const real upper = s->upper;
+        for (uint32_t j = 0; j < n_near; j++) {
+            if (tested_already(ms, use_mailbox, near_ray[j]->surface))
+                continue;
+            const bool passes = passes_box(near_ray[j]->box, f, s->t_min, s->upper);
+            near_ray[n_test] = near_ray[j];
+            n_test += passes;
+            ms->culled += !passes;
+        }
+        for (uint32_t j = 0; j < n_test; j++) {
+            if (s->upper != upper && !passes_box(near_ray[j]->box, f, s->t_min, s->upper)) {
+                ms->culled++; /* a hit in this batch has closed the window before its box */
+                continue;
+            }
+            test_noted(s, ms, use_mailbox, near_ray[j]->surface);
+        }
     }
 }
 /* end snippet */
