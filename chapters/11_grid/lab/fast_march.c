@@ -329,11 +329,11 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
             n_near += !box_beside_span(refs[e].box, span_lo, span_hi);
         }
         ms->culled += batch - n_near;
-        for (uint32_t j = 0; j < n_near && ms->prefetch; j++)
-            prefetch_surface(s->list, near_ray[j]->surface);
         uint32_t n_test = 0;
         const real upper = s->upper;
         for (uint32_t j = 0; j < n_near; j++) {
+            if (ms->prefetch) /* here, not in a loop of its own: one loop's end fewer to guess */
+                prefetch_surface(s->list, near_ray[j]->surface);
             if (tested_already(ms, use_mailbox, near_ray[j]->surface))
                 continue;
             const bool passes = passes_box(near_ray[j]->box, f, s->t_min, s->upper);
