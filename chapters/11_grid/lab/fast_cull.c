@@ -6,7 +6,7 @@
  * bunny.  With the bounds as constants in the march's own file, gcc folds the truncation of a
  * clamped value into its result and turns each select into a branch to it; defined here, their
  * values are not known there, and the selects stay selects (maxsd and minsd on x86-64):
- * bench-grid's random rays 7 % more a second, its primary rays 3 % (speed8.md).
+ * bench-grid's random rays 5 to 7 % more a second, its primary rays 2 to 3 % (speed8.md).
  */
 #include "11_grid/lab/fast_cull.h"
 

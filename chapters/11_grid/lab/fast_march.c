@@ -298,11 +298,10 @@ static inline void test_noted(search *s, march_state *ms, bool use_mailbox, uint
  * those, the ones not tested already along the ray whose boxes the ray
  * passes through (passes_box), gathered the same way; then each of those
  * is tested, after a second look at its box if a hit in the batch has
- * closed the window since.  A cell of fewer
- * entries tests them one by one without
- * culling: most are large surfaces (a floor's triangles are listed in every
- * cell under it), culled again in every cell until tested once, where a
- * test settles them for the rest of the ray.  A cell with a grid of
+ * closed the window since.  A cell of fewer entries tests them one by one
+ * without culling: most are large surfaces (a floor's triangles are listed
+ * in every cell under it), culled again in every cell until tested once,
+ * where a test settles them for the rest of the ray.  A cell with a grid of
  * its own (two levels) lists that grid first: the ray marches through it,
  * then takes the cell's other entries, the surfaces that span the cell. */
 static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, search *s, const ray_frame *rf,
