@@ -96,7 +96,7 @@ struct fast_grid {
                                * cells ahead in octant o holds nothing; 0 for a cell with
                                * surfaces.  NULL when leaping is off */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
-    vec3 *normal;             /* with the normals knob, per surface: a triangle's triangle_normal (the
+    vec3 *normal;             /* with fast_grid_options.normals, per surface: a triangle's triangle_normal (the
                                * record of a hit needs it; a division and a square root in a chain); else NULL */
     fast_grid *subs;          /* the grids of the cells that have their own (two levels), over the
                                * cell's box and the surfaces it lists; they have no subs themselves */
