@@ -15,7 +15,7 @@ bench-grid:
 	@bench/grid/run.sh $(BENCH_GRID)
 
 # The reference (solution) stage objects of chapters 01-11, as the renderers link them, and the fast grid.
-BENCH_GRID_OBJS := $(call objs,bench/grid/grid_vs_embree.c) $(foreach c,$(call upto,11_grid),$(call stage_objs,$c,0)) \
+BENCH_GRID_OBJS := $(call objs,bench/grid/grid_vs_embree.c bench/grid/workload.c) $(foreach c,$(call upto,11_grid),$(call stage_objs,$c,0)) \
                    $(call lab_objs,11_grid) \
                    $(call objs,$(COMMON_SRC))
 

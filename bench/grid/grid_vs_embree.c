@@ -11,10 +11,11 @@
  * float) and the grid (in `real`) get the same numbers.  Prints million rays
  * per second for each on 1 thread (from the CPU time of that thread, which
  * on a shared machine counts only the time it ran), the 2-thread speed-ups
- * (from wall-clock time), the build times
- * and the memory of the grid and of Embree's BVH (both without the mesh
- * itself), the grid's knobs side by side, and how often the three agree on
- * the triangle hit.  The grid answers as rtcIntersect1 does, with the hit
+ * (from wall-clock time), the same by kind of ray (those that hit the
+ * mesh, those that cross its box and miss it, those that miss its box), the
+ * build times and the memory of the grid and of Embree's BVH (both without
+ * the mesh itself), the grid's knobs side by side, and how often the three
+ * agree on the triangle hit.  The grid answers as rtcIntersect1 does, with the hit
  * alone (its triangle, t and barycentric coordinates: fast_grid_closest),
  * without the record that a renderer makes from it (the linear scan makes
  * the record).  The triangle test is the renderers' default, the
@@ -35,8 +36,8 @@
 
 #include "04_many_shapes/closest_hit.h"
 #include "11_grid/lab/fast_grid.h"
-#include "mesh.h"
 #include "threads.h"
+#include "workload.h"
 
 static double now(void)
 {
@@ -44,162 +45,6 @@ static double now(void)
     clock_gettime(CLOCK_MONOTONIC, &ts);
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
-
-/* ---- the scene: float vertices and triangles ---------------------------------------- */
-
-typedef struct {
-    float *v; /* 3 per vertex */
-    unsigned *tri; /* 3 per triangle */
-    long n_v, n_tri;
-} float_mesh;
-
-static void load_obj(const char *path, float_mesh *fm)
-{
-    mesh m;
-    char err[512];
-    if (mesh_load(path, &m, err, sizeof err) != 0) {
-        fprintf(stderr, "grid_vs_embree: %s\n", err);
-        exit(1);
-    }
-    fm->n_v = m.n_positions;
-    fm->n_tri = m.n_faces;
-    fm->v = malloc((size_t)fm->n_v * 3 * sizeof *fm->v);
-    fm->tri = malloc((size_t)fm->n_tri * 3 * sizeof *fm->tri);
-    for (long k = 0; k < fm->n_v; k++) {
-        fm->v[3 * k] = (float)m.positions[k].x;
-        fm->v[3 * k + 1] = (float)m.positions[k].y;
-        fm->v[3 * k + 2] = (float)m.positions[k].z;
-    }
-    for (long k = 0; k < fm->n_tri; k++)
-        for (int j = 0; j < 3; j++)
-            fm->tri[3 * k + j] = (unsigned)m.faces[k].v[j];
-    mesh_free(&m);
-}
-
-/* A unit sphere of nu x nv quads in longitude and latitude: the pole rows
- * give one triangle per quad, the others two: 2 nu (nv - 1) triangles. */
-static void make_sphere(long wanted, float_mesh *fm)
-{
-    long nu = (long)sqrt((double)wanted), nv = wanted / (2 * nu) + 1;
-    fm->n_v = nu * (nv + 1);
-    fm->v = malloc((size_t)fm->n_v * 3 * sizeof *fm->v);
-    fm->tri = malloc((size_t)(2 * nu * nv) * 3 * sizeof *fm->tri);
-    const double pi = 3.14159265358979323846;
-    for (long j = 0; j <= nv; j++)
-        for (long i = 0; i < nu; i++) {
-            double theta = pi * (double)j / (double)nv, phi = 2 * pi * (double)i / (double)nu;
-            float *p = fm->v + 3 * (j * nu + i);
-            p[0] = (float)(sin(theta) * cos(phi));
-            p[1] = (float)cos(theta);
-            p[2] = (float)(sin(theta) * sin(phi));
-        }
-    fm->n_tri = 0;
-    for (long j = 0; j < nv; j++)
-        for (long i = 0; i < nu; i++) {
-            unsigned a = (unsigned)(j * nu + i), b = (unsigned)(j * nu + (i + 1) % nu);
-            unsigned c = a + (unsigned)nu, d = b + (unsigned)nu;
-            if (j != nv - 1) { /* not at the south pole, where c and d coincide */
-                unsigned *t = fm->tri + 3 * fm->n_tri++;
-                t[0] = a, t[1] = c, t[2] = d;
-            }
-            if (j != 0) { /* not at the north pole, where a and b coincide */
-                unsigned *t = fm->tri + 3 * fm->n_tri++;
-                t[0] = a, t[1] = d, t[2] = b;
-            }
-        }
-}
-
-static vec3 vertex(const float_mesh *fm, unsigned k)
-{
-    return vec3_make(fm->v[3 * k], fm->v[3 * k + 1], fm->v[3 * k + 2]);
-}
-
-/* ---- the rays ------------------------------------------------------------------------ */
-
-typedef struct {
-    float o[3], d[3];
-} float_ray;
-
-/* The bounding box of the mesh's vertices. */
-static void mesh_box(const float_mesh *fm, float lo[3], float hi[3])
-{
-    for (int a = 0; a < 3; a++) {
-        lo[a] = INFINITY;
-        hi[a] = -INFINITY;
-    }
-    for (long k = 0; k < fm->n_v; k++)
-        for (int a = 0; a < 3; a++) {
-            lo[a] = fminf(lo[a], fm->v[3 * k + a]);
-            hi[a] = fmaxf(hi[a], fm->v[3 * k + a]);
-        }
-}
-
-/* A pinhole camera looking at the mesh's box from the front and a little
- * above, its view filled by the mesh; directions rounded to float. */
-static float_ray *make_rays(const float_mesh *fm, int size)
-{
-    float lo[3], hi[3];
-    mesh_box(fm, lo, hi);
-    double c[3], radius = 0;
-    for (int a = 0; a < 3; a++) {
-        c[a] = 0.5 * ((double)lo[a] + hi[a]);
-        radius += 0.25 * ((double)hi[a] - lo[a]) * ((double)hi[a] - lo[a]);
-    }
-    radius = sqrt(radius);
-    const double dir[3] = {0.25, 0.3, 1}, len = sqrt(0.25 * 0.25 + 0.3 * 0.3 + 1);
-    double eye[3], w[3];
-    for (int a = 0; a < 3; a++) {
-        eye[a] = c[a] + 3 * radius * dir[a] / len;
-        w[a] = -dir[a] / len;
-    }
-    /* right = w x up (up = +y), up' = right x w */
-    double right[3] = {-w[2], 0, w[0]}, rl = sqrt(right[0] * right[0] + right[2] * right[2]);
-    for (int a = 0; a < 3; a++)
-        right[a] /= rl;
-    double up[3] = {right[1] * w[2] - right[2] * w[1], right[2] * w[0] - right[0] * w[2],
-                    right[0] * w[1] - right[1] * w[0]};
-    const double s = 0.8 * radius / (3 * radius); /* the half-width of the view at distance 1 */
-    float_ray *rays = malloc((size_t)size * size * sizeof *rays);
-    for (int j = 0; j < size; j++)
-        for (int i = 0; i < size; i++) {
-            double u = 2 * (i + 0.5) / size - 1, v = 1 - 2 * (j + 0.5) / size;
-            float_ray *r = &rays[(long)j * size + i];
-            for (int a = 0; a < 3; a++) {
-                r->o[a] = (float)eye[a];
-                r->d[a] = (float)(w[a] + s * (u * right[a] + v * up[a]));
-            }
-        }
-    return rays;
-}
-
-/* Incoherent rays: origins uniform in the mesh's box (many of them inside
- * the mesh, as the origins of shadow and reflected rays are), directions
- * uniform on the sphere; a fixed generator, so every run gets the same rays. */
-static float_ray *make_random_rays(const float_mesh *fm, long n)
-{
-    float lo[3], hi[3];
-    mesh_box(fm, lo, hi);
-    uint64_t state = 0x9E3779B97F4A7C15ull;
-    float_ray *rays = malloc((size_t)n * sizeof *rays);
-    for (long k = 0; k < n; k++) {
-        double u[5];
-        for (int q = 0; q < 5; q++) { /* xorshift64*, the top 53 bits */
-            state ^= state >> 12;
-            state ^= state << 25;
-            state ^= state >> 27;
-            u[q] = (double)((state * 0x2545F4914F6CDD1Dull) >> 11) * 0x1p-53;
-        }
-        double z = 2 * u[3] - 1, phi = 6.283185307179586 * u[4], s = sqrt(1 - z * z);
-        const double dir[3] = {s * cos(phi), s * sin(phi), z};
-        for (int a = 0; a < 3; a++) {
-            rays[k].o[a] = (float)(lo[a] + u[a] * ((double)hi[a] - lo[a]));
-            rays[k].d[a] = (float)dir[a];
-        }
-    }
-    return rays;
-}
-
-static ray to_ray(const float_ray *r) { return (ray){{r->o[0], r->o[1], r->o[2]}, {r->d[0], r->d[1], r->d[2]}}; }
 
 /* ---- Embree ---------------------------------------------------------------------------- */
 
@@ -257,6 +102,29 @@ static double cpu_now(void)
     return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
 }
 
+/* The triangle that ray *fr hits by `method`, or -1. */
+static inline int trace_one(const tracer *tr, int method, const float_ray *fr, struct RTCIntersectContext *context)
+{
+    if (method == EMBREE) {
+        struct RTCRayHit rh;
+        memset(&rh, 0, sizeof rh);
+        rh.ray.org_x = fr->o[0], rh.ray.org_y = fr->o[1], rh.ray.org_z = fr->o[2];
+        rh.ray.dir_x = fr->d[0], rh.ray.dir_y = fr->d[1], rh.ray.dir_z = fr->d[2];
+        rh.ray.tnear = 0;
+        rh.ray.tfar = INFINITY;
+        rh.ray.mask = (unsigned)-1;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(tr->scene, context, &rh);
+        return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? -1 : (int)rh.hit.primID;
+    }
+    if (method == GRID) {
+        fast_grid_hit hit;
+        return fast_grid_closest(tr->g, to_ray(fr), 0, REAL_INFINITY, &hit) ? hit.surface : -1;
+    }
+    hit_record hit;
+    return surfaces_intersect(tr->list, to_ray(fr), 0, REAL_INFINITY, &hit) ? hit.surface : -1;
+}
+
 /* Traces rows 0, step, 2 step, ... with `threads` threads; returns the
  * seconds: CPU seconds of the calling thread when `cpu` (1 thread only),
  * else wall-clock seconds. */
@@ -269,27 +137,7 @@ static double trace(const tracer *tr, int method, int step, int threads, bool cp
         rtcInitIntersectContext(&context);
         for (int i = 0; i < tr->size; i++) {
             long k = (long)j * tr->size + i;
-            const float_ray *fr = &tr->rays[k];
-            if (method == EMBREE) {
-                struct RTCRayHit rh;
-                memset(&rh, 0, sizeof rh);
-                rh.ray.org_x = fr->o[0], rh.ray.org_y = fr->o[1], rh.ray.org_z = fr->o[2];
-                rh.ray.dir_x = fr->d[0], rh.ray.dir_y = fr->d[1], rh.ray.dir_z = fr->d[2];
-                rh.ray.tnear = 0;
-                rh.ray.tfar = INFINITY;
-                rh.ray.mask = (unsigned)-1;
-                rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-                rtcIntersect1(tr->scene, &context, &rh);
-                tr->prim[k] = rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? -1 : (int)rh.hit.primID;
-            } else {
-                if (method == GRID) {
-                    fast_grid_hit hit;
-                    tr->prim[k] = fast_grid_closest(tr->g, to_ray(fr), 0, REAL_INFINITY, &hit) ? hit.surface : -1;
-                } else {
-                    hit_record hit;
-                    tr->prim[k] = surfaces_intersect(tr->list, to_ray(fr), 0, REAL_INFINITY, &hit) ? hit.surface : -1;
-                }
-            }
+            tr->prim[k] = trace_one(tr, method, &tr->rays[k], &context);
         }
     }
     return (cpu ? cpu_now() : now()) - start;
@@ -311,6 +159,65 @@ static double best_of(const tracer *tr, int method, int step, int threads, bool 
         t[r] = trace(tr, method, step, threads, cpu);
     qsort(t, (size_t)n, sizeof *t, compare_doubles);
     return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+}
+
+/* What ray k meets: 0 the mesh (Embree's answer), 1 the mesh's box but not
+ * the mesh, 2 not even its box (the slab test, in double on the float ray). */
+static int kind_of(const float_ray *r, int embree_prim, const float lo[3], const float hi[3])
+{
+    if (embree_prim >= 0)
+        return 0;
+    double t0 = 0, t1 = INFINITY;
+    for (int a = 0; a < 3; a++) {
+        double near = ((double)lo[a] - r->o[a]) / r->d[a], far = ((double)hi[a] - r->o[a]) / r->d[a];
+        t0 = fmax(t0, fmin(near, far));
+        t1 = fmin(t1, fmax(near, far));
+    }
+    return t0 <= t1 ? 1 : 2;
+}
+
+/* Each kind of ray (kind_of) traced alone, in the rays' order, 1 thread,
+ * the grid and Embree in turn, medians of `runs`: where the grid's time goes
+ * against Embree's. */
+static void print_by_kind(const tracer *tr, const int *embree_prim, const float_mesh *fm, long n_rays, int runs)
+{
+    static const char *const names[3] = {"hit the mesh", "cross its box, miss it", "miss its box"};
+    float lo[3], hi[3];
+    mesh_box(fm, lo, hi);
+    float_ray *chosen = malloc((size_t)n_rays * sizeof *chosen);
+    int n_runs = runs < 15 ? runs : 15;
+    printf("  by kind of ray (1 thread): share of the rays, grid and Embree ns per ray, grid / Embree;"
+           " the grid per ray: cells, tests, culled\n");
+    for (int kind = 0; kind < 3 && chosen; kind++) {
+        long n = 0;
+        for (long k = 0; k < n_rays; k++)
+            if (kind_of(&tr->rays[k], embree_prim[k], lo, hi) == kind)
+                chosen[n++] = tr->rays[k];
+        if (n == 0)
+            continue;
+        double t[2][15];
+        for (int r = 0; r < n_runs; r++)
+            for (int method = GRID; method <= EMBREE; method++) {
+                struct RTCIntersectContext context;
+                rtcInitIntersectContext(&context);
+                double start = cpu_now();
+                for (long k = 0; k < n; k++)
+                    trace_one(tr, method, &chosen[k], &context);
+                t[method - GRID][r] = cpu_now() - start;
+            }
+        qsort(t[0], (size_t)n_runs, sizeof t[0][0], compare_doubles);
+        qsort(t[1], (size_t)n_runs, sizeof t[1][0], compare_doubles);
+        double grid = t[0][n_runs / 2], embree = t[1][n_runs / 2];
+        fast_grid_counts counts = {0, 0, 0};
+        for (long k = 0; k < n; k++) {
+            hit_record hit;
+            fast_grid_intersect_counted(tr->g, to_ray(&chosen[k]), 0, REAL_INFINITY, &hit, &counts);
+        }
+        printf("    %-24s %5.1f %%  %7.1f  %7.1f  %5.2f  %6.2f  %6.2f  %6.2f\n", names[kind],
+               100.0 * (double)n / (double)n_rays, 1e9 * grid / (double)n, 1e9 * embree / (double)n, embree / grid,
+               (double)counts.cells / (double)n, (double)counts.tests / (double)n, (double)counts.culled / (double)n);
+    }
+    free(chosen);
 }
 
 int main(int argc, char **argv)
@@ -362,7 +269,7 @@ int main(int argc, char **argv)
     surface_list_init(&list, SPHERE_ROBUST, test); /* the renderers' watertight test, or --cramer the lecture's */
     for (long k = 0; k < fm.n_tri; k++) {
         const unsigned *t = fm.tri + 3 * k;
-        triangle tri = {vertex(&fm, t[0]), vertex(&fm, t[1]), vertex(&fm, t[2])};
+        triangle tri = {mesh_vertex(&fm, t[0]), mesh_vertex(&fm, t[1]), mesh_vertex(&fm, t[2])};
         if (surface_list_add_triangle(&list, tri, 0, 0) < 0) {
             fprintf(stderr, "grid_vs_embree: out of memory\n");
             return 1;
@@ -422,6 +329,8 @@ int main(int argc, char **argv)
     printf("  %-34s %8.3f Mrays/s  (2 threads: speed-up %.2f)\n", "Embree 3 rtcIntersect1", mrays / embree1,
            embree_wall1 / embree_wall2);
     printf("  grid / Embree: %.2f\n", embree1 / grid1);
+    tr.prim = prim[GRID];
+    print_by_kind(&tr, prim[EMBREE], &fm, n_rays, runs);
     if (linear_rows > 0) {
         tr.prim = prim[LINEAR];
         double linear = trace(&tr, LINEAR, linear_rows, 1, true);
