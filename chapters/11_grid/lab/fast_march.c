@@ -33,6 +33,15 @@ typedef struct {
     real next[3]; /* t of the next boundary crossing along each axis; +infinity when step_a is 0 */
     long cell;    /* i[0] + n_x (i[1] + n_y i[2]): the cell's place in g->start */
     long move[3]; /* step_a stride_a: what a step along a adds to cell, in this grid */
+    /* For a leap (dda_leap), the ray in this grid's cells: the point at t, in
+     * cells from the low corner and moved back by its rounding, is
+     * at0_a + t per_t_a - |t| back_per_t_a: enter's back (reach + 16
+     * REAL_EPSILON |t| d_max, in length) made per cell once per grid, so that
+     * a leap takes two products and two sums after t_exit where
+     * (p + t d - lo - step back) / cell took five operations in a row, on the
+     * chain from one leap to the next (speed9.md).  Its rounding, a few
+     * REAL_EPSILON (|p - lo| + |t d|) / cell, is within that back. */
+    real at0[3], per_t[3], back_per_t[3];
 } dda;
 /* end snippet */
 
@@ -119,10 +128,10 @@ static inline int first_cell(const fast_grid *g, int a, real f) { return index_i
  * holds nothing.  Leave the cube in one step: along the axis whose far face
  * of the cube the ray crosses first, the new index is just past that face,
  * exactly; along the others it is the cell of the exit point, moved back
- * along the ray by the rounding of that point (`back`, in units of length)
- * and kept inside the cube and the grid, so that rounding can only land the
- * ray a cell short (in the empty cube), never a cell too far.  False when
- * the ray leaves the grid through the cube's face. */
+ * along the ray by its rounding (at0, per_t, back_per_t: enter's) and kept
+ * inside the cube and the grid, so that rounding can only land the ray a
+ * cell short (in the empty cube), never a cell too far.  False when the ray
+ * leaves the grid through the cube's face. */
 static inline bool dda_leap(const fast_grid *g, dda *m, int side, const ray_frame *rf)
 {
     const int *step = rf->step, *ahead = rf->ahead;
@@ -143,13 +152,12 @@ static inline bool dda_leap(const fast_grid *g, dda *m, int side, const ray_fram
     const int beyond = far_end[axis] + step[axis];
     if (beyond < 0 || beyond >= g->n[axis])
         return false; /* the cube's face is beyond the grid's */
-    const real back = rf->reach + 16 * REAL_EPSILON * real_abs(t_exit) * rf->d_max;
 #pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         if (a == axis) {
             m->i[a] = beyond;
         } else if (step[a]) { /* in the cube and in the grid */
-            real f = (p[a] + t_exit * rf->d[a] - g->lo_a[a] - (real)step[a] * back) * g->inv_cell_a[a];
+            real f = m->at0[a] + t_exit * m->per_t[a] - real_abs(t_exit) * m->back_per_t[a];
             int lowest = step[a] > 0 ? m->i[a] : far_end[a] > 0 ? far_end[a] : 0;
             int highest = step[a] < 0 ? m->i[a] : far_end[a] < g->n[a] - 1 ? far_end[a] : g->n[a] - 1;
             m->i[a] = index_in(f, lowest, highest);
@@ -245,6 +253,9 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
 #pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         m->move[a] = f->step[a] * g->stride[a];
+        m->at0[a] = (f->p[a] - lo[a] - (real)f->step[a] * f->reach) * g->inv_cell_a[a];
+        m->per_t[a] = f->d[a] * g->inv_cell_a[a];
+        m->back_per_t[a] = (real)f->step[a] * (16 * REAL_EPSILON * f->d_max) * g->inv_cell_a[a];
         real x = f->inv_d[a] != 0 ? f->p[a] + t0 * f->d[a] : f->p[a];
         m->i[a] = first_cell(g, a, (x - lo[a] - (real)f->step[a] * back) * g->inv_cell_a[a]);
         m->next[a] = f->step[a] ? crossing(g, a, m->i[a] + f->ahead[a], f->p, f->inv_d) : REAL_INFINITY;
