@@ -146,10 +146,11 @@ static inline bool dda_leap(const fast_grid *g, dda *m, int side, const ray_fram
         t_face[a] = step[a] ? crossing(g, a, far_end[a] + ahead[a], p, inv_d) : REAL_INFINITY;
     }
     const int axis = t_face[0] <= t_face[1] ? (t_face[0] <= t_face[2] ? 0 : 2) : (t_face[1] <= t_face[2] ? 1 : 2);
-    const real t_exit = t_face[axis];
+    /* t_face[axis] and the index past the face by selects: indexed by axis, both arrays stay in memory */
+    const real t_exit = axis == 0 ? t_face[0] : axis == 1 ? t_face[1] : t_face[2];
     if (!(t_exit < REAL_INFINITY)) /* no face ahead (or NaN): nothing to leap to */
         return false;
-    const int beyond = far_end[axis] + step[axis];
+    const int beyond = axis == 0 ? far_end[0] + step[0] : axis == 1 ? far_end[1] + step[1] : far_end[2] + step[2];
     if (beyond < 0 || beyond >= g->n[axis])
         return false; /* the cube's face is beyond the grid's */
 #pragma GCC unroll 3
