@@ -77,7 +77,7 @@ static void test_mailbox_counts(void **state)
     surface_list_free(&list);
 }
 
-/* The leap's cubes: for every cell and octant, empty[8 c + o] is the side of
+/* The leap's cubes: for every cell and octant, empty[o n_cells + c] is the side of
  * the largest cube of empty cells with c as its corner and lying ahead of c
  * in octant o (cells beyond the grid count as empty, capped at 255 or at the
  * largest n_a + 1 if less), found
@@ -131,9 +131,9 @@ static void test_empty_cubes(void **state)
                     if (side > largest) /* reaches past the grid on every axis: the largest side kept */
                         side = largest < 255 ? largest + 1 : 255;
                     long c = i + (long)g.n[0] * (j + (long)g.n[1] * k);
-                    if (g.empty[8 * c + o] != side)
+                    if (g.empty[o * g.n_cells + c] != side)
                         fail_msg("cell (%d, %d, %d), octant %d: empty cube of side %d expected, the grid says %d", i,
-                                 j, k, o, side, g.empty[8 * c + o]);
+                                 j, k, o, side, g.empty[o * g.n_cells + c]);
                     leaps += side >= 2;
                 }
     assert_true(leaps > 0); /* the scene leaves room to leap */

@@ -4,7 +4,7 @@
 
 #include "11_grid/lab/fast_build.h"
 
-/* empty[8 c + o]: for a ray in cell c heading into octant o (bit 0: x
+/* empty[o n_cells + c]: for a ray in cell c heading into octant o (bit 0: x
  * decreasing, bit 1: y, bit 2: z), the side s of the largest cube of empty
  * cells that has c as its corner and lies ahead of c in that octant: cells
  * i .. i + (s - 1) sgn_x along x, and so along y and z.  0 for a cell with
@@ -61,7 +61,7 @@ bool fast_grid_empty_distances(fast_grid *g)
                     const uint8_t l = v < least[f0] ? v : least[f0];
                     v = occupied[c] ? 0 : (uint8_t)(l + 1);
                     s[f0] = v;
-                    g->empty[8 * c + o] = v;
+                    g->empty[(long)o * g->n_cells + c] = v;
                 }
             }
     }

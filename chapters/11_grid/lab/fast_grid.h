@@ -91,10 +91,11 @@ struct fast_grid {
      * in increasing index. */
     uint32_t *start;          /* n_x n_y n_z + 1 offsets */
     fast_grid_entry *refs;         /* the entries: surface indices and their boxes in the cell */
-    uint8_t *empty;           /* per cell c and octant o (bit 0: x decreasing, 1: y, 2: z),
-                               * empty[8 c + o]: the cube of cells from c up to empty[8 c + o] - 1
-                               * cells ahead in octant o holds nothing; 0 for a cell with
-                               * surfaces.  NULL when leaping is off */
+    uint8_t *empty;           /* per octant o (bit 0: x decreasing, 1: y, 2: z) and cell c,
+                               * empty[o n_cells + c]: the cube of cells from c up to that many - 1
+                               * cells ahead in octant o holds nothing; 0 for a cell with surfaces.
+                               * A table per octant, so that a ray reads one (a cache line holds
+                               * 64 cells' worth for it).  NULL when leaping is off */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
     vec3 *normal;             /* with fast_grid_options.normals, per surface: a triangle's triangle_normal (the
                                * record of a hit needs it; a division and a square root in a chain); else NULL */

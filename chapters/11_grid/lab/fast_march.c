@@ -386,6 +386,7 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
         return;
     cull_frame f;
     f.started = false;
+    const uint8_t *empty = g->empty ? g->empty + rf->octant * g->n_cells : NULL; /* the ray's octant's */
     for (;;) {
         ms->cells++;
         /* The cell ends where the ray crosses its nearest boundary, along axis a. */
@@ -394,8 +395,8 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
             /* the neighbour across it: its list's start and its empty cubes, fetched during this visit */
             const long next = m.cell + m.move[a];
             __builtin_prefetch(&g->start[next]);
-            if (g->empty)
-                __builtin_prefetch(&g->empty[8 * next]);
+            if (empty)
+                __builtin_prefetch(&empty[next]);
         }
         visit_cell(g, &m, &f, s, rf, ms);
         /* A hit no farther than that boundary is the closest: every surface
@@ -404,8 +405,8 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
          * march on. */
         if (s->best_t <= m.next[a] - rf->slack[a])
             return;
-        if (g->empty && g->empty[8 * m.cell + rf->octant] >= 2) { /* a cube of empty cells ahead: leap over it */
-            if (!dda_leap(g, &m, g->empty[8 * m.cell + rf->octant], rf))
+        if (empty && empty[m.cell] >= 2) { /* a cube of empty cells ahead: leap over it */
+            if (!dda_leap(g, &m, empty[m.cell], rf))
                 return;
             continue;
         }
