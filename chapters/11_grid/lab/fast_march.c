@@ -398,15 +398,18 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
             if (empty)
                 __builtin_prefetch(&empty[next]);
         }
-        visit_cell(g, &m, &f, s, rf, ms);
+        /* the cube of empty cells ahead (0: the cell lists surfaces; with no leap table, visit every cell) */
+        const int side = empty ? empty[m.cell] : 0;
+        if (side == 0) /* read the cell's list only then: an empty cell's may be a cache miss */
+            visit_cell(g, &m, &f, s, rf, ms);
         /* A hit no farther than that boundary is the closest: every surface
          * before it along the ray lies in this cell or an earlier one, all
          * tested.  A hit beyond it may yet lose to a surface of a later cell:
          * march on. */
         if (s->best_t <= m.next[a] - rf->slack[a])
             return;
-        if (empty && empty[m.cell] >= 2) { /* a cube of empty cells ahead: leap over it */
-            if (!dda_leap(g, &m, empty[m.cell], rf))
+        if (side >= 2) { /* a cube of empty cells ahead: leap over it */
+            if (!dda_leap(g, &m, side, rf))
                 return;
             continue;
         }
