@@ -35,9 +35,9 @@ typedef struct {
     long move[3]; /* step_a stride_a: what a step along a adds to cell, in this grid */
     /* For a leap (dda_leap), the ray in this grid's cells: the point at t, in
      * cells from the low corner and moved back by its rounding, is
-     * at0_a + t per_t_a - |t| back_per_t_a: enter's back (reach + 16
-     * REAL_EPSILON |t| d_max, in length) made per cell once per grid, so that
-     * a leap takes two products and two sums after t_exit where
+     * at0_a + t per_t_a - |t| back_per_t_a, where back (as in enter: reach +
+     * 16 REAL_EPSILON |t| d_max, a length) is divided by the cell once per
+     * grid, so that a leap takes two products and two sums after t_exit where
      * (p + t d - lo - step back) / cell took five operations in a row, on the
      * chain from one leap to the next (speed9.md).  Its rounding, a few
      * REAL_EPSILON (|p - lo| + |t d|) / cell, is within that back. */
