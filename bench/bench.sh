@@ -341,8 +341,8 @@ grid_log=""
 if grep -qs '^bench-grid:' Makefile bench/grid/*.mk; then
     note "make bench-grid"
     grid_log=$work/grid.log
-    # The bunny only, one run per timing (bench/grid/run.sh): the whole of make bench-grid takes
-    # four minutes or more on the shared machine.
+    # The bunny only, one run per timing (bench/grid/run.sh): the whole of make bench-grid (the
+    # sphere's 20 grids of the knob rows among it) takes longer.
     if BENCH_GRID_QUICK=1 make --no-print-directory bench-grid >"$grid_log" 2>&1; then
         note "bench-grid: done"
     else
