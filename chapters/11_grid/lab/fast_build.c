@@ -406,6 +406,10 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
     int status = fast_grid_fill(g, NULL, list->n, opt.leap, err, err_size);
     if (status == 0)
         status = fast_grid_split(g, opt, err, err_size);
+    if (status == 0 && !fast_grid_pack(g)) {
+        snprintf(err, err_size, "grid: out of memory");
+        status = -1;
+    }
     if (status == 0 && opt.normals) { /* each triangle's normal, as the hit's record has it */
         g->normal = calloc((size_t)list->n, sizeof *g->normal);
         if (!g->normal)
@@ -432,6 +436,7 @@ void fast_grid_free(fast_grid *g)
 {
     free(g->start);
     free(g->refs);
+    free(g->lists);
     free(g->unbinned);
     free(g->empty);
     free(g->normal);
@@ -445,6 +450,7 @@ void fast_grid_free(fast_grid *g)
     g->plane[0] = g->plane[1] = g->plane[2] = NULL;
     g->start = g->unbinned = NULL;
     g->refs = NULL;
+    g->lists = NULL;
     g->empty = NULL;
     g->normal = NULL;
     g->n_cells = g->n_refs = g->n_unbinned = 0;
@@ -453,7 +459,7 @@ void fast_grid_free(fast_grid *g)
 size_t fast_grid_memory(const fast_grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
-    return sizeof *g + (cells + (size_t)g->n_unbinned) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof *g->refs +
+    return sizeof *g + (cells + (size_t)g->n_unbinned) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof(fast_grid_entry) +
            (g->empty ? 8 * (size_t)g->n_cells : 0) + (g->normal ? (size_t)g->list->n * sizeof *g->normal : 0) +
            (g->plane[0] ? plane_count(g) * sizeof(real) : 0) + fast_grid_subs_memory(g);
 }

@@ -33,6 +33,10 @@ bool fast_grid_empty_distances(fast_grid *g);
  * problem in err. */
 int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_size);
 
+/* The lists of g and of its sub-grids packed for the march (fast_pack.c):
+ * g->lists from g->refs, in the same memory.  False when out of memory. */
+bool fast_grid_pack(fast_grid *g);
+
 /* The memory of g's sub-grids. */
 size_t fast_grid_subs_memory(const fast_grid *g);
 

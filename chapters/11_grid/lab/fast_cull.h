@@ -3,14 +3,17 @@
  * Each entry of a cell's list carries the part of its surface's box inside
  * the cell, in bytes (fast_build.c's cull_box).  Once per cell the march
  * computes the span of the ray in the same units (cull_span); a box beside
- * that span is passed by with one word test (box_beside_span), and the few
- * left get the slab test (passes_box) before the surface test.  Their
+ * that span is passed by with a test on two words (box_near_span, four
+ * entries at once), and the few left get the slab test (passes_box) before
+ * the surface test.  Their
  * loops over the three axes are unrolled as fast_march.c's are, all but
  * cull_start's: unrolled, it makes gcc warn that the fields it sets may be
  * read unset (-Wmaybe-uninitialized, which does not follow `started`).
  */
 #ifndef CH11_LAB_FAST_CULL_H
 #define CH11_LAB_FAST_CULL_H
+
+#include <string.h>
 
 #include "11_grid/lab/fast_grid.h"
 
@@ -87,11 +90,11 @@ static inline void cull_cell(cull_frame *f, const fast_grid *g, const int i[3], 
  * ends before the span or starts after it, along any axis, is passed by: a
  * cheaper test in integers that settles most boxes before passes_box.  A
  * NaN leaves the span whole.  The span is returned packed for
- * box_beside_span: hi_a in byte a of *span_hi, lo_a in byte 3 + a of
- * *span_lo.  It costs as much as a few passes_box: the march computes it
- * only for a cell that lists many surfaces. */
+ * box_near_span, as the lists pack the boxes: lo_a in byte a of *span_lo,
+ * hi_a in byte a of *span_hi.  It costs as much as a few passes_box: the
+ * march computes it only for a cell that lists many surfaces. */
 static inline void cull_span(const cull_frame *f, const fast_grid *g, const int i[3], const real p[3], const real d[3],
-                             real reach, real d_max, real t_min, real upper, uint64_t *span_lo, uint64_t *span_hi)
+                             real reach, real d_max, real t_min, real upper, uint32_t *span_lo, uint32_t *span_hi)
 {
     real t_in = t_min, t_out = upper, origin[3];
 #pragma GCC unroll 3
@@ -104,7 +107,7 @@ static inline void cull_span(const cull_frame *f, const fast_grid *g, const int 
     }
     const real t_abs = real_abs(t_in) > real_abs(t_out) ? real_abs(t_in) : real_abs(t_out);
     const real rounding = reach + 16 * REAL_EPSILON * t_abs * d_max;
-    uint64_t packed_lo = 0, packed_hi = 0;
+    uint32_t packed_lo = 0, packed_hi = 0;
 #pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         real per_unit = g->per_unit[a];
@@ -121,29 +124,50 @@ static inline void cull_span(const cull_frame *f, const fast_grid *g, const int 
         const int above = hi_c > 0;
         hi_c = hi_c > below ? hi_c : below;
         const int span_a_lo = (int)lo_c, span_a_hi = ((int)hi_c + 1) & -above;
-        packed_lo |= (uint64_t)span_a_lo << (8 * (3 + a));
-        packed_hi |= (uint64_t)span_a_hi << (8 * a);
+        packed_lo |= (uint32_t)span_a_lo << (8 * a);
+        packed_hi |= (uint32_t)span_a_hi << (8 * a);
     }
     *span_lo = packed_lo;
     *span_hi = packed_hi;
 }
 
-/* Whether the box of an entry lies beside the span along some axis: its
- * high side below the span's low end (hi_a < lo_a), or its low side above
- * the span's high end (box lo_a > span hi_a).  All six comparisons at once,
- * bytewise in one 64-bit word ("SIMD within a register"): with x and y
- * bytes of 0 .. 127, byte (x | 128) - y has its top bit set exactly when
- * x >= y, and never borrows from the next byte.  The box's bytes are lo_x,
- * lo_y, lo_z, hi_x, hi_y, hi_z: bytes 0-2 compare span hi >= box lo, bytes
- * 3-5 box hi >= span lo. */
-static inline bool box_beside_span(const uint8_t box[8], uint64_t span_lo, uint64_t span_hi)
+/* All ones when an entry's box is not beside the span along any axis, else
+ * zero: its high side at or above the span's low end (hi_a >= lo_a) and its
+ * low side at or below the span's high end, for the three axes at once
+ * ("SIMD within a register"): with x and y bytes of 0 .. 127, byte (x | 128)
+ * - y keeps its top bit exactly when x >= y, and never borrows from the next
+ * byte.  The box comes as the lists pack it (fast_pack.c): its low sides in
+ * bytes 0-2 of `lo`, its high sides in those of `hi`.  No branch, so that
+ * the march's loop over a cell's boxes runs four of them at once. */
+static inline uint32_t box_near_span(uint32_t lo, uint32_t hi, uint32_t span_lo, uint32_t span_hi)
 {
-    const uint64_t low3 = 0xFFFFFFull, high3 = 0xFFFFFF000000ull, tops = 0x808080808080ull;
-    /* byte k of the box in byte k of b: compilers make this one load */
-    uint64_t b = (uint64_t)box[0] | (uint64_t)box[1] << 8 | (uint64_t)box[2] << 16 | (uint64_t)box[3] << 24 |
-                 (uint64_t)box[4] << 32 | (uint64_t)box[5] << 40 | (uint64_t)box[6] << 48 | (uint64_t)box[7] << 56;
-    uint64_t x = (b & high3) | span_hi, y = (b & low3) | span_lo;
-    return (((x | tops) - y) & tops) != tops;
+    const uint32_t tops = 0x808080u;
+    const uint32_t both = ((hi | tops) - span_lo) & ((span_hi | tops) - lo) & tops;
+    return 0u - (uint32_t)(both == tops);
+}
+
+/* An entry's box as cull_box wrote it (lo x, y, z, hi x, y, z, two zeros),
+ * for passes_box, from its two packed words: their value lo | hi << 24 in
+ * memory, which is those bytes in that order on a little-endian processor,
+ * and reversed on a big-endian one. */
+typedef struct {
+    uint8_t side[8];
+} box_sides;
+
+static inline box_sides unpack_box(uint32_t lo, uint32_t hi)
+{
+    const uint64_t value = lo | (uint64_t)hi << 24;
+    const uint16_t one = 1;
+    uint8_t first;
+    memcpy(&first, &one, 1); /* 1 on a little-endian processor (a test the compiler settles) */
+    box_sides b;
+    memcpy(b.side, &value, sizeof value);
+    for (int k = 0; k < 4 && first != 1; k++) {
+        const uint8_t swap = b.side[k];
+        b.side[k] = b.side[7 - k];
+        b.side[7 - k] = swap;
+    }
+    return b;
 }
 
 #endif

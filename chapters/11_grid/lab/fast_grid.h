@@ -61,13 +61,14 @@ enum { FAST_GRID_PREFETCH_AUTO, FAST_GRID_PREFETCH_ON, FAST_GRID_PREFETCH_OFF };
 #define FAST_GRID_BOX_STEPS 127
 
 /* snippet: grid */
-/* One entry of a cell's list: 12 bytes, read in order with the cell. */
+/* One entry of a cell's list as the build writes it: 12 bytes.  The grid,
+ * once built, keeps its lists packed for the march (`lists`). */
 typedef struct {
     uint32_t surface; /* index into the surface list */
     uint8_t box[8];   /* the part of the surface's box (widened by the margin) inside the cell,
                        * in 127ths of the cell's frame (the cell widened by the margin),
-                       * rounded outwards (lo x, y, z, hi x, y, z, then two zeros, so that
-                       * the march reads all eight at once); zeros when culling is off */
+                       * rounded outwards (lo x, y, z, hi x, y, z, then two zeros); zeros
+                       * when culling is off */
 } fast_grid_entry;
 
 typedef struct fast_grid fast_grid;
@@ -86,11 +87,15 @@ struct fast_grid {
     int beyond;               /* the largest side of a leap's cube: 255, or the largest n_a + 1 if less */
     int n[3];                 /* cells along x, y and z */
     long stride[3];           /* what a step of one cell along x, y, z adds to a cell's place: 1, n_x, n_x n_y */
-    /* The cells' lists, flat (compressed sparse rows): the surfaces of cell
-     * c = i + n_x (j + n_y k) are refs[start[c]] .. refs[start[c + 1] - 1],
-     * in increasing index. */
+    /* The cells' lists, flat (compressed sparse rows): cell c = i + n_x (j +
+     * n_y k) lists n = start[c + 1] - start[c] surfaces, in increasing index,
+     * in a block of 3 n words at lists + 3 start[c]: the n surfaces, then
+     * their boxes' low sides, then their high sides, a box's three sides in
+     * one word (x | y << 8 | z << 16, fast_pack.c). */
     uint32_t *start;          /* n_x n_y n_z + 1 offsets */
-    fast_grid_entry *refs;         /* the entries: surface indices and their boxes in the cell */
+    uint32_t *lists;          /* the blocks; NULL while the grid is built */
+    fast_grid_entry *refs;    /* while the grid is built: the entries, refs[start[c]] .. refs[start[c + 1] - 1];
+                               * NULL after (their memory holds `lists`) */
     uint8_t *empty;           /* per octant o (bit 0: x decreasing, 1: y, 2: z) and cell c,
                                * empty[o n_cells + c]: the cube of cells from c up to that many - 1
                                * cells ahead in octant o holds nothing; 0 for a cell with surfaces.
@@ -106,7 +111,7 @@ struct fast_grid {
     real margin;              /* every surface's box is widened by this before it is binned */
     real scale;               /* the largest coordinate of the box, for the rounding bounds */
     bool mailbox;
-    bool cull;                /* refs[].box is filled in */
+    bool cull;                /* the boxes are filled in */
     bool prefetch;            /* the march prefetches (the top grid's choice holds for its subs) */
     size_t peak_bytes;        /* the most memory the build held at once */
 };

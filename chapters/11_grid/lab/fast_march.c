@@ -305,72 +305,84 @@ static inline void test_noted(search *s, march_state *ms, bool use_mailbox, uint
  * (t_min, best): a hit beyond this cell is kept too, and counts once the
  * march reaches its cell.  A cell of SIFT_FROM entries or more goes in
  * batches of up to BATCH entries: first the entries whose boxes are not
- * beside the ray's span, gathered without branches (which entries pass is
- * different in every cell: a branch on it is often guessed wrong); then, of
- * those, the ones not tested already along the ray whose boxes the ray
- * passes through (passes_box), gathered the same way; then each of those
- * is tested, after a second look at its box if a hit in the batch has
- * closed the window since.  A cell of fewer entries tests them one by one
- * without culling: most are large surfaces (a floor's triangles are listed
- * in every cell under it), culled again in every cell until tested once,
- * where a test settles them for the rest of the ray.  A cell with a grid of
- * its own (two levels) lists that grid first: the ray marches through it,
- * then takes the cell's other entries, the surfaces that span the cell. */
+ * beside the ray's span, all the batch's boxes at once (box_near_span
+ * without branches, which the compiler's vectoriser runs four entries to an
+ * instruction), a bit each; then, of those, the ones not tested already
+ * along the ray whose boxes the ray passes through (passes_box), gathered
+ * without a branch on the test (which entries pass is different in every
+ * cell: a branch on it is often guessed wrong); then each of those is
+ * tested, after a second look at its box if a hit in the batch has closed
+ * the window since.  A cell of fewer entries tests them one by one without
+ * culling: most are large surfaces (a floor's triangles are listed in every
+ * cell under it), culled again in every cell until tested once, where a
+ * test settles them for the rest of the ray.  A cell with a grid of its own
+ * (two levels) lists that grid first: the ray marches through it, then
+ * takes the cell's other entries, the surfaces that span the cell. */
 static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, search *s, const ray_frame *rf,
                               march_state *ms)
 {
-    uint32_t first = g->start[m->cell];
-    const uint32_t last = g->start[m->cell + 1];
-    if (first == last)
+    const uint32_t first = g->start[m->cell], n = g->start[m->cell + 1] - first;
+    if (n == 0)
         return;
-    const fast_grid_entry *const refs = g->refs;
-    if (refs[first].surface >= FAST_GRID_SUB) {
-        march(&g->subs[refs[first].surface - FAST_GRID_SUB], s, rf, ms);
-        if (++first == last)
+    /* the cell's block: its surfaces, its boxes' low sides, their high sides (fast_grid.h) */
+    const uint32_t *const surface = g->lists + 3 * (size_t)first, *const lo = surface + n, *const hi = lo + n;
+    uint32_t j = 0;
+    if (surface[0] >= FAST_GRID_SUB) {
+        march(&g->subs[surface[0] - FAST_GRID_SUB], s, rf, ms);
+        if (++j == n)
             return; /* no surface spans the cell beside its grid */
     }
     const bool cull = g->cull, use_mailbox = g->mailbox;
-    if (!cull || last - first < SIFT_FROM) {
-        for (uint32_t e = first; e < last && ms->prefetch; e++)
-            prefetch_surface(s->list, refs[e].surface);
-        for (uint32_t e = first; e < last; e++)
-            if (!tested_already(ms, use_mailbox, refs[e].surface))
-                test_noted(s, ms, use_mailbox, refs[e].surface);
+    if (!cull || n - j < SIFT_FROM) {
+        for (uint32_t e = j; e < n && ms->prefetch; e++)
+            prefetch_surface(s->list, surface[e]);
+        for (; j < n; j++)
+            if (!tested_already(ms, use_mailbox, surface[j]))
+                test_noted(s, ms, use_mailbox, surface[j]);
         return;
     }
-    uint64_t span_lo, span_hi;
+    uint32_t span_lo, span_hi;
     if (!f->started)
         cull_start(f, g, rf->d, rf->inv_d);
     cull_cell(f, g, m->i, rf->p, rf->inv_d, rf->slack);
     cull_span(f, g, m->i, rf->p, rf->d, rf->reach, rf->d_max, s->t_min, s->upper, &span_lo, &span_hi);
-    for (uint32_t e = first; e < last;) {
-        const uint32_t end = last - e > BATCH ? e + BATCH : last, batch = end - e;
-        const fast_grid_entry *near_ray[BATCH];
-        uint32_t n_near = 0;
-        for (; e < end; e++) {
-            near_ray[n_near] = &refs[e];
-            n_near += !box_beside_span(refs[e].box, span_lo, span_hi);
-        }
-        ms->culled += batch - n_near;
-        uint32_t n_test = 0;
+    /* bit k of a batch's mask stands for its entry k (SSE2 has no shift by a count per lane: a table) */
+    static const uint32_t bit[BATCH] = {
+        1u << 0,  1u << 1,  1u << 2,  1u << 3,  1u << 4,  1u << 5,  1u << 6,  1u << 7,  1u << 8,  1u << 9,  1u << 10,
+        1u << 11, 1u << 12, 1u << 13, 1u << 14, 1u << 15, 1u << 16, 1u << 17, 1u << 18, 1u << 19, 1u << 20, 1u << 21,
+        1u << 22, 1u << 23, 1u << 24, 1u << 25, 1u << 26, 1u << 27, 1u << 28, 1u << 29, 1u << 30, 1u << 31};
+    for (; j < n;) {
+        const uint32_t end = n - j > BATCH ? j + BATCH : n;
+        const int batch = (int)(end - j);
+        const uint32_t *const batch_lo = lo + j, *const batch_hi = hi + j;
+        uint32_t near = 0; /* the entries whose boxes are not beside the span */
+#pragma omp simd reduction(| : near)
+        for (int k = 0; k < batch; k++)
+            near |= bit[k] & box_near_span(batch_lo[k], batch_hi[k], span_lo, span_hi);
+        uint32_t to_test[BATCH], n_near = 0, n_test = 0;
         const real upper = s->upper;
-        for (uint32_t j = 0; j < n_near; j++) {
+        for (; near; near &= near - 1) {
+            const uint32_t e = j + (uint32_t)__builtin_ctz(near);
+            n_near++;
             if (ms->prefetch) /* here, not in a loop of its own: one loop's end fewer to guess */
-                prefetch_surface(s->list, near_ray[j]->surface);
-            if (tested_already(ms, use_mailbox, near_ray[j]->surface))
+                prefetch_surface(s->list, surface[e]);
+            if (tested_already(ms, use_mailbox, surface[e]))
                 continue;
-            const bool passes = passes_box(near_ray[j]->box, f, s->t_min, s->upper);
-            near_ray[n_test] = near_ray[j];
+            const bool passes = passes_box(unpack_box(lo[e], hi[e]).side, f, s->t_min, s->upper);
+            to_test[n_test] = e;
             n_test += passes;
             ms->culled += !passes;
         }
-        for (uint32_t j = 0; j < n_test; j++) {
-            if (s->upper != upper && !passes_box(near_ray[j]->box, f, s->t_min, s->upper)) {
+        ms->culled += (uint32_t)batch - n_near;
+        for (uint32_t k = 0; k < n_test; k++) {
+            const uint32_t e = to_test[k];
+            if (s->upper != upper && !passes_box(unpack_box(lo[e], hi[e]).side, f, s->t_min, s->upper)) {
                 ms->culled++; /* a hit in this batch has closed the window before its box */
                 continue;
             }
-            test_noted(s, ms, use_mailbox, near_ray[j]->surface);
+            test_noted(s, ms, use_mailbox, surface[e]);
         }
+        j = end;
     }
 }
 /* end snippet */
