@@ -5,10 +5,10 @@
  * computes the span of the ray in the same units (cull_span); a box beside
  * that span is passed by with a test on two words (box_near_span, four
  * entries at once), and the few left get the slab test (passes_box) before
- * the surface test.  Their
- * loops over the three axes are unrolled as fast_march.c's are, all but
- * cull_start's: unrolled, it makes gcc warn that the fields it sets may be
- * read unset (-Wmaybe-uninitialized, which does not follow `started`).
+ * the surface test.  Their loops over the three axes are unrolled as
+ * fast_march.c's are, all but cull_start's: unrolled, it makes gcc warn
+ * that the fields it sets may be read unset (-Wmaybe-uninitialized, which
+ * does not follow `started`).
  */
 #ifndef CH11_LAB_FAST_CULL_H
 #define CH11_LAB_FAST_CULL_H

@@ -4,7 +4,8 @@
  * overlaps and marches the ray cell by cell.  This grid answers the same
  * query, bit for bit, with more machinery: a triangle is listed only in the
  * cells it touches (a separating-axis test), each entry carries the part of
- * the surface's box inside its cell in bytes (culling), a mailbox skips
+ * the surface's box inside its cell in bytes (culling, four entries at a
+ * time: a cell's list is packed in rows, fast_pack.c), a mailbox skips
  * surfaces already tested along the ray, a ray in an empty cell leaps
  * over the largest cube of empty cells ahead of it in one step (Cohen and
  * Sheffer's proximity clouds, a cube per octant of directions), and a cell
