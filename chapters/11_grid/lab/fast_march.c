@@ -354,6 +354,8 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
     for (; j < n;) {
         const uint32_t end = n - j > BATCH ? j + BATCH : n;
         const int batch = (int)(end - j);
+        /* through pointers to the batch: indexed lo[j + k], an unsigned sum that may wrap, the loads
+         * are not consecutive to the vectoriser */
         const uint32_t *const batch_lo = lo + j, *const batch_hi = hi + j;
         uint32_t near = 0; /* the entries whose boxes are not beside the span */
 #pragma omp simd reduction(| : near)
