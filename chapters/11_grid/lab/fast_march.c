@@ -114,7 +114,7 @@ static inline int index_in(real f, int lowest, int highest)
      * float, highest + 1/2 rounds to highest + 1 from 2^23 on: the last
      * clamp, in integers, keeps the index in range there. */
     real low = (real)lowest, high = (real)highest + (real)0.5;
-    f = f >= low ? f : low; /* also NaN */
+    f = f > low ? f : low; /* also NaN; `>`, not `>=`, is the one instruction maxsd */
     f = f < high ? f : high;
     const int i = (int)f;
     return i < highest ? i : highest;
@@ -142,7 +142,7 @@ static inline bool dda_leap(const fast_grid *g, dda *m, int side, const ray_fram
     int far_end[3]; /* the index of the cube's last cell along each axis, the cell before its far face */
 #pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
-        far_end[a] = m->i[a] + step[a] * (side - 1);
+        far_end[a] = step[a] > 0 ? m->i[a] + (side - 1) : m->i[a] - (side - 1); /* no product on the leaps' chain */
         t_face[a] = step[a] ? crossing(g, a, far_end[a] + ahead[a], p, inv_d) : REAL_INFINITY;
     }
     const int axis = t_face[0] <= t_face[1] ? (t_face[0] <= t_face[2] ? 0 : 2) : (t_face[1] <= t_face[2] ? 1 : 2);
@@ -425,6 +425,8 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
         if (side >= 2) { /* a cube of empty cells ahead: leap over it */
             if (!dda_leap(g, &m, side, rf))
                 return;
+            if (ms->prefetch) /* the list's start of the cell it lands in, fetched while its leap table is read */
+                __builtin_prefetch(&g->start[m.cell]);
             continue;
         }
         if (!dda_step(g, &m, a, rf))
