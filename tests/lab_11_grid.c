@@ -66,7 +66,7 @@ static void test_mailbox_counts(void **state)
         assert_int_equal(1, g.n[2]);
         /* along +x at y = 0.6, z = 0.45: through all 10 cells, missing everything */
         ray r = {{-1, (real)0.6, (real)0.45}, {1, 0, 0}};
-        fast_grid_counts counts = {0, 0, 0};
+        fast_grid_counts counts = {0, 0, 0, 0};
         hit_record hit;
         assert_false(fast_grid_intersect_counted(&g, r, 0, REAL_INFINITY, &hit, &counts));
         assert_int_equal(10, counts.cells);
@@ -121,6 +121,7 @@ static void test_empty_cubes(void **state)
                  g.n[0], g.n[1], g.n[2]);
     const int largest = g.n[0] > g.n[1] ? (g.n[0] > g.n[2] ? g.n[0] : g.n[2]) : (g.n[1] > g.n[2] ? g.n[1] : g.n[2]);
     long leaps = 0;
+    int from[3] = {-1, -1, -1}; /* a cell with an empty cube of side 3 or more ahead in octant 0 */
     for (int k = 0; k < g.n[2]; k++)
         for (int j = 0; j < g.n[1]; j++)
             for (int i = 0; i < g.n[0]; i++)
@@ -135,8 +136,32 @@ static void test_empty_cubes(void **state)
                         fail_msg("cell (%d, %d, %d), octant %d: empty cube of side %d expected, the grid says %d", i,
                                  j, k, o, side, g.empty[o * g.n_cells + c]);
                     leaps += side >= 2;
+                    if (o == 0 && side >= 3 && from[0] < 0)
+                        from[0] = i, from[1] = j, from[2] = k;
                 }
     assert_true(leaps > 0); /* the scene leaves room to leap */
+    assert_true(from[0] >= 0);
+    /* A ray from that cell's centre into octant 0 leaps at once; without the
+     * leap table it steps, and finds the same answer. */
+    ray r = {vec3_add(g.lo, vec3_make(((real)from[0] + (real)0.5) * g.cell.x, ((real)from[1] + (real)0.5) * g.cell.y,
+                                      ((real)from[2] + (real)0.5) * g.cell.z)),
+             {1, (real)1.1, (real)1.3}};
+    fast_grid stepping;
+    opt.leap = false;
+    build_fast(&stepping, &list, opt);
+    fast_grid_counts leaping_counts = {0, 0, 0, 0}, stepping_counts = {0, 0, 0, 0};
+    hit_record leaping_hit, stepping_hit;
+    bool leaping_found = fast_grid_intersect_counted(&g, r, 0, REAL_INFINITY, &leaping_hit, &leaping_counts);
+    bool stepping_found = fast_grid_intersect_counted(&stepping, r, 0, REAL_INFINITY, &stepping_hit, &stepping_counts);
+    assert_true(leaping_counts.leaps >= 1);
+    assert_int_equal(0, stepping_counts.leaps);
+    assert_true(leaping_counts.cells < stepping_counts.cells);
+    assert_int_equal(stepping_found, leaping_found);
+    if (leaping_found) {
+        assert_int_equal(stepping_hit.surface, leaping_hit.surface);
+        assert_true(stepping_hit.t == leaping_hit.t);
+    }
+    fast_grid_free(&stepping);
     fast_grid_free(&g);
     surface_list_free(&list);
 }

@@ -178,7 +178,9 @@ static int kind_of(const float_ray *r, int embree_prim, const float lo[3], const
 
 /* Each kind of ray (kind_of) traced alone, in the rays' order, 1 thread,
  * the grid and Embree in turn, medians of `runs`: where the grid's time goes
- * against Embree's. */
+ * against Embree's.  Then each ray traced twice in a row: the second trace
+ * finds what the first read in the caches, so twice less once is a ray's
+ * time at warm caches, and once less that its wait for memory. */
 static void print_by_kind(const tracer *tr, const int *embree_prim, const float_mesh *fm, long n_rays, int runs)
 {
     static const char *const names[3] = {"hit the mesh", "cross its box, miss it", "miss its box"};
@@ -186,8 +188,8 @@ static void print_by_kind(const tracer *tr, const int *embree_prim, const float_
     mesh_box(fm, lo, hi);
     float_ray *chosen = malloc((size_t)n_rays * sizeof *chosen);
     int n_runs = runs < 15 ? runs : 15;
-    printf("  by kind of ray (1 thread): share of the rays, grid and Embree ns per ray, grid / Embree;"
-           " the grid per ray: cells, tests, culled\n");
+    printf("  by kind of ray (1 thread): share of the rays, grid and Embree ns per ray, grid / Embree, the same at"
+           " warm caches; the grid per ray: cells, leaps, tests, culled\n");
     for (int kind = 0; kind < 3 && chosen; kind++) {
         long n = 0;
         for (long k = 0; k < n_rays; k++)
@@ -195,27 +197,36 @@ static void print_by_kind(const tracer *tr, const int *embree_prim, const float_
                 chosen[n++] = tr->rays[k];
         if (n == 0)
             continue;
-        double t[2][15];
+        double t[2][2][15]; /* [once, twice][grid, Embree][run] */
         for (int r = 0; r < n_runs; r++)
-            for (int method = GRID; method <= EMBREE; method++) {
-                struct RTCIntersectContext context;
-                rtcInitIntersectContext(&context);
-                double start = cpu_now();
-                for (long k = 0; k < n; k++)
-                    trace_one(tr, method, &chosen[k], &context);
-                t[method - GRID][r] = cpu_now() - start;
+            for (int times = 1; times <= 2; times++)
+                for (int method = GRID; method <= EMBREE; method++) {
+                    struct RTCIntersectContext context;
+                    rtcInitIntersectContext(&context);
+                    double start = cpu_now();
+                    for (long k = 0; k < n; k++)
+                        for (int again = 0; again < times; again++)
+                            trace_one(tr, method, &chosen[k], &context);
+                    t[times - 1][method - GRID][r] = cpu_now() - start;
+                }
+        double median[2][2];
+        for (int times = 0; times < 2; times++)
+            for (int m = 0; m < 2; m++) {
+                qsort(t[times][m], (size_t)n_runs, sizeof t[times][m][0], compare_doubles);
+                median[times][m] = t[times][m][n_runs / 2];
             }
-        qsort(t[0], (size_t)n_runs, sizeof t[0][0], compare_doubles);
-        qsort(t[1], (size_t)n_runs, sizeof t[1][0], compare_doubles);
-        double grid = t[0][n_runs / 2], embree = t[1][n_runs / 2];
-        fast_grid_counts counts = {0, 0, 0};
+        double grid = median[0][0], embree = median[0][1];
+        double grid_warm = median[1][0] - grid, embree_warm = median[1][1] - embree;
+        fast_grid_counts counts = {0, 0, 0, 0};
         for (long k = 0; k < n; k++) {
             hit_record hit;
             fast_grid_intersect_counted(tr->g, to_ray(&chosen[k]), 0, REAL_INFINITY, &hit, &counts);
         }
-        printf("    %-24s %5.1f %%  %7.1f  %7.1f  %5.2f  %6.2f  %6.2f  %6.2f\n", names[kind],
+        printf("    %-24s %5.1f %%  %7.1f  %7.1f  %5.2f  %7.1f  %7.1f  %5.2f  %6.2f  %6.2f  %6.2f  %6.2f\n", names[kind],
                100.0 * (double)n / (double)n_rays, 1e9 * grid / (double)n, 1e9 * embree / (double)n, embree / grid,
-               (double)counts.cells / (double)n, (double)counts.tests / (double)n, (double)counts.culled / (double)n);
+               1e9 * grid_warm / (double)n, 1e9 * embree_warm / (double)n, embree_warm / grid_warm,
+               (double)counts.cells / (double)n, (double)counts.leaps / (double)n, (double)counts.tests / (double)n,
+               (double)counts.culled / (double)n);
     }
     free(chosen);
 }
@@ -378,7 +389,7 @@ int main(int argc, char **argv)
             tr.g = &h;
             tr.prim = prim[GRID];
             double t = best_of(&tr, GRID, 1, 1, true, runs);
-            fast_grid_counts counts = {0, 0, 0};
+            fast_grid_counts counts = {0, 0, 0, 0};
             for (long r = 0; r < n_rays; r += 7) {
                 hit_record hit;
                 fast_grid_intersect_counted(&h, to_ray(&rays[r]), 0, REAL_INFINITY, &hit, &counts);

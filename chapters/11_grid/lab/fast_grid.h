@@ -121,6 +121,7 @@ struct fast_grid {
 /* What a march did: added to by fast_grid_intersect_counted. */
 typedef struct {
     uint64_t cells;  /* cells visited */
+    uint64_t leaps;  /* of those, the cells left by a leap over a cube of empty cells */
     uint64_t tests;  /* surface_intersect calls */
     uint64_t culled; /* surfaces of those cells whose boxes the ray passes by */
 } fast_grid_counts;

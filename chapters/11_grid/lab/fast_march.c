@@ -273,7 +273,7 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
 /* What one ray's march keeps besides the search: the mailbox, the counts. */
 typedef struct {
     uint32_t mailbox[MAILBOX];
-    uint64_t cells, culled;
+    uint64_t cells, leaps, culled;
     bool prefetch; /* the top grid's */
 } march_state;
 
@@ -427,6 +427,7 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
         if (s->best_t <= m.next[a] - rf->slack[a])
             return;
         if (side >= 2) { /* a cube of empty cells ahead: leap over it */
+            ms->leaps++;
             if (!dda_leap(g, &m, side, rf))
                 return;
             if (ms->prefetch) /* the list's start of the cell it lands in, fetched while its leap table is read */
@@ -446,7 +447,7 @@ static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min,
     for (long u = 0; u < g->n_unbinned; u++)
         test_surface(s, g->unbinned[u]);
     march_state ms;
-    ms.cells = ms.culled = 0;
+    ms.cells = ms.leaps = ms.culled = 0;
     ms.prefetch = g->prefetch;
     if (g->n_cells) {
         for (int b = 0; b < MAILBOX; b++)
@@ -457,6 +458,7 @@ static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min,
     }
     if (counts) {
         counts->cells += ms.cells;
+        counts->leaps += ms.leaps;
         counts->tests += s->tests;
         counts->culled += ms.culled;
     }

@@ -75,6 +75,7 @@ static void add_tally(query_tally *to, const query_tally *t)
 {
     to->queries += t->queries;
     to->counts.cells += t->counts.cells;
+    to->counts.leaps += t->counts.leaps;
     to->counts.tests += t->counts.tests;
     to->counts.culled += t->counts.culled;
 }
