@@ -318,16 +318,18 @@ int main(int argc, char **argv)
     /* 1 thread by CPU time; the speed-up of 2 threads by wall-clock time, 1 against 2. */
     /* The 1-thread runs alternate grid and Embree, so that both see the same
      * load on the shared machine; medians of each. */
-    double grid_runs[15], embree_runs[15];
+    double grid_runs[15], embree_runs[15], pair_ratio[15];
     int n_runs = runs < 15 ? runs : 15;
     for (int k = 0; k < n_runs; k++) {
         tr.prim = prim[GRID];
         grid_runs[k] = trace(&tr, GRID, 1, 1, true);
         tr.prim = prim[EMBREE];
         embree_runs[k] = trace(&tr, EMBREE, 1, 1, true);
+        pair_ratio[k] = embree_runs[k] / grid_runs[k]; /* one run of each, back to back */
     }
     qsort(grid_runs, (size_t)n_runs, sizeof *grid_runs, compare_doubles);
     qsort(embree_runs, (size_t)n_runs, sizeof *embree_runs, compare_doubles);
+    qsort(pair_ratio, (size_t)n_runs, sizeof *pair_ratio, compare_doubles);
     double grid1 = grid_runs[n_runs / 2], embree1 = embree_runs[n_runs / 2];
     tr.prim = prim[GRID];
     double grid_wall1 = best_of(&tr, GRID, 1, 1, false, runs), grid_wall2 = best_of(&tr, GRID, 1, 2, false, runs);
@@ -339,7 +341,10 @@ int main(int argc, char **argv)
            grid_wall1 / grid_wall2);
     printf("  %-34s %8.3f Mrays/s  (2 threads: speed-up %.2f)\n", "Embree 3 rtcIntersect1", mrays / embree1,
            embree_wall1 / embree_wall2);
-    printf("  grid / Embree: %.2f\n", embree1 / grid1);
+    /* The ratio of the medians, and how far the ratio moves from one pair of runs to the next (the
+     * machine's load and memory move the grid's runs, which wait on memory more, more than Embree's). */
+    printf("  grid / Embree: %.2f  (pair by pair, one run of each in turn: %.3f to %.3f)\n", embree1 / grid1,
+           pair_ratio[0], pair_ratio[n_runs - 1]);
     tr.prim = prim[GRID];
     print_by_kind(&tr, prim[EMBREE], &fm, n_rays, runs);
     if (linear_rows > 0) {
