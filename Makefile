@@ -566,7 +566,7 @@ REPO_ONLY = $(if $(HANDOUT),@: ,@)
 COPY_ONLY = $(if $(HANDOUT),@,@: )
 help:
 	@echo "make                 build every chapter and render its built-in scene into $(OUT)/ (each build variant"
-	@echo "                     has its own image folder, as it has its own build folder: REAL=float, out-float/)"
+	@echo "                     has its own image folder, as it has its own build folder: REAL=float, out$(compiler)-float$(if $(filter 1,$(STUDENT)),-student)/)"
 	$(REPO_ONLY)echo "make STUDENT=1       the same from the student's files in chapters/ (into build-student/)"
 	$(COPY_ONLY)echo "                     (here from your files in chapters/, into build-student/ and out-student/)"
 	$(COPY_ONLY)echo "make STUDENT=0       the reference renderers (from reference/) into build/, their images into out/"

@@ -79,7 +79,8 @@ with `REFERENCE=`.  `make grade` always links the reference for the other chapte
 chapter depend on that chapter's files only.  `make test` runs every suite on all your files at once (it
 fails until every chapter is done).  Where the text below says `make` renders into `out/`, in this copy
 your images go to `out-student/` and your renderers to `build-student/`; `out/` and `build/` hold the
-reference's, once `make STUDENT=0` has built them.
+reference's, once `make STUDENT=0` has built them.  So do the other builds' folders: `make REAL=float`
+here builds into `build-float-student/` and renders into `out-float-student/`.
 
 TEXT
 )

@@ -144,7 +144,8 @@ sys.exit(1)' || problem "oracle: its server does not answer"
         "$json" 2>"$work/$name.jsonerr") || score="invalid"
     # what the grader said first: a refusal, a failed answer, a limit
     notes=$(grep -ohE 'refused: it holds [^;]*|grade: (failed|crashed|timed out|not run)[^\\"]*|memory: got [0-9]+ MiB' \
-        "$work/$name.out" "$json" 2>/dev/null | head -n 1 | cut -c 1-70)
+        "$work/$name.out" "$json" 2>/dev/null | head -n 1 |
+        awk '{ if (length($0) > 70) { s = substr($0, 1, 70); sub(/ [^ ]*$/, "", s); $0 = s " ..." } print }')
     [ "$score" = invalid ] && notes="results.json is not valid UTF-8 JSON: $(tail -n 1 "$work/$name.jsonerr")"
     printf '%-18s %6s %8s %6s  %s\n' "$name" "$score" "$expected" "${took}s" "$notes"
     [ "$score" = "$expected" ] || problem "$name scored $score, expected $expected"

@@ -1,6 +1,6 @@
 /* sphere.c - chapter 02: the ray-sphere intersection, two ways.
  *
- * Notation (README.md, equations (1)-(5)): the ray is p + t d, the sphere has
+ * Notation (README.md, equations (1)-(6)): the ray is p + t d, the sphere has
  * centre c and radius R, and f = p - c is the ray's origin seen from the
  * centre.  Putting x = p + t d into (x - c).(x - c) - R^2 = 0 gives
  *     A t^2 + 2 B t + C = 0,   A = d.d,  B = d.f,  C = f.f - R^2      (1)
