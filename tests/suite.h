@@ -80,6 +80,17 @@ typedef struct {
 #undef fail_msg
 #define fail_msg(...) suite_fail_msg(__FILE__, __LINE__, __VA_ARGS__)
 void suite_fail_msg(const char *file, int line, const char *format, ...) CMOCKA_PRINTF_ATTRIBUTE(3, 4);
+/* assert_true for a student's result, with fail_msg's message when it does
+ * not hold: it writes assert_true's record for the grader ("true V", on a
+ * pass too), so that a check the student's code skips is missed there; a
+ * bare `if (!holds) fail_msg(...)` writes none. */
+#define assert_true_why(holds, ...)                                                                                \
+    do {                                                                                                           \
+        const int holds_ = (holds) != 0;                                                                           \
+        answers_record("true %d", holds_);                                                                         \
+        if (!holds_)                                                                                               \
+            fail_msg(__VA_ARGS__);                                                                                 \
+    } while (0)
 #define assert_close_why(expected, actual, tolerance, input, hint, suspects, n)                                     \
     check_close_why((double)(expected), (double)(actual), (double)(tolerance), input, hint, suspects, n, __FILE__, \
                     __LINE__)

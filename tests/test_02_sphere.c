@@ -14,6 +14,7 @@
 
 /* Simple cases (t exact in a few operations): a handful of roundings. */
 #define TOL(x) (8 * REAL_EPSILON * (x))
+#define N(a) (sizeof(a) / sizeof((a)[0]))
 
 static const sphere unit = {{0, 0, 0}, 1};
 
@@ -23,7 +24,16 @@ static ray make_ray(real px, real py, real pz, real dx, real dy, real dz)
 }
 
 static const char *describe_ray(const sphere *s, ray r);
+static const char *describe_intersect(const sphere *s, ray r, real t_min, real t_max, sphere_formula f);
 static const char *formula_name(sphere_formula f);
+
+/* What *t holds before sphere_intersect: a hit that leaves it so is named, not printed as a t got. */
+#define UNWRITTEN ((real)12345)
+
+static const char *describe_t_got(real t)
+{
+    return t == UNWRITTEN ? "true, but *t not written" : describe("t = %.17g", (double)t);
+}
 
 #define NO_HIT_HINT "the roots (run test_roots_*), or the window: the nearest root with t_min < t < t_max (test_nearest_root)"
 
@@ -34,8 +44,7 @@ static void expect_hit_why(const sphere *s, ray r, real t_min, real t_max, spher
 {
     real t = -1;
     vec3 n = {0, 0, 0};
-    const char *in = describe("sphere_intersect(%s, (%g, %g), %s)", describe_ray(s, r), (double)t_min, (double)t_max,
-                              formula_name(formula));
+    const char *in = describe_intersect(s, r, t_min, t_max, formula);
     if (!sphere_intersect(s, r, t_min, t_max, formula, &t, &n))
         fail_msg("%s\n    expected a hit at t = %.17g\n    got      no hit\n    likely mistake: %s", in,
                  (double)t_expected, no_hit);
@@ -53,13 +62,50 @@ static void expect_hit(const sphere *s, ray r, real t_min, real t_max, sphere_fo
 
 static void expect_miss(const sphere *s, ray r, real t_min, real t_max, sphere_formula formula)
 {
-    real t = 12345;
+    real t = UNWRITTEN;
     vec3 n = {0, 0, 0};
     if (sphere_intersect(s, r, t_min, t_max, formula, &t, &n))
-        fail_msg("sphere_intersect(%s, (%g, %g), %s)\n    expected no hit\n    got      t = %.17g\n"
+        fail_msg("%s\n    expected no hit\n    got      %s\n"
                  "    likely mistake: a negative discriminant is a miss, and a root at or outside (t_min, t_max) is "
                  "no hit",
-                 describe_ray(s, r), (double)t_min, (double)t_max, formula_name(formula), (double)t);
+                 describe_intersect(s, r, t_min, t_max, formula), describe_t_got(t));
+}
+
+/* The root sphere_intersect should take in (t_min, inf): (2) in long double
+ * on the same data, for messages only; NaN when the line misses. */
+static double root_expected(const sphere *s, ray r, real t_min)
+{
+    long double fx = (long double)r.p.x - s->center.x, fy = (long double)r.p.y - s->center.y,
+                fz = (long double)r.p.z - s->center.z;
+    long double A = (long double)r.d.x * r.d.x + (long double)r.d.y * r.d.y + (long double)r.d.z * r.d.z;
+    long double B = r.d.x * fx + r.d.y * fy + r.d.z * fz;
+    long double C = fx * fx + fy * fy + fz * fz - (long double)s->radius * s->radius;
+    long double disc = B * B - A * C;
+    if (!(disc >= 0))
+        return NAN;
+    long double near = (-B - sqrtl(disc)) / A, far = (-B + sqrtl(disc)) / A;
+    return (double)(near > t_min ? near : far);
+}
+
+/* assert_true(sphere_intersect(s, r, 0, inf, f, t, n)), the same record; a
+ * miss fails naming the input, the hit expected and the likely mistake
+ * no_hit.  Returns the input, for the checks of the hit. */
+static const char *intersect_hit(const sphere *s, ray r, sphere_formula f, const char *no_hit, real *t, vec3 *n)
+{
+    const char *in = describe_intersect(s, r, 0, REAL_INFINITY, f);
+    assert_true_why(sphere_intersect(s, r, 0, REAL_INFINITY, f, t, n),
+                    "%s\n    expected a hit at t = %.17g\n    got      no hit\n    likely mistake: %s", in,
+                    root_expected(s, r, 0), no_hit);
+    return in;
+}
+
+/* n is a unit vector: |n| = 1 within 4 eps. */
+static void expect_unit_normal(const char *in, vec3 n, real radius)
+{
+    const suspect unnormalized[] = {{radius, "not normalized: n = (x - c) / |x - c|, and |x - c| = R here"}};
+    assert_close_why(1, vec3_length(n), 4 * REAL_EPSILON, describe("%s: |n|", in),
+                     "n must be a unit vector: divide x - c by its computed length |x - c|", unnormalized,
+                     N(unnormalized));
 }
 
 /* ---- the cases, for either formula ---------------------------------------- */
@@ -87,12 +133,20 @@ static void tangent_case(sphere_formula f)
     expect_miss(&unit, make_ray(1 + (real)0x1p-10, 0, 5, 0, 0, -1), 0, REAL_INFINITY, f);
     real t, x = 1 - (real)0x1p-10;
     vec3 n;
-    assert_true(sphere_intersect(&unit, make_ray(x, 0, 5, 0, 0, -1), 0, REAL_INFINITY, f, &t, &n));
+    const char *in = intersect_hit(&unit, make_ray(x, 0, 5, 0, 0, -1), f,
+                                   "the ray passes 2^-10 inside the silhouette, so disc = 1 - x^2 = 0.00195 > 0 "
+                                   "((2), or (4) with l.l = x^2): a hit; a fixed epsilon on the discriminant refuses "
+                                   "it, the miss test is !(disc >= 0)",
+                                   &t, &n);
     /* Near a tangent the root is sensitive: an error e in the discriminant
      * moves t by e / (2 sqrt(disc)).  Both formulas' discriminants err by at
      * most about 4 eps (B^2 + |A C|) = 4 eps (25 + 25) here. */
     real disc = 1 - x * x;
-    assert_close(5 - real_sqrt(disc), t, TOL(5) + 200 * REAL_EPSILON / (2 * real_sqrt(disc)));
+    const suspect far[] = {{5 + real_sqrt(disc), "took the far root: the nearest root inside the window is the hit"}};
+    assert_close_why(5 - real_sqrt(disc), t, TOL(5) + 200 * REAL_EPSILON / (2 * real_sqrt(disc)), describe("%s: t", in),
+                     f == SPHERE_TEXTBOOK ? "the near root (-B - sqrt(disc)) / A of (2), disc = B^2 - A C"
+                                          : "the discriminant A (R^2 - l.l) of (3)-(4) and the stable pair (5)",
+                     far, N(far));
 }
 
 /* From the centre the near root is t = -1, behind p: the hit is the far root
@@ -123,6 +177,14 @@ static void window_case(sphere_formula f)
     expect_miss(&unit, r, 4.5, 5.5, f);                               /* between the roots */
 }
 
+/* The likely mistake behind a miss of a ray whose d is not a unit vector. */
+static const char *non_unit_d(vec3 d)
+{
+    return describe("d is not a unit vector here (|d| = %g): A = d.d (not 1) in (1) and (2), t_m = -B / A in (3), "
+                    "disc = A (R^2 - l.l) in (4); or a fixed epsilon on the discriminant, which scales with |d|^2",
+                    (double)vec3_length(d));
+}
+
 /* d -> alpha d is the same ray with t -> t / alpha (lecture, "Ray: a half line"). */
 static void scaled_case(sphere_formula f)
 {
@@ -130,14 +192,23 @@ static void scaled_case(sphere_formula f)
     const vec3 p = {4, 1, 3}, d = {-0.6, -0.7, -0.4};
     real t1;
     vec3 n1;
-    assert_true(sphere_intersect(&s, (ray){p, d}, 0, REAL_INFINITY, f, &t1, &n1));
+    intersect_hit(&s, (ray){p, d}, f, non_unit_d(d), &t1, &n1);
     const real alphas[] = {(real)1e-3, (real)0.37, 2, (real)1e3};
     for (int k = 0; k < 4; k++) {
         real t;
         vec3 n;
-        assert_true(sphere_intersect(&s, (ray){p, vec3_scale(d, alphas[k])}, 0, REAL_INFINITY, f, &t, &n));
-        assert_close(t1, t * alphas[k], 16 * REAL_EPSILON * t1); /* a few roundings in each of t and t1 */
-        assert_vec3_close(n1, n, 16 * REAL_EPSILON);
+        const vec3 scaled = vec3_scale(d, alphas[k]);
+        const char *in = intersect_hit(&s, (ray){p, scaled}, f, non_unit_d(scaled), &t, &n);
+        const char *against = describe("%s, d = %g times the d of t1 = %.17g", in, (double)alphas[k], (double)t1);
+        const suspect unscaled[] = {{t1 * alphas[k], "t did not change with d: p + t d is the hit point, so t is in "
+                                                     "units of |d|; A = d.d in (1) is not 1 (do not normalize d)"}};
+        /* a few roundings in each of t and t1 */
+        assert_close_why(t1, t * alphas[k], 16 * REAL_EPSILON * t1, describe("%s: t alpha", against),
+                         "d -> alpha d is the same ray with t -> t / alpha: A = d.d and B = d.f of (1) carry alpha^2 "
+                         "and alpha, and every root is divided by A ((2), or q / A and C / q in (5))",
+                         unscaled, N(unscaled));
+        assert_vec3_why(n1, n, 16 * REAL_EPSILON, describe("%s: n, against n1", against),
+                        "n = (x - c) / |x - c| depends on the hit point x only, not on the length of d", NULL, 0);
     }
 }
 
@@ -147,8 +218,6 @@ static void scaled_case(sphere_formula f)
  * own, so that a mistake in one costs its own tests.  A failure names the
  * input, the expected value, the value got and the likely mistake. */
 
-#define N(a) (sizeof(a) / sizeof((a)[0]))
-
 static const char *formula_name(sphere_formula f) { return f == SPHERE_TEXTBOOK ? "textbook" : "robust"; }
 
 static const char *describe_ray(const sphere *s, ray r)
@@ -156,6 +225,12 @@ static const char *describe_ray(const sphere *s, ray r)
     return describe("sphere c = (%g, %g, %g), R = %g; ray p = (%g, %g, %g), d = (%g, %g, %g)", (double)s->center.x,
                     (double)s->center.y, (double)s->center.z, (double)s->radius, (double)r.p.x, (double)r.p.y,
                     (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z);
+}
+
+static const char *describe_intersect(const sphere *s, ray r, real t_min, real t_max, sphere_formula f)
+{
+    return describe("sphere_intersect(%s, (%g, %g), %s)", describe_ray(s, r), (double)t_min, (double)t_max,
+                    formula_name(f));
 }
 
 /* The textbook roots (-b -+ sqrt(disc)) / a of a discriminant, right or
@@ -320,10 +395,15 @@ static void test_b_zero_sign(void **state)
     real t = 0;
     vec3 n;
     bool hit = sphere_intersect(&s, r, 0, REAL_INFINITY, SPHERE_ROBUST, &t, &n);
+    const char *whole = describe_intersect(&s, r, 0, REAL_INFINITY, SPHERE_ROBUST);
+    if (!hit)
+        fail_msg("%s\n    expected a hit at t = %.17g\n    got      no hit\n    likely mistake: the roots -+%.17g "
+                 "above are right, so the choice of root: p is inside (C < 0), the near root is before t_min = 0 "
+                 "and the far one is the hit (sphere_nearest_root, README \"The code\")",
+                 whole, tau, tau);
     const suspect none[] = {{0, "sign(0) = 0 gave no usable root: take sign(B) = +1 when B = 0"}};
-    assert_close_why(tau, hit ? t : 0, 8 * REAL_EPSILON * tau,
-                     describe("sphere_intersect(%s, (0, inf), robust): t", describe_ray(&s, r)),
-                     "the far root, t = sqrt(-C / A)", none, 1);
+    assert_close_why(tau, t, 8 * REAL_EPSILON * tau, describe("%s: t", whole), "the far root, t = sqrt(-C / A)", none,
+                     1);
 
     /* B = 0 and disc = 0: a ray that starts at its point of tangency.  Again
      * exact: f = (1.5, 0, 0) = R (1, 0, 0), d = (0, 0.5, 3) is perpendicular
@@ -463,10 +543,10 @@ static void test_roots_at_any_scale(void **state)
                 const real near = (real)ldexp(3.25, e), far = (real)ldexp(4.75, e);
                 if (!found || real_fmin(t0, t1) != near || real_fmax(t0, t1) != far)
                     fail_msg("sphere_roots(sigma = 2^%d, tau = 2^%d, %s)\n    expected roots %a and %a\n    got      "
-                             "%s %a and %a\n    likely mistake: sphere_roots is given; the products of four lengths "
+                             "%s\n    likely mistake: sphere_roots is given; the products of four lengths "
                              "overflowed or underflowed",
                              exps[i], exps[j], f ? "textbook" : "robust", (double)near, (double)far,
-                             found ? "" : "false,", (double)t0, (double)t1);
+                             found ? describe("%a and %a", (double)t0, (double)t1) : "false (no roots)");
             }
         }
 }
@@ -568,22 +648,26 @@ static void surface_case(sphere_formula formula)
         for (size_t m = 0; m < N(dirs); m++) {
             ray r = {p, dirs[m]};
             real B = vec3_dot(r.d, spheres[k].f), A = vec3_dot(r.d, r.d);
-            real t = 12345;
+            real t = UNWRITTEN;
             vec3 n;
             bool hit = sphere_intersect(&s, r, 0, REAL_INFINITY, formula, &t, &n);
             const char *in = describe("sphere_intersect(%s, (0, inf), %s), p on the sphere, going %s", describe_ray(&s, r),
                                       formula_name(formula), B < 0 ? "in" : "out");
             if (B > 0) {
                 if (hit)
-                    fail_msg("%s\n    expected no hit\n    got      t = %.17g\n    likely mistake: %s", in, (double)t,
+                    fail_msg("%s\n    expected no hit\n    got      %s\n    likely mistake: %s", in, describe_t_got(t),
                              t == 0 ? "accepted t == t_min = 0: the window is open" : "a root before t_min taken");
                 continue;
             }
             real expected = -2 * B / A;
-            const suspect at_start[] = {{0, "accepted the root t = 0 == t_min: the ray would hit the sphere where it starts"},
-                                        {12345, "no hit: going in, the far root -2B/A is the hit"}};
-            assert_close_why(expected, hit ? t : 12345, 8 * REAL_EPSILON * expected, in, "the far root -2B/A",
-                             at_start, N(at_start));
+            if (!hit)
+                fail_msg("%s\n    expected t = %.17g (the far root -2B/A)\n    got      no hit\n    likely mistake: "
+                         "no hit: going in, the far root -2B/A is the hit (the root t = 0 is t_min, outside the open "
+                         "window; README \"The code\")",
+                         in, (double)expected);
+            const suspect at_start[] = {
+                {0, "accepted the root t = 0 == t_min: the ray would hit the sphere where it starts"}};
+            assert_close_why(expected, t, 8 * REAL_EPSILON * expected, in, "the far root -2B/A", at_start, N(at_start));
         }
     }
 }
@@ -683,15 +767,36 @@ static void test_outward_normal(void **state)
         vec3 d = vec3_sub(vec3_add(s.center, vec3_make((real)0.3, (real)-0.2, (real)0.1)), p);
         real t;
         vec3 n;
-        assert_true(sphere_intersect(&s, (ray){p, d}, 0, REAL_INFINITY, SPHERE_ROBUST, &t, &n));
+        const char *in = intersect_hit(&s, (ray){p, d}, SPHERE_ROBUST, NO_HIT_HINT, &t, &n);
         vec3 x = ray_at((ray){p, d}, t);
-        assert_close(1, vec3_length(n), 4 * REAL_EPSILON);
-        assert_vec3_close(vec3_scale(vec3_sub(x, s.center), 1 / s.radius), n, 32 * REAL_EPSILON);
-        assert_true(vec3_dot(n, d) < 0);
+        expect_unit_normal(in, n, s.radius);
+        const vec3 out = vec3_scale(vec3_sub(x, s.center), 1 / s.radius);
+        const suspect_vec3 wrong[] = {{vec3_neg(out), "the normal points inwards: n = (x - c) / |x - c|, not c - x"},
+                                      {vec3_sub(x, s.center), "not normalized: n = (x - c) / |x - c|"},
+                                      {vec3_normalize(x), "the centre forgotten: n = (x - c) / |x - c|, not x / |x|"}};
+        assert_vec3_why(out, n, 32 * REAL_EPSILON, describe("%s: n at x = p + t d, t = %.17g", in, (double)t),
+                        "n = (x - c) / |x - c|", wrong, N(wrong));
+        const double near = root_expected(&s, (ray){p, d}, 0);
+        assert_true_why(vec3_dot(n, d) < 0,
+                        "%s: n.d\n    expected < 0: from outside the ray enters the sphere at the hit, n facing it\n"
+                        "    got      %.17g at t = %.17g (the entry is at t = %.17g)\n    likely mistake: %s",
+                        in, (double)vec3_dot(n, d), (double)t, near,
+                        fabs((double)t - near) > 1e-3 * near
+                            ? "took the far root, where the ray leaves: the nearest root inside (t_min, t_max) is the "
+                              "hit (README, \"The code\")"
+                            : "the normal points inwards: n = (x - c) / |x - c|, not c - x");
         /* from the centre outwards: the exit point, normal along d */
-        assert_true(sphere_intersect(&s, (ray){s.center, vec3_neg(d)}, 0, REAL_INFINITY, SPHERE_ROBUST, &t, &n));
-        assert_true(vec3_dot(n, vec3_neg(d)) > 0);
-        assert_close(1, vec3_length(n), 4 * REAL_EPSILON);
+        in = intersect_hit(&s, (ray){s.center, vec3_neg(d)}, SPHERE_ROBUST,
+                           "from the centre (C = -R^2 < 0) the near root is behind p, before t_min = 0: the hit is the "
+                           "far root (README, \"The code\")",
+                           &t, &n);
+        assert_true_why(vec3_dot(n, vec3_neg(d)) > 0,
+                        "%s: n.d\n    expected > 0: from inside the ray leaves the sphere, and the outward normal "
+                        "points along d\n    got      %.17g, n = (%.17g, %.17g, %.17g) at t = %.17g\n"
+                        "    likely mistake: n = (x - c) / |x - c| points out of the sphere from whichever side the "
+                        "ray comes: not c - x, and not turned to face the ray",
+                        in, (double)vec3_dot(n, vec3_neg(d)), (double)n.x, (double)n.y, (double)n.z, (double)t);
+        expect_unit_normal(in, n, s.radius);
     }
 }
 

@@ -48,12 +48,46 @@ static vec3 point_at(const triangle *tri, real beta, real gamma)
                                      vec3_scale(vec3_sub(tri->c, tri->a), gamma)));
 }
 
-static void print_triangle(const char *what, const triangle *tri, ray r);
+/* The input of a check: the triangle and the ray. */
+static const char *describe_input(const triangle *tri, ray r)
+{
+    return describe("a (%.9g, %.9g, %.9g), b (%.9g, %.9g, %.9g), c (%.9g, %.9g, %.9g); ray p (%.9g, %.9g, %.9g), "
+                    "d (%.9g, %.9g, %.9g)",
+                    (double)tri->a.x, (double)tri->a.y, (double)tri->a.z, (double)tri->b.x, (double)tri->b.y,
+                    (double)tri->b.z, (double)tri->c.x, (double)tri->c.y, (double)tri->c.z, (double)r.p.x,
+                    (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z);
+}
+
+static void print_triangle(const char *what, const triangle *tri, ray r)
+{
+    print_error("%s: %s\n", what, describe_input(tri, r));
+}
+
+/* What *hit holds before a test that may leave it alone: a hit that leaves
+ * it so is named as such, never printed as a t, beta and gamma got. */
+#define UNWRITTEN_HIT {-7, -7, -7}
+static bool unwritten(triangle_hit h) { return h.t == -7 && h.beta == -7 && h.gamma == -7; }
+static const char not_written[] = "returned true without writing *hit: a hit writes *hit = (t, beta, gamma), a miss "
+                                  "returns false and leaves it alone";
+
+/* What a triangle test gave: a miss, a hit that left *hit unwritten, or the
+ * hit's t, beta and gamma (%a: bit for bit). */
+static const char *describe_got(bool hit, triangle_hit h, bool bits)
+{
+    if (!hit)
+        return "a miss";
+    if (unwritten(h))
+        return "a hit, but *hit not written";
+    return bits ? describe("t %a, beta %a, gamma %a", (double)h.t, (double)h.beta, (double)h.gamma)
+                : describe("t %.9g, beta %.9g, gamma %.9g", (double)h.t, (double)h.beta, (double)h.gamma);
+}
 
 /* The likely mistake behind a hit that should have been a miss, from what
  * came back: which of the window's or the edges' comparisons let it in. */
 static const char *false_hit_mistake(triangle_hit h, real t_min, real t_max)
 {
+    if (unwritten(h))
+        return not_written;
     if (h.t == t_min)
         return "accepted t == t_min: the window (t_min, t_max) is open, t > t_min";
     if (h.t == t_max)
@@ -89,7 +123,7 @@ static const char *lost_hit_mistake(real beta, real gamma)
  * mistake. */
 static void expect_hit(const triangle *tri, ray r, triangle_test test, real t, real beta, real gamma, real tol)
 {
-    triangle_hit h;
+    triangle_hit h = UNWRITTEN_HIT;
     if (!triangle_intersect(tri, r, 0, REAL_INFINITY, test, &h)) {
         print_triangle("input", tri, r);
         fail_msg("--triangle=%s: expected a hit at t %g, beta %g, gamma %g; got a miss\n    likely mistake: %s",
@@ -99,29 +133,69 @@ static void expect_hit(const triangle *tri, ray r, triangle_test test, real t, r
     if (!(real_abs(h.t - t) <= t_tol && real_abs(h.beta - beta) <= tol && real_abs(h.gamma - gamma) <= tol)) {
         print_triangle("input", tri, r);
         bool swapped = real_abs(h.beta - gamma) <= tol && real_abs(h.gamma - beta) <= tol;
-        fail_msg("--triangle=%s: expected t %.9g, beta %.9g, gamma %.9g (tolerance %g); got t %.9g, beta %.9g, "
-                 "gamma %.9g\n    likely mistake: %s",
-                 test_names[test], (double)t, (double)beta, (double)gamma, (double)tol, (double)h.t,
-                 (double)h.beta, (double)h.gamma,
-                 swapped ? "beta and gamma swapped: beta goes with b - a, gamma with c - a"
-                         : "a column of a determinant replaced by the wrong vector, or beta and gamma swapped");
+        fail_msg("--triangle=%s: expected t %.9g, beta %.9g, gamma %.9g (tolerance %g); got %s\n    likely mistake: %s",
+                 test_names[test], (double)t, (double)beta, (double)gamma, (double)tol, describe_got(true, h, false),
+                 unwritten(h) ? not_written
+                 : swapped    ? "beta and gamma swapped: beta goes with b - a, gamma with c - a"
+                              : "a column of a determinant replaced by the wrong vector, or beta and gamma swapped");
     }
 }
 
 /* Asserts a miss that leaves *hit untouched. */
 static void expect_miss(const triangle *tri, ray r, real t_min, real t_max, triangle_test test)
 {
-    triangle_hit h = {-7, -7, -7};
+    triangle_hit h = UNWRITTEN_HIT;
     if (triangle_intersect(tri, r, t_min, t_max, test, &h)) {
         print_triangle("input", tri, r);
-        fail_msg("--triangle=%s: window (%g, %g): expected a miss, got t %g, beta %g, gamma %g\n"
+        fail_msg("--triangle=%s: window (%g, %g): expected a miss, got %s\n"
                  "    likely mistake: %s",
-                 test_names[test], (double)t_min, (double)t_max, (double)h.t, (double)h.beta, (double)h.gamma,
+                 test_names[test], (double)t_min, (double)t_max, describe_got(true, h, false),
                  false_hit_mistake(h, t_min, t_max));
     }
-    if (!(h.t == -7 && h.beta == -7 && h.gamma == -7))
+    if (!unwritten(h))
         fail_msg("--triangle=%s: a miss wrote into *hit (t %g): write it only on a hit", test_names[test],
                  (double)h.t);
+}
+
+/* assert_true(triangle_intersect(tri, r, t_min, t_max, test, h)), the same
+ * record; a miss fails naming the input, the hit expected (`where`) and the
+ * likely mistake. */
+static void expect_hit_in(const triangle *tri, ray r, real t_min, real t_max, triangle_test test, const char *where,
+                          const char *mistake, triangle_hit *h)
+{
+    assert_true_why(triangle_intersect(tri, r, t_min, t_max, test, h),
+                    "--triangle=%s, window (%g, %g): %s\n    expected a hit %s\n    got      a miss\n"
+                    "    likely mistake: %s",
+                    test_names[test], (double)t_min, (double)t_max, describe_input(tri, r), where, mistake);
+}
+
+/* assert_true(h.t == t) of the hit h of exact data, the same record. */
+static void expect_t_exactly(const triangle *tri, ray r, real t_min, real t_max, triangle_test test, triangle_hit h,
+                             real t)
+{
+    assert_true_why(
+        h.t == t,
+        "--triangle=%s, window (%g, %g): %s\n    expected t = %g exactly (small dyadic data: every "
+        "determinant is exact)\n    got      %s\n    likely mistake: %s",
+        test_names[test], (double)t_min, (double)t_max, describe_input(tri, r), (double)t, describe_got(true, h, false),
+        unwritten(h) ? not_written
+                     : "t = det[a - b, a - c, a - p] / M: a column of t's determinant replaced by the wrong "
+                       "vector (README, \"The intersection: three equations, three unknowns\")");
+}
+
+/* assert_true(det3(c0, c1, c2) == expected), the same record. */
+static void expect_det3(vec3 c0, vec3 c1, vec3 c2, real expected)
+{
+    const real got = det3(c0, c1, c2);
+    assert_true_why(got == expected,
+                    "det3((%g, %g, %g), (%g, %g, %g), (%g, %g, %g))\n    expected %g\n    got      %.17g\n"
+                    "    likely mistake: %s",
+                    (double)c0.x, (double)c0.y, (double)c0.z, (double)c1.x, (double)c1.y, (double)c1.z, (double)c2.x,
+                    (double)c2.y, (double)c2.z, (double)expected, (double)got,
+                    got == -expected ? "det3 is given: det[c0 c1 c2] = c0 . (c1 x c2), not c0 . (c2 x c1) (README, "
+                                       "\"The intersection: three equations, three unknowns\")"
+                                     : "det3 is given: det[c0 c1 c2] = c0 . (c1 x c2), the scalar triple product "
+                                       "(README, \"The intersection: three equations, three unknowns\")");
 }
 
 /* det[c0 c1 c2] of the identity is 1; swapping two columns changes its sign. */
@@ -129,9 +203,9 @@ static void test_det3(void **state)
 {
     (void)state;
     vec3 x = {1, 0, 0}, y = {0, 1, 0}, z = {0, 0, 1};
-    assert_true(det3(x, y, z) == 1);
-    assert_true(det3(y, x, z) == -1);
-    assert_true(det3(vec3_make(1, 2, 3), vec3_make(4, 5, 6), vec3_make(7, 8, 10)) == -3);
+    expect_det3(x, y, z, 1);
+    expect_det3(y, x, z, -1);
+    expect_det3(vec3_make(1, 2, 3), vec3_make(4, 5, 6), vec3_make(7, 8, 10), -3);
 }
 
 /* The ray through the centroid: alpha = beta = gamma = 1/3, from either side. */
@@ -241,18 +315,33 @@ static void test_cramer_alone_rejects_what_it_cannot_solve(void **state)
         const bool hit = triangle_cramer(cases[k].tri, cases[k].r, 0, inf, &h);
         if (hit || !(h.t == -7 && h.beta == -7 && h.gamma == -7)) {
             print_triangle("input", cases[k].tri, cases[k].r);
-            fail_msg("cramer, window (0, inf), %s\n    expected false, *hit untouched\n    got      %s, t %g, beta "
-                     "%g, gamma %g\n    likely mistake: %s",
-                     cases[k].what, hit ? "true" : "false (but *hit written)", (double)h.t, (double)h.beta,
-                     (double)h.gamma, cases[k].mistake);
+            fail_msg("cramer, window (0, inf), %s\n    expected false, *hit untouched\n    got      %s%s\n"
+                     "    likely mistake: %s",
+                     cases[k].what, hit ? "true" : "false, but *hit written: ",
+                     hit ? (unwritten(h) ? ", *hit not written" : describe(", %s", describe_got(true, h, false)))
+                         : describe_got(true, h, false),
+                     cases[k].mistake);
         }
     }
     /* ... and the same ray from a finite origin is a hit, at beta = gamma = 1/4. */
-    triangle_hit h;
-    assert_true(triangle_cramer(&flat, (ray){above, d}, 0, inf, &h));
-    assert_close(1, h.t, TOL);
-    assert_close(0.25, h.beta, TOL);
-    assert_close(0.25, h.gamma, TOL);
+    triangle_hit h = UNWRITTEN_HIT;
+    const ray finite = {above, d};
+    const char *in = describe("cramer(%s), window (0, inf)", describe_input(&flat, finite));
+    assert_true_why(triangle_cramer(&flat, finite, 0, inf, &h),
+                    "%s\n    expected true, a hit at t 1, beta 0.25, gamma 0.25\n    got      false\n"
+                    "    likely mistake: %s",
+                    in, lost_hit_mistake((real)0.25, (real)0.25));
+    if (unwritten(h))
+        fail_msg("%s\n    expected t 1, beta 0.25, gamma 0.25\n    got      true, but *hit not written\n"
+                 "    likely mistake: %s",
+                 in, not_written);
+    const char *where = "(README, \"The intersection: three equations, three unknowns\")";
+    assert_close_why(1, h.t, TOL, describe("%s: t", in), describe("t = det[a - b, a - c, a - p] / M %s", where), NULL,
+                     0);
+    assert_close_why(0.25, h.beta, TOL, describe("%s: beta", in), describe("beta = det[a - p, a - c, d] / M %s", where),
+                     NULL, 0);
+    assert_close_why(0.25, h.gamma, TOL, describe("%s: gamma", in),
+                     describe("gamma = det[a - b, a - p, d] / M %s", where), NULL, 0);
 }
 
 /* d may have any length (ray.h): triangle_intersect (given) scales a d of
@@ -268,23 +357,27 @@ static void test_any_length_of_d(void **state)
     const int exps[] = {-top, -top / 2, -20, 20, top / 2, top};
     const vec3 x = point_at(&tilted, (real)0.3, (real)0.45), p = vec3_make(-3, 7, 9);
     for (int k = 0; k < N_TESTS; k++) {
-        triangle_hit h1;
-        assert_true(triangle_intersect(&tilted, (ray){p, vec3_sub(x, p)}, 0, REAL_INFINITY, both[k], &h1));
+        triangle_hit h1 = UNWRITTEN_HIT;
+        expect_hit_in(&tilted, (ray){p, vec3_sub(x, p)}, 0, REAL_INFINITY, both[k], "at t 1, beta 0.3, gamma 0.45",
+                      lost_hit_mistake((real)0.3, (real)0.45), &h1);
         for (size_t j = 0; j < sizeof exps / sizeof exps[0]; j++) {
             triangle_hit h = {-7, -7, -7};
             const ray r = {p, vec3_scale(vec3_sub(x, p), (real)ldexp(1, exps[j]))};
             const bool hit = triangle_intersect(&tilted, r, 0, REAL_INFINITY, both[k], &h);
             if (!hit || h.t != (real)ldexp(h1.t, -exps[j]) || h.beta != h1.beta || h.gamma != h1.gamma)
                 fail_msg("--triangle=%s: d scaled by 2^%d\n    expected a hit at t %a (t of the unscaled d / 2^%d), "
-                         "beta %a, gamma %a\n    got      %s t %a, beta %a, gamma %a\n    likely mistake: "
+                         "beta %a, gamma %a\n    got      %s\n    likely mistake: "
                          "triangle_intersect is given; the products with d overflowed or underflowed",
                          test_names[both[k]], exps[j], (double)ldexp(h1.t, -exps[j]), exps[j], (double)h1.beta,
-                         (double)h1.gamma, hit ? "" : "a miss,", (double)h.t, (double)h.beta, (double)h.gamma);
+                         (double)h1.gamma, describe_got(hit, h, true));
             /* the window scales with t: open at both ends, exactly at the hit's t */
             const real t = h.t;
             expect_miss(&tilted, r, 0, t, both[k]);
             expect_miss(&tilted, r, t, REAL_INFINITY, both[k]);
-            assert_true(triangle_intersect(&tilted, r, t / 2, t * 2, both[k], &h));
+            expect_hit_in(&tilted, r, t / 2, t * 2, both[k], describe("at t %a, d scaled by 2^%d", (double)t, exps[j]),
+                          "the window: the hit needs t_min < t < t_max with the caller's t_min and t_max "
+                          "(triangle_intersect, given, scales them with d)",
+                          &h);
         }
     }
     /* A hit near the top of the float range: a small triangle (edges about
@@ -301,12 +394,13 @@ static void test_any_length_of_d(void **state)
     const triangle far = {{x0, -e, -e}, {x0, e, -e}, {x0, 0, e}};
     const ray r = {{(real)-ldexp(1, top_exp - 1), 0, 0}, {x0, 0, 0}};
     for (int k = 0; k < N_TESTS; k++) {
-        triangle_hit h = {-7, -7, -7};
-        if (!triangle_intersect(&far, r, 0, REAL_INFINITY, both[k], &h) || h.t != 3)
+        triangle_hit h = UNWRITTEN_HIT;
+        const bool hit = triangle_intersect(&far, r, 0, REAL_INFINITY, both[k], &h);
+        if (!hit || h.t != 3)
             fail_msg("--triangle=%s: the plane x = 2^%d, p = (-2^%d, 0, 0), d = (2^%d, 0, 0)\n    expected a hit at t "
-                     "3\n    got      t %a\n    likely mistake: triangle_intersect is given; d scaled further than "
+                     "3\n    got      %s\n    likely mistake: triangle_intersect is given; d scaled further than "
                      "needed, so that t overflowed",
-                     test_names[both[k]], top_exp - 2, top_exp - 1, top_exp - 2, (double)h.t);
+                     test_names[both[k]], top_exp - 2, top_exp - 1, top_exp - 2, describe_got(hit, h, true));
     }
 }
 
@@ -327,7 +421,15 @@ static void test_degenerate_triangles(void **state)
             vec3 targets[] = {tri->a, tri->b, tri->c, vec3_scale(vec3_add(tri->a, tri->c), 0.5)};
             for (int i = 0; i < 4; i++)
                 expect_miss(tri, (ray){above, vec3_sub(targets[i], above)}, 0, REAL_INFINITY, both[k]);
-            assert_true(vec3_length(triangle_normal(tri)) == 0);
+            const vec3 n = triangle_normal(tri);
+            assert_true_why(vec3_length(n) == 0,
+                            "triangle_normal(a (%g, %g, %g), b (%g, %g, %g), c (%g, %g, %g)), a degenerate triangle\n"
+                            "    expected (0, 0, 0): no plane, no normal\n    got      (%.17g, %.17g, %.17g)\n"
+                            "    likely mistake: triangle_normal is given: it returns the zero vector when "
+                            "(b - a) x (c - a) is 0 (collinear or coincident vertices), never a normalized 0",
+                            (double)tri->a.x, (double)tri->a.y, (double)tri->a.z, (double)tri->b.x, (double)tri->b.y,
+                            (double)tri->b.z, (double)tri->c.x, (double)tri->c.y, (double)tri->c.z, (double)n.x,
+                            (double)n.y, (double)n.z);
         }
     /* Moving one vertex of the first by 1/8 makes it a triangle: now it is hit. */
     const triangle sliver = {{1, 1, 2}, {3, (real)2.125, 2}, {5, 3, 2}};
@@ -402,19 +504,27 @@ static void test_t_window(void **state)
     (void)state;
     vec3 x = point_at(&flat, (real)0.25, (real)0.25);
     ray r = {above, vec3_sub(x, above)};
-    triangle_hit h;
     for (int k = 0; k < N_TESTS; k++) {
-        assert_true(triangle_intersect(&flat, r, 0, 2, both[k], &h));
-        assert_true(h.t == 1);
-        assert_true(triangle_intersect(&flat, r, (real)0.999, (real)1.001, both[k], &h));
+        triangle_hit h = UNWRITTEN_HIT;
+        expect_hit_in(&flat, r, 0, 2, both[k], "at t 1, beta 0.25, gamma 0.25",
+                      lost_hit_mistake((real)0.25, (real)0.25), &h);
+        expect_t_exactly(&flat, r, 0, 2, both[k], h, 1);
+        h = (triangle_hit)UNWRITTEN_HIT;
+        expect_hit_in(&flat, r, (real)0.999, (real)1.001, both[k], "at t 1, inside the narrow window",
+                      "t compared with a fixed epsilon, or with 0 and infinity, instead of the window: the hit needs "
+                      "t_min < t < t_max",
+                      &h);
         expect_miss(&flat, r, 0, 1, both[k]);              /* t == t_max: outside */
         expect_miss(&flat, r, 1, 2, both[k]);              /* t == t_min: outside */
         expect_miss(&flat, r, (real)1.5, 9, both[k]);      /* the window lies beyond */
         expect_miss(&flat, r, 0, (real)0.5, both[k]);      /* ... or before */
         ray back = {above, vec3_neg(r.d)};                 /* the triangle behind the origin */
         expect_miss(&flat, back, 0, REAL_INFINITY, both[k]);
-        assert_true(triangle_intersect(&flat, back, -REAL_INFINITY, 0, both[k], &h));
-        assert_true(h.t == -1);
+        h = (triangle_hit)UNWRITTEN_HIT;
+        expect_hit_in(&flat, back, -REAL_INFINITY, 0, both[k], "at t -1: the triangle is behind p, inside the window",
+                      "t compared with 0 instead of t_min: the window (t_min, t_max) is the caller's, here (-inf, 0)",
+                      &h);
+        expect_t_exactly(&flat, back, -REAL_INFINITY, 0, both[k], h, -1);
     }
 }
 
@@ -452,7 +562,16 @@ static void test_hit_point_is_consistent(void **state)
             total++;
             agree += hit[0] == hit[1];
         }
-    assert_true(agree >= total - 3 * 21); /* they may differ only on the edge lines */
+    /* they may differ only on the edge lines */
+    assert_true_why(agree >= total - 3 * 21,
+                    "cramer and watertight on %d rays at the triangle a (%g, %g, %g), b (%g, %g, %g), c (%g, %g, %g), "
+                    "aimed at beta, gamma = -3/14 .. 17/14\n    expected the same answer for at least %d (they may "
+                    "differ only on the edge lines)\n    got      %d\n    likely mistake: a point away from the edges "
+                    "decided differently: the tests beta >= 0, gamma >= 0, beta + gamma <= 1 (README, \"Edges: "
+                    "closed\")",
+                    total, (double)tilted.a.x, (double)tilted.a.y, (double)tilted.a.z, (double)tilted.b.x,
+                    (double)tilted.b.y, (double)tilted.b.z, (double)tilted.c.x, (double)tilted.c.y, (double)tilted.c.z,
+                    total - 3 * 21, agree);
 }
 
 /* The geometric normal: unit, (b - a) x (c - a), for huge and tiny triangles too. */
@@ -525,15 +644,6 @@ static const struct {
     real scale, distance;
 } placements[] = {{1, 0}, {(real)1e-3, (real)0.5}, {7, 30}, {(real)0.25, 1000}, {(real)1e4, 0}, {3, (real)2e5}};
 enum { N_PLACEMENTS = sizeof placements / sizeof placements[0] };
-
-static void print_triangle(const char *what, const triangle *tri, ray r)
-{
-    print_error("%s: a (%.9g, %.9g, %.9g), b (%.9g, %.9g, %.9g), c (%.9g, %.9g, %.9g); ray p (%.9g, %.9g, %.9g), "
-                "d (%.9g, %.9g, %.9g)\n",
-                what, (double)tri->a.x, (double)tri->a.y, (double)tri->a.z, (double)tri->b.x, (double)tri->b.y,
-                (double)tri->b.z, (double)tri->c.x, (double)tri->c.y, (double)tri->c.z, (double)r.p.x,
-                (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z);
-}
 
 /* The check of crossing.h accepts a hit only where Cramer's rule in real
  * arithmetic puts its point within 1/8 of the triangle's longest edge of the
@@ -670,9 +780,9 @@ static void test_origin_on_the_triangle(void **state)
             triangle_hit h = {-7, -7, -7};
             if (triangle_intersect(&flat, (ray){on, dirs[j]}, 0, REAL_INFINITY, both[k], &h))
                 fail_msg("--triangle=%s: ray from (%g, %g, %g), a point of the triangle, along (%g, %g, %g): expected "
-                         "a miss (t = 0 is outside (0, infinity)), got t %g: is the window test t > t_min?",
-                         test_names[k], (double)on.x, (double)on.y, (double)on.z, (double)dirs[j].x,
-                         (double)dirs[j].y, (double)dirs[j].z, (double)h.t);
+                         "a miss (t = 0 is outside (0, infinity)), got %s: is the window test t > t_min?",
+                         test_names[k], (double)on.x, (double)on.y, (double)on.z, (double)dirs[j].x, (double)dirs[j].y,
+                         (double)dirs[j].z, describe_got(true, h, false));
         }
     rng_state = 0x5851f42d4c957f2du;
     for (int k = 0; k < N_TESTS; k++)
@@ -771,9 +881,28 @@ static void test_decided_at_any_distance(void **state)
                           "hits lost\n",
                           test_names[k], distances[i], c.degenerate_false + c.plane_false, c.worst_off, c.lost_hits,
                           c.clear_hits);
-            assert_true(c.clear_hits > 4000); /* about a quarter of the rays at proper triangles */
+            const char *in =
+                describe("--triangle=%s: degenerate_counts_at(20000 rays, distance %g)", test_names[k], distances[i]);
+            /* about a quarter of the rays at proper triangles */
+            assert_true_why(c.clear_hits > 4000,
+                            "%s: rays 1 %% inside proper triangles that triangle_cramer places to within 1/1024 of an "
+                            "edge\n    expected more than 4000 (about a quarter of the rays)\n    got      %ld\n"
+                            "    likely mistake: triangle_cramer misses such points or places them off: a column of a "
+                            "determinant of the wrong sign or order (README, \"The intersection: three equations, "
+                            "three unknowns\")",
+                            in, c.clear_hits);
             assert_int_equal(0, c.lost_hits);
-            assert_true(c.worst_off <= 0.125);
+            assert_true_why(
+                c.worst_off <= 0.125,
+                "%s: hits at degenerate triangles and by rays in their plane\n    expected every hit within "
+                "1/8 of an edge of its triangle\n    got      a hit %.3g edge lengths off\n    likely "
+                "mistake: %s",
+                in, c.worst_off,
+                both[k] == TRIANGLE_CRAMER
+                    ? "a t that is not the crossing's: t = det[a - b, a - c, a - p] / M (README, \"The "
+                      "intersection: three equations, three unknowns\"); the given check vouches for the "
+                      "crossing, not for the t reported"
+                    : "the watertight test and the check of crossing.h are given (common/): changed?");
         }
 }
 
@@ -789,18 +918,30 @@ static void test_range_ends(void **state)
     const real scales[] = {(real)ldexp(1, -e), (real)ldexp(1, e)};
     vec3 g = centroid(&tilted);
     vec3 p = vec3_add(g, vec3_make(2, (real)-0.5, 4));
-    triangle_hit reference;
     for (int k = 0; k < N_TESTS; k++) {
-        assert_true(triangle_intersect(&tilted, (ray){p, vec3_sub(g, p)}, 0, REAL_INFINITY, both[k], &reference));
+        triangle_hit reference = UNWRITTEN_HIT;
+        expect_hit_in(&tilted, (ray){p, vec3_sub(g, p)}, 0, REAL_INFINITY, both[k],
+                      "at the centroid, t 1, beta = gamma "
+                      "= 1/3",
+                      lost_hit_mistake((real)1 / 3, (real)1 / 3), &reference);
         for (int j = 0; j < 2; j++) {
             real f = scales[j];
             triangle scaled = {vec3_scale(tilted.a, f), vec3_scale(tilted.b, f), vec3_scale(tilted.c, f)};
             ray r = {vec3_scale(p, f), vec3_scale(vec3_sub(g, p), f)};
-            triangle_hit h;
+            triangle_hit h = UNWRITTEN_HIT;
             if (!triangle_intersect(&scaled, r, 0, REAL_INFINITY, both[k], &h))
                 fail_msg("--triangle=%s: the centroid ray scaled by 2^%d: expected a hit at t %g, got a miss",
                          test_names[k], j ? e : -e, (double)reference.t);
-            assert_true(h.t == reference.t && h.beta == reference.beta && h.gamma == reference.gamma);
+            assert_true_why(h.t == reference.t && h.beta == reference.beta && h.gamma == reference.gamma,
+                            "--triangle=%s: %s, the centroid ray and the triangle scaled by 2^%d\n    expected %s (the "
+                            "unscaled ones, bit for bit: a power of two scales every rounding exactly)\n    got      "
+                            "%s\n    likely mistake: %s",
+                            test_names[k], describe_input(&scaled, r), j ? e : -e, describe_got(true, reference, true),
+                            describe_got(true, h, true),
+                            unwritten(h)
+                                ? not_written
+                                : "a term that does not scale with the data, such as an absolute epsilon on M, "
+                                  "t, beta or gamma (README, \"Robustness\": every term scales)");
         }
     }
 }

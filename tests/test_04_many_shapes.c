@@ -66,6 +66,8 @@ static const char *loop_mistake(const surface_list *list, ray r, real t_min, rea
                           "says it hit"
                         : "false returned after a hit was written: set found = true on each hit, and never back to "
                           "false when a later surface misses";
+    if (found && hit->surface == -7 && hit->t == -7)
+        return "true returned but *hit never written: copy the candidate into *hit on each hit";
     if (found && !(hit->t > t_min && hit->t < t_max))
         return "a hit at or outside the window (t_min, t_max), which is open at both ends: start t_best at t_max, ask "
                "each surface with (t_min, t_best) and pass t_min on unchanged";
@@ -109,7 +111,9 @@ static void expect_closest(const surface_list *list, ray r, real t_min, real t_m
         snprintf(expected, sizeof expected, "no hit (and *hit untouched)");
     else
         snprintf(expected, sizeof expected, "surface %d at t %g", want, (double)t);
-    if (found || hit.surface != -7)
+    if (found && hit.surface == -7 && hit.t == -7)
+        snprintf(got, sizeof got, "a hit, but *hit never written");
+    else if (found || hit.surface != -7)
         snprintf(got, sizeof got, "%s surface %d at t %.9g", found ? "a hit on" : "no hit, but *hit written:",
                  hit.surface, (double)hit.t);
     else
@@ -126,6 +130,39 @@ static void expect_closest(const surface_list *list, ray r, real t_min, real t_m
              (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z,
              (double)t_min, (double)t_max, list->n, expected, got, why, order, *loop ? "\n    likely mistake: " : "",
              loop);
+}
+
+/* The loop's likely mistakes when no hit comes back where the checks after
+ * it need one, and no single cause stands out. */
+#define NO_HIT_HINT                                                                                                    \
+    "the lecture's loop (README, \"The closest hit\"): t_best starts at t_max, every surface k = 0 .. n - 1 is "       \
+    "asked with (t_min, t_best), and each hit sets found = true"
+
+/* Asserts that surfaces_intersect(list, r, t_min, t_max, hit) finds a hit,
+ * which the checks after it read from *hit.  On failure it names the ray,
+ * the window, the hit expected (`expected`: list entry want), what came back
+ * (asked again with a marked record, to tell a written *hit from none) and
+ * the likely mistake: loop_mistake's, else `hint`. */
+static void expect_a_hit(const surface_list *list, ray r, real t_min, real t_max, int want, const char *expected,
+                         const char *hint, hit_record *hit)
+{
+    const bool hit_found = surfaces_intersect(list, r, t_min, t_max, hit);
+    const char *got = "", *why = "";
+    if (!hit_found) {
+        hit_record marked = {.t = -7, .surface = -7};
+        bool found = surfaces_intersect(list, r, t_min, t_max, &marked);
+        const char *loop = loop_mistake(list, r, t_min, t_max, want, 0, 0, found, &marked);
+        got = found ? "a hit when asked again: the answer changes from call to call"
+              : marked.surface != -7 || marked.t != -7
+                  ? describe("no hit, but *hit written: surface %d at t %.9g", marked.surface, (double)marked.t)
+                  : "no hit";
+        why = *loop ? loop : hint;
+    }
+    assert_true_why(hit_found,
+                    "surfaces_intersect(ray p (%g, %g, %g), d (%g, %g, %g), window (%g, %g), %d surfaces)\n"
+                    "    expected %s\n    got      %s\n    likely mistake: %s",
+                    (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z,
+                    (double)t_min, (double)t_max, list->n, expected, got, why);
 }
 
 /* Every ordering of the four shapes, with both sphere formulas and both
@@ -246,7 +283,8 @@ static void test_coincident_surfaces_first_wins(void **state)
             surface_list_add_triangle(&list, tri, 21 - first, 3);
             expect_closest(&list, down_z, 0, REAL_INFINITY, 2, 8, TOL(16), why);
             hit_record hit;
-            assert_true(surfaces_intersect(&list, down_z, 0, REAL_INFINITY, &hit));
+            expect_a_hit(&list, down_z, 0, REAL_INFINITY, 2,
+                         "a hit on surface 2, the first copy of the triangle, at t 8", NO_HIT_HINT, &hit);
             assert_int_equal(20 + first, hit.shader);
             surface_list_free(&list);
         }
@@ -267,7 +305,7 @@ static void test_hit_record_fields(void **state)
     hit_record hit;
     /* x = a + beta (b - a) + gamma (c - a) = (2 beta, 2 gamma, 0) = (0.5, 0.6, 0) */
     const ray r = {{0.5, 0.6, 1}, {0, 0, -2}};
-    assert_true(surfaces_intersect(&list, r, 0, REAL_INFINITY, &hit));
+    expect_a_hit(&list, r, 0, REAL_INFINITY, 1, "a hit on surface 1, the triangle, at t 0.5", NO_HIT_HINT, &hit);
     assert_int_equal(1, hit.surface);
     assert_int_equal(9, hit.source);
     assert_int_equal(5, hit.shader);
@@ -278,12 +316,15 @@ static void test_hit_record_fields(void **state)
     assert_vec3_close(vec3_make(0, 0, 1), hit.normal, TOL(1));
     /* From below the triangle: the normal is the triangle's, not turned to the ray. */
     const ray from_below = {{0.5, 0.6, -1}, {0, 0, 1}};
-    assert_true(surfaces_intersect(&list, from_below, 0, REAL_INFINITY, &hit));
+    expect_a_hit(&list, from_below, 0, REAL_INFINITY, 1, "a hit on surface 1, the triangle seen from below, at t 1",
+                 "a triangle met from behind is hit all the same: keep every hit surface_intersect reports, "
+                 "whichever side the ray comes from (the normal is not turned to the ray)",
+                 &hit);
     assert_vec3_close(vec3_make(0, 0, 1), hit.normal, TOL(1));
 
     /* The sphere, met from +y at its top: point (3, 0.5, 0), normal +y. */
     const ray down = {{3, 4, 0}, {0, -1, 0}};
-    assert_true(surfaces_intersect(&list, down, 0, REAL_INFINITY, &hit));
+    expect_a_hit(&list, down, 0, REAL_INFINITY, 0, "a hit on surface 0, the sphere, at t 3.5", NO_HIT_HINT, &hit);
     assert_int_equal(0, hit.surface);
     assert_int_equal(8, hit.source);
     assert_int_equal(4, hit.shader);
@@ -362,9 +403,15 @@ static void test_box_in_scene(void **state)
             vec3 off = vec3_scale(axes[(a + 1) % 3], (real)0.3);
             ray r = {vec3_add(vec3_scale(outward, 5), off), vec3_neg(outward)};
             hit_record hit;
+            /* the half of the face with the corner q10 (box_triangles): list entry 1 + its index */
+            int want = 1 + 2 * (2 * a + (s > 0));
             for (int g = 0; g < 2; g++) {
                 list.triangle_test = tests_of_triangles[g];
-                assert_true(surfaces_intersect(&list, r, 0, REAL_INFINITY, &hit));
+                expect_a_hit(&list, r, 0, REAL_INFINITY, want,
+                             describe("a hit on the box's face %c%c (surface %d of the sphere and the box's 12 "
+                                      "triangles) at t 4, --triangle=%s",
+                                      s > 0 ? '+' : '-', "xyz"[a], want, g ? "watertight" : "cramer"),
+                             NO_HIT_HINT, &hit);
                 assert_int_equal(1, hit.source);
                 assert_close(4, hit.t, TOL(4));
                 assert_vec3_close(outward, hit.normal, TOL(1));
@@ -648,7 +695,13 @@ static long floor_holes(real s, triangle_test test)
                 holes++;
         }
     surface_list_free(&list);
-    assert_true(inside > 1000); /* the floor fills most of the image */
+    assert_true_why(
+        inside > 1000, /* the floor fills most of the image */
+        "floor of half-size %g the eye at %g x (0, 3, 4), 48 x 48: eye rays that meet the floor square (the "
+        "test's own ray-plane count, before any surfaces_intersect)\n    expected more than 1000\n"
+        "    got      %ld\n    likely mistake: the eye rays miss the floor: chapter 01's camera "
+        "(camera_init, camera_ray; run test_01_camera_rays), the only code this count runs",
+        (double)s, (double)s, inside);
     return holes;
 }
 

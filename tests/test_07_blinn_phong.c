@@ -28,6 +28,15 @@ static vec3 at_angle(vec3 n, vec3 towards, double theta)
     return vec3_add(vec3_scale(n, (real)cos(theta)), vec3_scale(side, (real)sin(theta)));
 }
 
+/* got < bound (below) or got > bound, or the test fails naming the input,
+ * the bound, the value got and the likely mistake (a NaN is neither). */
+static void check_order(double got, bool below, double bound, const char *input, const char *mistake)
+{
+    assert_true_why(below ? got < bound : got > bound,
+                    "%s\n    expected %s %.17g\n    got      %.17g\n    likely mistake: %s", input,
+                    below ? "less than" : "more than", bound, got, mistake);
+}
+
 /* ---- the half vector, inside the term ------------------------------------------------------ */
 
 /* k_s max(0, n . h)^p I / r^2 for k_s = 0.9, I = 10, r = 2.5 (k_s I / r^2 = 1.44), with n . h = c. */
@@ -130,8 +139,13 @@ static void test_exponent_behaviour(void **state)
                                       "n . h = cos(%g degrees)): red", exponents[k], alphas[a]),
                              "k_s max(0, n . h)^p I / r^2", ss, sizeof ss / sizeof ss[0]);
             assert_close(L.r * 0.3 / 0.9, L.b, TOL(L.r));
-            if (alphas[a] > 0)
-                assert_true(L.r < previous); /* narrower with every larger p */
+            if (alphas[a] > 0) /* narrower with every larger p */
+                check_order(L.r, true, previous,
+                            describe("blinn_phong_specular(k_s.r = 0.9, I = 10, r = 2.5, course form, n . h = "
+                                     "cos(%g degrees)): red for p = %g, against the smaller p before it",
+                                     alphas[a], exponents[k]),
+                            "max(0, n . h)^p falls as p grows when n . h < 1 (README, \"Specular shading\": "
+                            "increasing p narrows the peak): p is the exponent, real_pow(max(0, n . h), p)");
             previous = L.r;
         }
     }
@@ -211,7 +225,13 @@ static void test_course_and_lecture_forms(void **state)
         vec3 v = at_angle(n, side, -theta + 0.05); /* near the mirror direction */
         color course = blinn_phong_specular(k_s, 50, point, n, v, &light, PHONG_COURSE);
         color lecture = blinn_phong_specular(k_s, 50, point, n, v, &light, PHONG_LECTURE);
-        assert_true(course.r > 0);
+        check_order(course.r, false, 0,
+                    describe("blinn_phong_specular(k_s = (1, 1, 0), p = 50, I = 9, r = 3, light at %g degrees from "
+                             "n, the viewer near its mirror direction), course form: red",
+                             degrees[k]),
+                    "no highlight near the mirror direction, where n . h is near 1: l points from the point towards "
+                    "the light and h = (v + l) / |v + l|, the sum, not the difference, so k_s max(0, n . h)^p I / "
+                    "r^2 > 0");
         const suspect sf[] = {
             {course.r, "the lecture's form is the course's times max(0, n . l); it was left out"},
             {course.r * cos(theta) * cos(theta), "n . l applied twice"},
@@ -230,7 +250,12 @@ static void test_course_and_lecture_forms(void **state)
     vec3 v = at_angle(n, side, -60 * pi / 180);
     color course = blinn_phong_specular(k_s, 50, point, n, v, &low, PHONG_COURSE);
     color lecture = blinn_phong_specular(k_s, 50, point, n, v, &low, PHONG_LECTURE);
-    assert_true(course.r > 0);
+    check_order(course.r, false, 0,
+                "blinn_phong_specular(k_s = (1, 1, 0), p = 50, I = 9, light 3 away at 95 degrees from n, viewer at "
+                "60 degrees on the other side: n . h = 0.954), course form: red",
+                "the course's form has no cosine: k_s max(0, n . h)^p I / r^2 is positive here though n . l < 0; "
+                "max(0, n . l) belongs to the lecture's form only (README, \"Specular shading\", the table of "
+                "--phong)");
     const suspect sn[] = {
         {course.r * cos(95 * pi / 180), "negative: the lecture's cosine is max(0, n . l), clamped at 0"},
         {course.r, "the lecture's form is the course's times max(0, n . l); it was left out"},
@@ -286,6 +311,19 @@ static color light_term(const scene *desc, const shading_point *sp, const scene_
                                           PHONG_COURSE));
 }
 
+/* The tests' expected radiance is built from light_term, which runs
+ * blinn_phong_specular (and chapter 05's lambert): `light` lights the floor
+ * point, which must get more than 0.01 in red from it. */
+static void check_lit(color L, const char *light)
+{
+    check_order(L.r, false, 0.01,
+                describe("light_term(%s) at the floor point, the test's expected contribution: lambert (chapter 05) + "
+                         "blinn_phong_specular (course form): red",
+                         light),
+                "a light in front gives a positive term: blinn_phong_specular is never negative or NaN (max(0, n . h) "
+                "clamped before the power: test_exponent_behaviour), or chapter 05's lambert (run test_05_lambert)");
+}
+
 /* The number of shadow rays shade_phong cast, checked after the radiance so
  * that a wrong sum is reported by what it is missing. */
 static void check_shadow_rays(uint64_t expected, uint64_t got, const char *input, const char *mistake)
@@ -310,7 +348,8 @@ static void test_two_lights_add(void **state)
     shading_point sp;
     color both = shade_spot(&desc, PHONG_COURSE, rays, &sp);
     color La = light_term(&desc, &sp, &a), Lb = light_term(&desc, &sp, &b);
-    assert_true(La.r > 0.01 && Lb.r > 0.01);
+    check_lit(La, "light a: (20, 15, 10) at (1.5, 4, -2) from the point");
+    check_lit(Lb, "light b: (5, 6, 7) at (-3, 2.5, 1) from the point");
     const suspect sl[] = {
         {desc.ambient.r, "no light added: loop over tr->desc->lights and add each unblocked one's contribution"},
         {desc.ambient.r + La.r, "only the first light: loop over all n_lights"},
@@ -418,7 +457,7 @@ static void test_back_face_lights(void **state)
     color c = shade_phong(&view->tr, &sp, 0, rays);
     shading_release(view);
     color L = light_term(&desc, &sp, &under);
-    assert_true(L.r > 0.01);
+    check_lit(L, "the light below the floor, seen from below: n = -y");
     const suspect sf[] = {
         {desc.ambient.r, "the light below was skipped: in front means n . l > 0 for the shading normal n "
                          "(light_blocked judges it so), not the geometric normal hit.normal"},
@@ -463,7 +502,7 @@ static void test_shadow_policy_from_knobs(void **state)
         color c = shade_phong(&view->tr, &sp, 0, rays);
         shading_release(view);
         color L = light_term(&desc, &sp, &light);
-        assert_true(L.r > 0.01);
+        check_lit(L, "the light (49, 49, 49), 7 away");
         bool lit = p == EPS_FIXED;
         const suspect sk[] = {
             {lit ? desc.ambient.r : desc.ambient.r + L.r,

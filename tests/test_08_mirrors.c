@@ -115,6 +115,16 @@ static void check_count(long long expected, long long got, const char *input, co
                  mistake);
 }
 
+/* A count, a byte or a value that must stay within a bound: got <= bound
+ * (at_most) or got > bound (a NaN is neither), the message as check_count's. */
+static void check_bound(bool at_most, double bound, double got, const char *input, const char *what,
+                        const char *mistake)
+{
+    assert_true_why(at_most ? got <= bound : got > bound,
+                    "%s: %s\n    expected %s %.17g\n    got      %.17g\n    likely mistake: %s", input, what,
+                    at_most ? "at most" : "more than", bound, got, mistake);
+}
+
 static int add_shader(scene *desc, shader_kind kind, color diffuse, color k_m)
 {
     scene_shader s = scene_default_shader(kind);
@@ -214,7 +224,9 @@ static void test_mirror_ray_reaches_probe(void **state)
     /* from the mirror's point (60 from the origin: the offset is tiny), along r */
     assert_vec3_close(far_point, probe.r[0].p, 1e4 * REAL_EPSILON * 60);
     assert_close(0, vec3_length(vec3_cross(vec3_normalize(probe.r[0].d), vec3_normalize(r))), TOL(8));
-    assert_true(vec3_dot(probe.r[0].d, r) > 0);
+    check_bound(false, 0, vec3_dot(probe.r[0].d, r), input, "the probe's ray direction . r",
+                "the mirror ray goes back along -r: r = d - 2 (d . n) n, not 2 (d . n) n - d (README, \"The mirror "
+                "direction\")");
     const suspect_vec3 sw[] = {
         {{1, 1, 1}, "the path's weight was not carried: trace with next, not tr"},
         {{1, 1, 1}, "path_next asked with 1 instead of k_m: path_next(tr, depth, k_m, &next) multiplies the path's "
@@ -348,9 +360,12 @@ static void test_glazed_adds_to_chapter_07(void **state)
         /* chapter 07 alone on the same point */
         const stage_knobs aimed_07 = {.spawn = &knobs.phong.spawn, .phong = &knobs.phong};
         color L_07 = suite_trace(&desc, shade_phong, &aimed_07, (ray){eye, vec3_sub(far_point, eye)}, rays_07);
-        assert_true(L_07.r > 0.01); /* lit: the light is on the viewer's side */
         const char *input = describe("a glazed Phong plane, k_m = %s, one light, the backColor in the mirror direction",
                                      mirror ? "(0.5, 0.25, 0.125)" : "0");
+        check_bound(false, 0.01, L_07.r, input,
+                    "chapter 07's shade_phong alone, red (lit: the light is on the viewer's side)",
+                    "the test's expected value is chapter 07's shading, L_a + L_r, which the glazed surface adds "
+                    "k_m L_m to: chapter 07's shade_phong (run test_07_blinn_phong)");
         check_count(mirror, (long long)rays[RAY_REFLECTED], input, "reflected rays",
                     "one mirror ray when k_m is not 0, counted once");
         check_count((long long)rays_07[RAY_SHADOW], (long long)rays[RAY_SHADOW], input, "shadow rays",
@@ -496,8 +511,18 @@ static void test_furnace_mirror_sphere(void **state)
     path_knobs knobs = knobs_of(PATH_DEFAULT_DEPTH, PATH_DEFAULT_MIN_WEIGHT);
     image img;
     render_stats stats = render_glazed(&desc, &knobs, &img, side, side);
-    assert_true(suite_worst_byte(&img, desc.back_color.g) <= 2);
-    assert_true(stats.by_kind[RAY_REFLECTED] > (uint64_t)side * side / 4); /* the sphere is big in the view */
+    const char *furnace = "the mirror furnace: a mirror sphere (k_m = 1, black diffuse), a uniform background 0.5, no "
+                          "lights, 96 x 96 at the default --depth";
+    check_bound(true, 2, suite_worst_byte(&img, desc.back_color.g), furnace,
+                "the largest difference from the background, in display bytes (green)",
+                "the mirror must vanish (README, \"The furnace\"): each mirror ray leaves by spawn_ray(sp, "
+                "reflect(sp->r.d, sp->n), tracer_eps(tr)) and is traced with next at depth + 1, its radiance "
+                "returned; a black disc is a mirror term that brings nothing back (no ray traced, or its radiance "
+                "dropped), black speckles a mirror that sees itself");
+    check_bound(false, (double)((uint64_t)side * side / 4), (double)stats.by_kind[RAY_REFLECTED], furnace,
+                "reflected rays (the sphere is big in the view)",
+                "each eye ray on the sphere casts one mirror ray: count it, ++rays[RAY_REFLECTED], once path_next "
+                "says yes");
     image_free(&img);
     knobs.depth = 0;
     stats = render_glazed(&desc, &knobs, &img, side, side);
@@ -522,15 +547,28 @@ static void test_builtin_scene_rays(void **state)
     image img;
     render_stats cut = render_glazed(&desc, &knobs, &img, 32, 32);
     for (int k = 0; k < 32 * 32; k++)
-        assert_true(img.pixels[k].r >= 0 && isfinite(img.pixels[k].r));
+        assert_true_why(img.pixels[k].r >= 0 && isfinite(img.pixels[k].r),
+                        "the built-in scene (mirror_scene) at 32 x 32, the default --depth and --min-weight: pixel "
+                        "(i, j) = (%d, %d) (j from the bottom), red\n    expected finite and >= 0\n    got      %g\n"
+                        "    likely mistake: L_m is black (0, 0, 0) when path_next casts no ray, never left unset, and "
+                        "the glazed surface adds k_m L_m (README, \"Calling trace again\")",
+                        k % 32, k / 32, (double)img.pixels[k].r);
     image_free(&img);
     knobs.min_weight = 0;
     render_stats all = render_glazed(&desc, &knobs, &img, 32, 32);
     image_free(&img);
     assert_int_equal(32 * 32, all.by_kind[RAY_EYE]);
     assert_int_equal(0, all.by_kind[RAY_REFRACTED]);
-    assert_true(all.by_kind[RAY_REFLECTED] > 32 * 32 / 4); /* the floor fills the lower half */
-    assert_true(cut.by_kind[RAY_REFLECTED] <= all.by_kind[RAY_REFLECTED]);
+    check_bound(false, 32 * 32 / 4, (double)all.by_kind[RAY_REFLECTED],
+                "the built-in scene (mirror_scene) at 32 x 32, --min-weight 0",
+                "reflected rays (the glazed floor fills the lower half)",
+                "each eye ray on the glazed floor (k_m = 0.3) casts a mirror ray: count it, ++rays[RAY_REFLECTED], "
+                "once path_next says yes");
+    check_bound(true, (double)all.by_kind[RAY_REFLECTED], (double)cut.by_kind[RAY_REFLECTED],
+                "the built-in scene (mirror_scene) at 32 x 32, the default --min-weight 1e-3",
+                "reflected rays, against those with --min-weight 0",
+                "the weight cut-off only removes rays: ask path_next(tr, depth, k_m, &next), which applies "
+                "--min-weight, and trace with next, which carries the path's weight");
     scene_free(&desc);
 }
 

@@ -19,6 +19,44 @@
 
 static const double pi = 3.14159265358979323846;
 
+/* Why refract reports total internal reflection where a ray gets through. */
+static const char *const tir = "total internal reflection exactly when |S_t|^2 > 1, S_t = (eta_i / eta_t) S_i";
+
+/* Why a scene with glass casts no (or too few) refracted rays. */
+static const char *const no_transmitted = "the transmitted ray not traced: whenever glass_at says it transmits and "
+                                          "1 - R > 0, trace it along e.T with weight 1 - R (README, \"The glass "
+                                          "shader\")";
+
+/* refract(d, n, eta_i, eta_t, T, cos_t) transmits (`where` says at what
+ * angle); a failure names `why`. */
+static void expect_transmits(vec3 d, vec3 n, real eta_i, real eta_t, const char *where, const char *why, vec3 *T,
+                             real *cos_t)
+{
+    assert_true_why(
+        refract(d, n, eta_i, eta_t, T, cos_t),
+        "refract %s, from eta %g into %g: d = (%.9g, %.9g, %.9g), n = (%.9g, %.9g, %.9g)\n    expected true "
+        "(a transmitted ray)\n    got      false (total internal reflection)\n    likely mistake: %s",
+        where, (double)eta_i, (double)eta_t, (double)d.x, (double)d.y, (double)d.z, (double)n.x, (double)n.y,
+        (double)n.z, why);
+}
+
+/* R (of `input`) is above `bound`: R climbs to 1 at the critical angle. */
+static void expect_R_above(real R, real bound, const char *input, const char *why)
+{
+    assert_true_why(
+        R > bound,
+        "%s\n    expected R above %.9g (R climbs continuously to 1 at the critical angle)\n    got      %.17g\n"
+        "    likely mistake: %s",
+        input, (double)bound, (double)R, why);
+}
+
+/* What keeps Fresnel's and Schlick's R continuous up to 1 at the critical angle. */
+static const char *const exact_at_critical = "R = (r_s^2 + r_p^2) / 2 is 1 where cos_t = 0 (r_s = r_p = 1): "
+                                             "r_s and r_p as in the README, \"How much is reflected: Fresnel\"";
+static const char *const schlick_at_critical = "out of glass the cosine is cos_t (the side of the smaller index), "
+                                               "which goes to 0 at the critical angle: with cos_i, R is about 0.04 "
+                                               "there and jumps to 1";
+
 static unsigned long rng = 977; /* suite_uniform's state */
 
 /* A unit vector perpendicular to the unit vector n. */
@@ -48,7 +86,10 @@ static void test_refract_normal_incidence(void **state)
         for (int e = 0; e < 4; e++) {
             vec3 T = {0, 0, 0};
             real cos_t = -1;
-            assert_true(refract(d, n, etas[e][0], etas[e][1], &T, &cos_t));
+            expect_transmits(d, n, etas[e][0], etas[e][1], "head on (d = -n)",
+                             "head on |S_i| = 0, so |S_t|^2 = 0: the test for total internal reflection is "
+                             "|S_t|^2 > 1 (cos^2(theta_t) < 0), not the other way round",
+                             &T, &cos_t);
             assert_vec3_close(d, T, TOL(1));
             assert_close(1, cos_t, TOL(1));
         }
@@ -175,6 +216,13 @@ static shading_point glass_point(vec3 d, vec3 n_out)
     return sp;
 }
 
+/* glass_at's input k ulps of the sine from the critical angle out of glass, for a message. */
+static const char *critical_input(int k, int mode)
+{
+    return describe("glass_at, out of glass (1.5 into 1), sin(theta_i) = 1/1.5 %+d ulps, --fresnel=%s", k,
+                    fresnel_mode_names[mode]);
+}
+
 /* The critical angle out of glass (eta 1.5), theta_c = asin(1 / 1.5): a
  * direction whose sine is 1/1.5 give or take 64 ulps of it.  Below it the
  * light is transmitted (almost along the surface) and R is nearly 1, past
@@ -209,10 +257,26 @@ static void test_critical_angle(void **state)
                 /* 64 ulps below theta_c, sin^2(theta_t) is 1 less about 2 x 1.5 x 64 ulps: cos_t is
                  * at most sqrt(1024 REAL_EPSILON), and R falls from 1 by a few times cos_t */
                 real near = real_sqrt(1024 * REAL_EPSILON);
-                assert_true(vec3_is_finite(e.T) && isfinite(e.cos_t));
-                assert_true(e.cos_t >= 0 && e.cos_t < near);
+                assert_true_why(
+                    vec3_is_finite(e.T) && isfinite(e.cos_t),
+                    "%s, transmitted: T and cos_t\n    expected finite\n    got      T = (%g, %g, %g), cos_t = "
+                    "%g\n    likely mistake: the test |S_t|^2 > 1 (cos^2(theta_t) < 0) made before the square "
+                    "root returns false past the critical angle; another test lets sqrt(1 - |S_t|^2) of a "
+                    "negative number through (README, \"Total internal reflection\")",
+                    critical_input(k, mode), (double)e.T.x, (double)e.T.y, (double)e.T.z, (double)e.cos_t);
+                assert_true_why(
+                    e.cos_t >= 0 && e.cos_t < near,
+                    "%s, transmitted: cos_t\n    expected 0 <= cos_t < %.3g (T runs almost along the surface)\n"
+                    "    got      %.17g\n    likely mistake: %s",
+                    critical_input(k, mode), (double)near, (double)e.cos_t,
+                    e.cos_t < 0 ? "*cos_t is cos(theta_t) = sqrt(cos^2(theta_t)), positive, not T . n"
+                                : "cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i) with r = eta_i / eta_t = 1.5 "
+                                  "here is 0 at the critical angle: an upside-down ratio, or cos(theta_t) "
+                                  "taken as cos(theta_i), stays far from 0");
                 assert_close(1, vec3_length(e.T), TOL(2));
-                assert_true(e.R > 1 - 8 * near); /* R is continuous: it reaches 1 at theta_c */
+                /* R is continuous: it reaches 1 at theta_c */
+                expect_R_above(e.R, 1 - 8 * near, describe("%s, transmitted: R", critical_input(k, mode)),
+                               mode == FRESNEL_SCHLICK ? schlick_at_critical : exact_at_critical);
                 transmitted++;
             } else {
                 assert_close(1, e.R, 0);
@@ -220,11 +284,21 @@ static void test_critical_angle(void **state)
             }
         }
     }
-    assert_true(transmitted > 0 && reflected > 0);
+    assert_true_why(
+        transmitted > 0 && reflected > 0,
+        "glass_at, out of glass (1.5 into 1), sin(theta_i) = 1/1.5 from -64 to +64 ulps, both --fresnel modes\n"
+        "    expected some directions transmitted (below theta_c) and some totally reflected (past it)\n"
+        "    got      %d transmitted, %d totally reflected\n    likely mistake: %s",
+        transmitted, reflected,
+        reflected == 0 ? "past the critical angle refract returns false (|S_t|^2 > 1, cos^2(theta_t) < 0), "
+                         "whatever the rounding: a negative cos^2(theta_t) clamped to 0 transmits along the "
+                         "surface instead"
+                       : "refract reports total internal reflection below the critical angle: the test is "
+                         "exactly |S_t|^2 > 1, cos^2(theta_t) = (1 - r^2) + r^2 cos^2(theta_i) < 0; a margin "
+                         "in it, or >= 1, stops too early");
     double theta_c = asin(1 / 1.5);
     vec3 T;
     real cos_t;
-    const char *tir = "total internal reflection exactly when |S_t|^2 > 1, S_t = (eta_i / eta_t) S_i";
     if (!refract(incoming(n, t, 0.999 * theta_c), n, (real)1.5, 1, &T, &cos_t))
         fail_msg("refract out of glass (1.5 into 1) at 0.999 theta_c\n    expected true (transmitted)\n"
                  "    got      false\n    likely mistake: %s",
@@ -243,7 +317,11 @@ static void test_critical_angle(void **state)
                  "the way out of a transmission",
                  (double)T.x, (double)T.y, (double)T.z, (double)cos_t);
     /* into glass there is no critical angle: 89.9 degrees still transmits */
-    assert_true(refract(incoming(n_out, tangent_of(n_out), 89.9 * pi / 180), n_out, 1, (real)1.5, &T, &cos_t));
+    expect_transmits(incoming(n_out, tangent_of(n_out), 89.9 * pi / 180), n_out, 1, (real)1.5,
+                     "into glass at 89.9 degrees",
+                     "into glass there is no critical angle: r = eta_i / eta_t is below 1, so |S_t| < |S_i| <= 1; an "
+                     "upside-down ratio (eta_t / eta_i) reports total internal reflection here",
+                     &T, &cos_t);
 }
 
 /* ---- Fresnel -------------------------------------------------------------------------------- */
@@ -372,7 +450,13 @@ static void test_r_plus_t(void **state)
                                       "fraction",
                                       k, (double)eta_i, (double)eta_t),
                              "energy is conserved: R + T = 1 (r_s, r_p and their average as the lecture's)", sr, 1);
-            assert_true(R >= 0 && R <= 1);
+            assert_true_why(R >= 0 && R <= 1,
+                            "fresnel_exact at theta_i = %d degrees from eta %g into %g (cos_i = %.9g, cos_t = %.9g)\n"
+                            "    expected R in [0, 1]\n    got      %.17g\n    likely mistake: %s",
+                            k, (double)eta_i, (double)eta_t, (double)cos_i, (double)cos_t, (double)R,
+                            R > 1 ? "r_s^2 + r_p^2 without the / 2: unpolarised light is their average, R = (r_s^2 + "
+                                    "r_p^2) / 2"
+                                  : "r_s and r_p not squared: they are amplitudes, R = (r_s^2 + r_p^2) / 2");
             checked++;
         }
     }
@@ -410,9 +494,16 @@ static void test_schlick_cosines(void **state)
     vec3 n = vec3_make(0, 0, 1), t = vec3_make(1, 0, 0), T;
     real cos_t;
     vec3 d = incoming(n, t, 0.9999 * asin(1 / 1.5));
-    assert_true(refract(d, n, (real)1.5, 1, &T, &cos_t));
-    assert_true(fresnel_schlick(-vec3_dot(d, n), cos_t, (real)1.5, 1) > (real)0.9);
-    assert_true(fresnel_exact(-vec3_dot(d, n), cos_t, (real)1.5, 1) > (real)0.9);
+    expect_transmits(d, n, (real)1.5, 1, "out of glass at 0.9999 theta_c", tir, &T, &cos_t);
+    real cos_i = -vec3_dot(d, n);
+    expect_R_above(fresnel_schlick(cos_i, cos_t, (real)1.5, 1), (real)0.9,
+                   describe("fresnel_schlick(cos_i = %.9g, cos_t = %.9g, 1.5, 1), out of glass at 0.9999 theta_c",
+                            (double)cos_i, (double)cos_t),
+                   schlick_at_critical);
+    expect_R_above(fresnel_exact(cos_i, cos_t, (real)1.5, 1), (real)0.9,
+                   describe("fresnel_exact(cos_i = %.9g, cos_t = %.9g, 1.5, 1), out of glass at 0.9999 theta_c",
+                            (double)cos_i, (double)cos_t),
+                   exact_at_critical);
     /* no surface at all: nothing is reflected, whatever the mode */
     assert_close(0, fresnel(FRESNEL_SCHLICK, (real)0.3, (real)0.3, (real)1.2, (real)1.2), 0);
     assert_close(0, fresnel(FRESNEL_EXACT, (real)0.3, (real)0.3, (real)1.2, (real)1.2), 0);
@@ -476,7 +567,13 @@ static ray probe_ray_at_depth_2(void)
             assert_int_equal(-1, found);
             found = k;
         }
-    assert_true(found >= 0);
+    assert_true_why(
+        found >= 0,
+        "the probe behind the glass, --depth 2\n    expected a ray reaching it at depth 2 (into the glass, out "
+        "of it, to the probe)\n    got      none\n    likely mistake: the transmitted ray not traced (its weight "
+        "1 - R is above 0 here), or depth + 1 given to transmitted_radiance or mirror_radiance: each traces one "
+        "level deeper itself (README, \"The glass shader\"); or refract's T turned back to the incoming side: "
+        "T = r d + (r cos(theta_i) - cos(theta_t)) n (test_snell_law names refract's mistakes)");
     return probe.r[found];
 }
 
@@ -504,7 +601,13 @@ static void test_sphere_centre_undeviated(void **state)
      * the offsets of spawn_ray are 32 ulps of that, in and out; 10 away from
      * the exit point, a direction error of TOL(4) adds TOL(40) */
     assert_close(0, vec3_length(vec3_cross(vec3_normalize(out.d), along)), TOL(4));
-    assert_true(vec3_dot(out.d, along) > 0);
+    assert_true_why(
+        vec3_dot(out.d, along) > 0,
+        "a ray through the centre of a glass sphere of index 1.5, along d = (%.9g, %.9g, %.9g), leaving it\n"
+        "    expected it to go on along d (out.d . d > 0)\n    got      out.d = (%.9g, %.9g, %.9g)\n"
+        "    likely mistake: C_t = +cos(theta_t) n turns a head-on ray back: the transmitted ray goes on to the "
+        "far side, T = r d + (r cos(theta_i) - cos(theta_t)) n",
+        (double)along.x, (double)along.y, (double)along.z, (double)out.d.x, (double)out.d.y, (double)out.d.z);
     vec3 to_c = vec3_sub(c, out.p);
     assert_close(0, vec3_length(vec3_cross(to_c, vec3_normalize(out.d))), TOL(200));
     assert_int_equal(2, rays[RAY_REFRACTED]); /* in, out */
@@ -589,7 +692,18 @@ static void test_total_internal_reflection_rays(void **state)
         if (tir)
             assert_close(0, L.g, 0);
         else
-            assert_true(L.g > 0 && L.g < desc.back_color.g);
+            assert_true_why(L.g > 0 && L.g < desc.back_color.g,
+                            "shade_glass, a ray from inside a glass block at %.1f degrees (below the critical angle "
+                            "%.1f), --depth 1, background %g: L.g\n    expected between 0 and the background ((1 - R) "
+                            "B: the refracted ray leaves to the background, the reflected one brings black)\n"
+                            "    got      %.17g\n    likely mistake: %s",
+                            angles[k], theta_c, (double)desc.back_color.g, (double)L.g,
+                            L.g > 0 ? "L_transmitted not multiplied by 1 - R: L = R L_reflected + (1 - R) "
+                                      "L_transmitted"
+                                    : "the refracted ray (it was cast) brought nothing: its L not added (L = R "
+                                      "L_reflected + (1 - R) L_transmitted), or refract's T turned back into the "
+                                      "glass: T = r d + (r cos(theta_i) - cos(theta_t)) n goes on to the far side "
+                                      "(test_snell_law names refract's mistakes)");
     }
     scene_free(&desc);
 }
@@ -727,13 +841,26 @@ static void test_furnace_glass_sphere(void **state)
         int worst = suite_worst_byte(&img, (real)0.5);
         if (worst > 2)
             fail_msg("--fresnel=%s: a pixel %d/255 off the background", fresnel_mode_names[mode], worst);
-        assert_true(stats.by_kind[RAY_REFRACTED] > (uint64_t)side * side / 4);
+        assert_true_why(
+            stats.by_kind[RAY_REFRACTED] > (uint64_t)side * side / 4,
+            "the glass furnace (a glass sphere of index 1.5 filling most of the view) at %dx%d, --fresnel=%s\n"
+            "    expected more than %d refracted rays\n    got      %llu\n    likely mistake: %s",
+            side, side, fresnel_mode_names[mode], side * side / 4, (unsigned long long)stats.by_kind[RAY_REFRACTED],
+            no_transmitted);
         image_free(&img);
     }
     knobs = knobs_of(2, PATH_DEFAULT_MIN_WEIGHT);
     image img;
     render_glass(&desc, &knobs, &img, side, side);
-    assert_true(suite_worst_byte(&img, (real)0.5) > 2);
+    int worst = suite_worst_byte(&img, (real)0.5);
+    assert_true_why(
+        worst > 2,
+        "the glass furnace at --depth 2, %dx%d\n    expected a pixel more than 2/255 off the background (a path "
+        "that stays inside longer brings black at the depth's end)\n    got      at most %d/255 off\n"
+        "    likely mistake: the rays traced at a depth other than the point's own: give mirror_radiance and "
+        "transmitted_radiance depth as it is; each traces one level deeper, and path_next refuses a ray past "
+        "--depth",
+        side, side, worst);
     image_free(&img);
     scene_free(&desc);
 }
@@ -802,7 +929,10 @@ static void test_index_one_sphere_invisible(void **state)
     scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = add_glass(&desc, 1),
                                              .center = {12.4, 2.4, 12}, .radius = (real)1.5});
     render_stats stats = render_glass(&desc, &knobs, &with, side, side);
-    assert_true(stats.by_kind[RAY_REFRACTED] > (uint64_t)side * side / 8); /* it is in view */
+    assert_true_why(stats.by_kind[RAY_REFRACTED] > (uint64_t)side * side / 8, /* it is in view */
+                    "a glass sphere of index 1 (R = 0) filling the middle of a %dx%d view\n    expected more than %d "
+                    "refracted rays\n    got      %llu\n    likely mistake: %s",
+                    side, side, side * side / 8, (unsigned long long)stats.by_kind[RAY_REFRACTED], no_transmitted);
     assert_int_equal(0, stats.by_kind[RAY_REFLECTED]);                    /* R = 0 exactly: no mirror ray */
     long same = 0;
     for (long k = 0; k < (long)side * side; k++) {
@@ -835,9 +965,18 @@ static void test_rays_only_where_needed(void **state)
     scene_init(&desc);
     assert_int_equal(0, glass_scene(&desc));
     stats = render_glass(&desc, &knobs, &img, 32, 32);
-    assert_true(stats.by_kind[RAY_REFRACTED] > 0);
+    assert_true_why(
+        stats.by_kind[RAY_REFRACTED] > 0,
+        "the glass scene (a glass sphere over a floor) at 32x32\n    expected refracted rays\n    got      none\n"
+        "    likely mistake: %s",
+        no_transmitted);
     for (int k = 0; k < 32 * 32; k++)
-        assert_true(img.pixels[k].r >= 0 && isfinite(img.pixels[k].r));
+        assert_true_why(
+            img.pixels[k].r >= 0 && isfinite(img.pixels[k].r),
+            "the glass scene at 32x32, pixel (%d, %d): red\n    expected a finite value >= 0\n    got      "
+            "%.17g\n    likely mistake: a weight outside [0, 1] (R from fresnel, 1 - R for the transmitted ray) "
+            "or a NaN from refract (the test |S_t|^2 > 1 comes before the square root)",
+            k % 32, k / 32, (double)img.pixels[k].r);
     image_free(&img);
     scene_free(&desc);
 }

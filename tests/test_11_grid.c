@@ -25,6 +25,57 @@ static const grid_knobs grid_defaults = GRID_KNOBS_DEFAULT; /* chapter 11's rend
 
 #include "grid_cases.h"
 
+/* What a query found, for a message: "surface K at t = T", or "no hit". */
+static const char *found_what(bool found, const hit_record *hit)
+{
+    return found ? describe("surface %d at t = %.17g", hit->surface, (double)hit->t) : "no hit";
+}
+
+/* The march of r through g, which passes every surface (`what` says where),
+ * finds nothing; the cells visited and the tests made are added to *counts. */
+static void expect_no_hit(const grid *g, ray r, const char *what, grid_counts *counts)
+{
+    hit_record hit;
+    const bool found = grid_intersect_counted(g, r, 0, REAL_INFINITY, &hit, counts);
+    assert_true_why(
+        !found,
+        "grid_intersect_counted(ray from (%.17g, %.17g, %.17g) along (%.17g, %.17g, %.17g), %s, passing every "
+        "surface)\n    expected no hit\n    got      %s\n    likely mistake: the march keeps only what "
+        "surface_intersect finds in the window (test_surface, given), and no exercise changes that: a hit on a "
+        "ray that passes every surface means the given part of grid_march.c was changed (README, \"The same "
+        "answer as the linear scan\")",
+        (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z, what,
+        found_what(found, &hit));
+}
+
+/* The counts of a grid the test relies on (`holds`: they are as `expected`
+ * says) for the surfaces `build` describes; a failure names grid_resolution. */
+static void expect_counts(const grid *g, bool holds, const char *build, const char *expected)
+{
+    assert_true_why(
+        holds,
+        "grid_build(%s)\n    expected %s\n    got      %d x %d x %d cells\n    likely mistake: grid_resolution: "
+        "s = (min(lambda N, C) / product of the spanned extents)^(1/k), n_a = max(round(e_a s), 1), a flat "
+        "axis 1 (README, \"The grid's box and resolution\"; test_resolution names its mistakes)",
+        build, expected, g->n[0], g->n[1], g->n[2]);
+}
+
+/* Along axis a, the grid *got (built from the surfaces `build` describes)
+ * has the cells of one built before from the same box and number of
+ * surfaces: n of size cell from lo. */
+static void expect_same_cells(const grid *got, int a, long n, real lo, real cell, const char *build)
+{
+    assert_true_why(
+        got->n[a] == n && vec3_axis(got->lo, a) == lo && vec3_axis(got->cell, a) == cell,
+        "grid_build(%s), along %c\n    expected the cells of a grid built before from the same box and number "
+        "of surfaces: %ld from %.17g, each %.17g\n    got      %d from %.17g, each %.17g\n    likely mistake: "
+        "grid_resolution gave other counts for the same extents, number of surfaces, density and cap: the "
+        "counts depend on those alone (nothing read from n[] before it is written, nothing kept from an "
+        "earlier call; README, \"The grid's box and resolution\")",
+        build, "xyz"[a], n, (double)lo, (double)cell, got -> n[a], (double)vec3_axis(got->lo, a),
+        (double)vec3_axis(got->cell, a));
+}
+
 /* ---- the knobs ------------------------------------------------------------------------- */
 
 /* The counts a resolution rule gives when the cap does not bind: `cells` cells
@@ -195,7 +246,18 @@ static void test_resolution(void **state)
     assert_int_equal(20, g.n[2]);
     assert_int_equal(8000, g.n_cells);
     /* every sphere lies in 1 to 8 cells */
-    assert_true(g.n_refs >= 1000 && g.n_refs <= 8000);
+    assert_true_why(
+        g.n_refs >= 1000 && g.n_refs <= 8000,
+        "grid_build(1000 spheres of radius 0.01 in a box 8 x 2 x 4, density 8: 40 x 10 x 20 cells of about 0.2)\n"
+        "    expected 1000 to 8000 cell entries (every sphere lies in 1 to 8 cells)\n    got      %ld\n"
+        "    likely mistake: %s",
+        g.n_refs,
+        g.n_refs < 1000 ? "a sphere listed in no cell: grid_cell_range gives cells first = ceil(f_lo) - 1 to "
+                          "last = floor(f_hi) (README, \"Listing the surfaces\"; test_cell_range names its "
+                          "mistakes)"
+                        : "a sphere listed in cells its box does not overlap: first = ceil(f_lo) - 1, last = "
+                          "floor(f_hi), no cell more on either side (README, \"Listing the surfaces\"; "
+                          "test_cell_range names its mistakes)");
     assert_true(grid_memory(&g) >= (size_t)(g.n_cells + 1 + g.n_refs) * 4);
     grid_free(&g);
     surface_list_free(&list);
@@ -244,8 +306,7 @@ static void test_march_counts(void **state)
     /* along +x at y = 0.6, z = 0.45: through all 10 cells, missing everything */
     ray r = {{-1, (real)0.6, (real)0.45}, {1, 0, 0}};
     grid_counts counts = {0, 0};
-    hit_record hit;
-    assert_false(grid_intersect_counted(&g, r, 0, REAL_INFINITY, &hit, &counts));
+    expect_no_hit(&g, r, "through a row of 10 cells", &counts);
     assert_int_equal(10, counts.cells);
     assert_int_equal(10 + 8, counts.tests); /* the sliver in all 10 cells, a sphere at each corner */
     grid_free(&g);
@@ -442,8 +503,7 @@ static bool cells_along(const grid *g, ray r, int *cells)
 static void expect_march_cells(const grid *g, ray r, const char *what, int cells)
 {
     grid_counts counts = {0, 0};
-    hit_record hit;
-    assert_false(grid_intersect_counted(g, r, 0, REAL_INFINITY, &hit, &counts));
+    expect_no_hit(g, r, what, &counts);
     if (counts.cells != (uint64_t)cells)
         fail_msg("grid_intersect_counted(%s: p = (%.17g, %.17g, %.17g), d = (%.17g, %.17g, %.17g)) through a grid of %d "
                  "x %d x %d empty cells\n    expected %d cells visited (%d plane crossings + 1)\n"
@@ -478,17 +538,16 @@ static void expect_entry_edges(const grid *g)
     const ray farther = {{g->hi.x - 2, g->hi.y + 2 + reach * (real)1.5, 0}, {1, -1, 0}};
     for (int k = 0; k < 3; k++) {
         const ray r = k == 2 ? farther : k ? past_edge : on_face;
+        const char *where = k == 2 ? "passing the box's edge x = hi_x, y = hi_y outside by 1.5 times the reach of "
+                                     "the slack, within the two slacks together"
+                            : k    ? "passing the box's edge x = hi_x, y = hi_y outside by half the reach of the slack"
+                                   : "in the plane of the box's face y = hi_y";
         grid_counts counts = {0, 0};
-        hit_record hit;
-        assert_false(grid_intersect_counted(g, r, 0, REAL_INFINITY, &hit, &counts));
+        expect_no_hit(g, r, where, &counts);
         if (counts.cells == 0)
             fail_msg("grid_intersect_counted(ray from (%.17g, %.17g, %.17g) along (%g, %g, 0), %s)\n    expected at "
                      "least 1 cell visited\n    got      0\n    likely mistake: %s",
-                     (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y,
-                     k == 2 ? "passing the box's edge x = hi_x, y = hi_y outside by 1.5 times the reach of the "
-                              "slack, within the two slacks together"
-                     : k    ? "passing the box's edge x = hi_x, y = hi_y outside by half the reach of the slack"
-                            : "in the plane of the box's face y = hi_y",
+                     (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, where,
                      k == 2 ? "enter with the slack on one side only: the entering t is lowered by slack_a AND the "
                               "leaving t raised by slack_a, so that the gap between two axes' crossings is covered by "
                               "both slacks"
@@ -524,7 +583,7 @@ static void expect_entry(const grid *g)
     int cells = 0;
     assert_true(cells_along(g, down, &cells));
     counts = (grid_counts){0, 0};
-    assert_false(grid_intersect_counted(g, down, 0, REAL_INFINITY, &hit, &counts));
+    expect_no_hit(g, down, "every component negative, through the grid's box", &counts);
     if (counts.cells == 0)
         fail_msg("grid_intersect_counted(ray from (%.17g, %.17g, %.17g) along (%.17g, %.17g, %.17g), every component "
                  "negative, through the grid's box)\n    expected %d cells visited\n    got      0 (the ray missed "
@@ -553,7 +612,9 @@ static void test_dda_cells(void **state)
     grid g;
     grid_options opt = {.density = 100, .max_cells = 1000};
     build_grid(&g, &list, opt);
-    assert_true(g.n[0] > 3 && g.n[1] > 3 && g.n[2] > 1);
+    expect_counts(&g, g.n[0] > 3 && g.n[1] > 3 && g.n[2] > 1,
+                  "8 tiny spheres at the corners of [-2, 3] x [1, 4] x [-1, 1], density 100, cap 1000",
+                  "more than 3 x 3 x 1 cells (the rays must cross cell planes)");
     expect_entry(&g);
     int checked = 0;
     for (int k = 0; k < 3000; k++) {
@@ -598,7 +659,9 @@ static void test_dda_axis_steps(void **state)
                                         0, i + m[0] * (j + m[1] * k));
     grid g;
     build_grid(&g, &list, (grid_options){.density = 8, .max_cells = 1L << 20});
-    assert_true(g.n[0] > m[0] && g.n[1] > m[1] && g.n[2] > m[2]); /* more cells than spheres along every axis */
+    expect_counts(&g, g.n[0] > m[0] && g.n[1] > m[1] && g.n[2] > m[2],
+                  "60 tiny spheres on a lattice 5 x 4 x 3, spacings 0.37, 0.61, 0.29, density 8",
+                  "more cells than spheres along every axis (above 5 x 4 x 3)");
     const vec3 axes[3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
     for (int s = 0; s < list.n; s++) {
         const int at[3] = {s % m[0], s / m[0] % m[1], s / (m[0] * m[1])};
@@ -638,16 +701,15 @@ static void test_dda_axis_steps(void **state)
                              "along an axis), or dda_step gave false at once",
                              s, sign > 0 ? '+' : '-', "xyz"[a], (double)(2 * radius), want.surface, "xyz"[a]);
                 if (!same_hit(fw, &want, fg, &got))
-                    fail_msg("grid_intersect(ray from sphere %d's centre (%.17g, %.17g, %.17g) along %c%c, t_min = "
-                             "%g) through a grid of %d x %d x %d cells\n    expected sphere %d at t = %.17g\n"
-                             "    got      %s %d at t = %.17g\n    likely mistake: dda_step along %c with step %+d: "
-                             "the index i_%c moves by step, and next_%c is the crossing of plane i_%c%s, recomputed each "
-                             "step",
-                             s, (double)r.p.x, (double)r.p.y, (double)r.p.z, sign > 0 ? '+' : '-', "xyz"[a],
-                             (double)(2 * radius), g.n[0], g.n[1], g.n[2], want.surface, (double)want.t,
-                             fg ? "sphere" : "no hit, surface", fg ? got.surface : -1, fg ? (double)got.t : 0.0,
-                             "xyz"[a], sign, "xyz"[a], "xyz"[a], "xyz"[a],
-                             sign > 0 ? " + 1" : "");
+                    fail_msg(
+                        "grid_intersect(ray from sphere %d's centre (%.17g, %.17g, %.17g) along %c%c, t_min = "
+                        "%g) through a grid of %d x %d x %d cells\n    expected sphere %d at t = %.17g\n"
+                        "    got      %s\n    likely mistake: dda_step along %c with step %+d: "
+                        "the index i_%c moves by step, and next_%c is the crossing of plane i_%c%s, recomputed each "
+                        "step",
+                        s, (double)r.p.x, (double)r.p.y, (double)r.p.z, sign > 0 ? '+' : '-', "xyz"[a],
+                        (double)(2 * radius), g.n[0], g.n[1], g.n[2], want.surface, (double)want.t,
+                        found_what(fg, &got), "xyz"[a], sign, "xyz"[a], "xyz"[a], "xyz"[a], sign > 0 ? " + 1" : "");
             }
     }
     grid_free(&g);
@@ -684,7 +746,10 @@ static void test_dda_no_accumulation(void **state)
         const grid_options opt = {.density = 5000, .max_cells = 1L << 20};
         grid g;
         build_grid(&g, &list, opt);
-        assert_true(g.n[0] > 100000 && g.n[1] == 1 && g.n[2] == 1);
+        expect_counts(&g, g.n[0] > 100000 && g.n[1] == 1 && g.n[2] == 1,
+                      describe("%d spheres in a box %.9g x 0.002 x 0.002, density 5000, cap 2^20", 2 + 4 * PLANES,
+                               (double)L + 0.002),
+                      "over 100000 x 1 x 1 cells (across, 0.002 is a fraction of a cell: one)");
         const long cells = g.n[0];
         const real lo = g.lo.x, cell = g.cell.x, margin = g.margin;
         grid_free(&g);
@@ -712,7 +777,8 @@ static void test_dda_no_accumulation(void **state)
                             vec3_make((real)dir, 0, 0)};
         }
         build_grid(&g, &list, opt);
-        assert_true(g.n[0] == cells && g.lo.x == lo && g.cell.x == cell); /* the same grid */
+        expect_same_cells(&g, 0, cells, lo, cell, /* the same grid */
+                          describe("%d surfaces in the same box %.9g long, density 5000", 2 + 4 * PLANES, (double)L));
         for (int q = 0; q < 2 * PLANES; q++) {
             hit_record want, got;
             bool fw = surfaces_intersect(&list, rays[q], 0, REAL_INFINITY, &want);
@@ -721,13 +787,13 @@ static void test_dda_no_accumulation(void **state)
             if (!same_hit(fw, &want, fg, &got))
                 fail_msg("grid_intersect(ray from (%.17g, %.17g, %.17g) along %cx) through %ld cells of %.17g along "
                          "x\n    expected the small sphere (surface %d) at t = %.17g, just past the boundary of cell "
-                         "%ld\n    got      %s %d at t = %.17g\n    likely mistake: next_x gathered rounding: compute "
+                         "%ld\n    got      %s\n    likely mistake: next_x gathered rounding: compute "
                          "it from the plane at each step (crossing(g, a, plane, r, inv_d)), not by adding a t step "
                          "per cell; or the march stopped at the first cell holding a hit (test_stop_rule tells "
                          "which)",
                          (double)rays[q].p.x, (double)rays[q].p.y, (double)rays[q].p.z, q % 2 ? '-' : '+', cells,
                          (double)cell, want.surface, (double)want.t, q % 2 ? cells - planes[q / 2] : planes[q / 2],
-                         fg ? "surface" : "no hit, surface", fg ? got.surface : -1, fg ? (double)got.t : 0.0);
+                         found_what(fg, &got));
         }
         grid_free(&g);
         surface_list_free(&list);
@@ -741,8 +807,8 @@ static bool march_in_row(surface_list *list, const grid *g, int a, ray r, int ex
 {
     grid h;
     build_grid(&h, list, grid_default_options());
-    assert_true(h.n[a] == g->n[a] && vec3_axis(h.lo, a) == vec3_axis(g->lo, a) &&
-                vec3_axis(h.cell, a) == vec3_axis(g->cell, a)); /* the same cells */
+    expect_same_cells(&h, a, g->n[a], vec3_axis(g->lo, a), vec3_axis(g->cell, a), /* the same cells */
+                      "the stop rule's case: the same box, two surfaces added");
     assert_true(surfaces_intersect(list, r, 0, REAL_INFINITY, want) && want->surface == expected);
     *counts = (grid_counts){0, 0};
     bool found = grid_intersect_counted(&h, r, 0, REAL_INFINITY, got, counts);
@@ -773,9 +839,9 @@ static void expect_stop_in_this_cell(const grid *g)
     if (!same_hit(true, &want, found, &got) || counts.cells != 5)
         fail_msg("grid_intersect_counted(ray along +x through a row of %d cells of %.17g: a triangle hit at x = %.17g "
                  "and a sphere hit at x = %.17g, both in cell 4)\n    expected sphere 9 at t = %.17g, 5 cells "
-                 "visited\n    got      %s %d at t = %.17g, %llu cells\n    likely mistake: %s",
-                 g->n[0], (double)cell, (double)x_A, (double)x_B, (double)want.t, found ? "surface" : "no hit, surface",
-                 found ? got.surface : -1, found ? (double)got.t : 0.0, (unsigned long long)counts.cells,
+                 "visited\n    got      %s, %llu cells\n    likely mistake: %s",
+                 g->n[0], (double)cell, (double)x_A, (double)x_B, (double)want.t, found_what(found, &got),
+                 (unsigned long long)counts.cells,
                  found && got.surface == 8 && counts.cells == 4
                      ? "the stop rule tested the next cell's far boundary: the march ends once the best hit lies "
                        "before the far boundary of the cell being visited (next_a of this cell, minus the slack)"
@@ -828,20 +894,20 @@ static void expect_stop_slack(const grid *g, int a)
     grid_counts counts;
     bool found = march_in_row(&list, g, a, r, 8, &want, &got, &counts);
     if (!same_hit(true, &want, found, &got) || counts.cells != 5)
-        fail_msg("grid_intersect_counted(ray along +%c through a row of %d cells: a triangle hit at t = %.17g, half the "
-                 "slack %.3g before cell 3's far boundary at t = %.17g)\n    expected the triangle at t = %.17g, 5 "
-                 "cells visited (cell 4 too)\n    got      %s %d at t = %.17g, %llu cells\n    likely mistake: %s",
-                 "xy"[a], g->n[a], (double)want.t, (double)slack[a], (double)next, (double)want.t,
-                 found ? "surface" : "no hit, surface", found ? got.surface : -1, found ? (double)got.t : 0.0,
-                 (unsigned long long)counts.cells,
-                 counts.cells == 4 ? a ? "the stop rule with another axis's slack: the slack is slack_a of the axis a "
-                                         "the cell ends by (here y; x's is 0 along y); or without the slack (or with "
-                                         "it added): stop only once t_best <= next_a - slack_a"
-                                       : "the stop rule without the slack (or with it added): a hit within the slack "
-                                         "of the boundary may be a point beyond it, rounded; stop only once t_best <= "
-                                         "next_a - slack_a"
-                                   : "the march ends in the cell that holds the best hit, allowing for the slack: "
-                                     "t_best <= next_a - slack_a");
+        fail_msg(
+            "grid_intersect_counted(ray along +%c through a row of %d cells: a triangle hit at t = %.17g, half the "
+            "slack %.3g before cell 3's far boundary at t = %.17g)\n    expected the triangle at t = %.17g, 5 "
+            "cells visited (cell 4 too)\n    got      %s, %llu cells\n    likely mistake: %s",
+            "xy"[a], g -> n[a], (double)want.t, (double)slack[a], (double)next, (double)want.t, found_what(found, &got),
+            (unsigned long long)counts.cells,
+            counts.cells == 4 ? a ? "the stop rule with another axis's slack: the slack is slack_a of the axis a "
+                                    "the cell ends by (here y; x's is 0 along y); or without the slack (or with "
+                                    "it added): stop only once t_best <= next_a - slack_a"
+                                  : "the stop rule without the slack (or with it added): a hit within the slack "
+                                    "of the boundary may be a point beyond it, rounded; stop only once t_best <= "
+                                    "next_a - slack_a"
+                              : "the march ends in the cell that holds the best hit, allowing for the slack: "
+                                "t_best <= next_a - slack_a");
 }
 
 /* The stop rule: corner spheres fix the grid's box [0, 10] x [0, 1] x [0, 1]
@@ -867,9 +933,8 @@ static void test_stop_rule(void **state)
     const uint64_t cells = (uint64_t)((real)2.9 / g.cell.x) + 1; /* cells 0 .. B's, the first at x = -margin */
     if (!same_hit(true, &want, found, &got))
         fail_msg("grid_intersect(ray along +x through a grid of %d cells along x)\n    expected sphere 9 at t = %.17g "
-                 "(x = 2.9)\n    got      %s %d at t = %.17g\n    likely mistake: %s",
-                 g.n[0], (double)want.t, found ? "surface" : "no hit, surface", found ? got.surface : -1,
-                 found ? (double)got.t : 0.0,
+                 "(x = 2.9)\n    got      %s\n    likely mistake: %s",
+                 g.n[0], (double)want.t, found_what(found, &got),
                  found && got.surface == 8 ? "the march stopped at the first cell holding a hit (the triangle, listed "
                                              "from cell 1 on, is hit at x = 5); a hit counts only once it lies in "
                                              "the cell being visited"
