@@ -78,9 +78,10 @@ renderer uses your chapters 1 to N, so finish them in order or take the earlier 
 with `REFERENCE=`.  `make grade` always links the reference for the other chapters: your points for a
 chapter depend on that chapter's files only.  `make test` runs every suite on all your files at once (it
 fails until every chapter is done).  Where the text below says `make` renders into `out/`, in this copy
-your images go to `out-student/` and your renderers to `build-student/`; `out/` and `build/` hold the
-reference's, once `make STUDENT=0` has built them.  So do the other builds' folders: `make REAL=float`
-here builds into `build-float-student/` and renders into `out-float-student/`.
+your images go to `out-student/` and your renderers and suites to `build-student/` (the text's
+`build/tests/test_02_sphere` is your `build-student/tests/test_02_sphere`); `out/` and `build/` hold the
+reference's, once `make STUDENT=0` has built them.  Every other build's folders end in `-student` too:
+`make REAL=float` builds into `build-float-student/` and renders into `out-float-student/`.
 
 TEXT
 )
