@@ -475,7 +475,7 @@ static void test_tangent_rays_from_the_surface(void **state)
 {
     (void)state;
     unsigned long seed = 2024;
-    long bad = 0, with_roots = 0;
+    long bad = 0, with_roots = 0, behind_bad = 0;
     for (int k = 0; k < 20000; k++) {
         const double R = pow(10, 5 * suite_uniform(&seed) - 2), spread = pow(10, 3 * suite_uniform(&seed));
         const vec3 centre = suite_random_unit(&seed);
@@ -487,6 +487,18 @@ static void test_tangent_rays_from_the_surface(void **state)
             continue;
         const ray r = {vec3_add(s.center, vec3_scale(u, s.radius)), vec3_scale(vec3_normalize(tangent), length)};
         real t0, t1;
+        /* The same line from 4R further along: its point of tangency is
+         * 4R / |d| behind the origin.  Rounding moves the line by about
+         * eps S, so it may cross the sphere within sqrt(2 R eps S) of that
+         * point (under R / 4 here: R >= 1e-2, S <= 2e3, float eps): both roots
+         * stay negative, and a root in front is a sphere behind the ray hit
+         * in front of it (when (6) applies, t1 must keep its sign). */
+        const ray behind = {vec3_add(r.p, vec3_scale(r.d, 4 * s.radius / length)), r.d};
+        if (sphere_roots(&s, behind, SPHERE_ROBUST, &t0, &t1) && !(t0 < 0 && t1 < 0) && behind_bad++ < 3)
+            print_message("sphere_roots(%s, robust): a line tangent to the sphere at a point %.9g behind its "
+                          "origin\n    expected two negative roots near %.9g\n    got      %.17g and %.17g\n",
+                          describe_ray(&s, behind), (double)(4 * s.radius), (double)(-4 * s.radius / length),
+                          (double)t0, (double)t1);
         if (!sphere_roots(&s, r, SPHERE_ROBUST, &t0, &t1))
             continue; /* the line misses by rounding: no root is fine */
         with_roots++;
@@ -517,6 +529,12 @@ static void test_tangent_rays_from_the_surface(void **state)
                  "without the bound (6): where B, disc and C are all rounding noise C / q is noise of any size; "
                  "when t1^2 A > |C| take t1 = sign(t1) sqrt(|C| / A)",
                  bad);
+    assert_true_why(behind_bad == 0,
+                    "sphere_roots(robust) on tangent rays whose point of tangency is 4R behind the origin\n"
+                    "    expected two negative roots (the sphere is behind the ray)\n    got      %ld rays with a root "
+                    ">= 0\n    likely mistake: the bound (6) without the sign: t1 = sign(t1) sqrt(|C| / A), not "
+                    "sqrt(|C| / A)",
+                    behind_bad);
 }
 
 /* sphere_roots (given) scales data of extreme size by powers of two: a
@@ -604,6 +622,10 @@ static void test_nearest_root(void **state)
     expect_nearest((real)-2.5, 0, 0, inf, NONE, out, 1);
     const suspect at_max[] = {{0, "accepted t == t_max (or t_max ignored): the window (t_min, t_max) is open"}};
     expect_nearest(4, 6, 0, 4, NONE, at_max, 1);
+    /* p inside: the near root before t_min, the far one at t_max (a shadow ray to a light on the sphere) */
+    const suspect far_at_max[] = {{1, "accepted the far root at t == t_max: the window is open at both ends for the "
+                                      "far root too"}};
+    expect_nearest(-1, 1, 0, 1, NONE, far_at_max, 1);
     const suspect beyond[] = {{0, "t_max ignored: a root beyond t_max is no hit (a shadow ray stops at the light)"}};
     expect_nearest(4, 6, 0, 3, NONE, beyond, 1);
     const suspect before[] = {{0, "a root at or before t_min taken: both roots are outside the window"}};

@@ -263,6 +263,29 @@ static void test_just_outside(void **state)
             x = point_at(&flat, inside[j].beta, inside[j].gamma);
             expect_hit(&flat, (ray){above, vec3_sub(x, above)}, both[k], 1, inside[j].beta, inside[j].gamma, 0);
         }
+    /* Outside an edge by a hair, 4096 eps in beta or gamma: the rounding of
+     * x (coordinates up to 6) and of the three determinants moves beta and
+     * gamma by tens of eps, so these are misses; a tolerance in the edge
+     * comparisons (beta >= -1e-6) takes them for hits. */
+    const real hair = 4096 * REAL_EPSILON;
+    const struct {
+        real beta, gamma;
+    } barely[] = {{0.5, -hair}, {-hair, 0.5}, {0.5 + hair, 0.5}};
+    for (int k = 0; k < N_TESTS; k++)
+        for (size_t j = 0; j < sizeof barely / sizeof barely[0]; j++) {
+            const ray r = {above, vec3_sub(point_at(&flat, barely[j].beta, barely[j].gamma), above)};
+            triangle_hit h = UNWRITTEN_HIT;
+            const bool hit = triangle_intersect(&flat, r, 0, REAL_INFINITY, both[k], &h);
+            if (hit)
+                print_triangle("input", &flat, r);
+            assert_true_why(!hit,
+                            "--triangle=%s: the point beta %.17g, gamma %.17g, outside an edge by 4096 eps\n    "
+                            "expected a miss\n    got      %s\n    likely mistake: a tolerance in the edge test "
+                            "(beta >= -epsilon): the edges are closed but exact, beta >= 0, gamma >= 0, "
+                            "beta + gamma <= 1",
+                            test_names[both[k]], (double)barely[j].beta, (double)barely[j].gamma,
+                            describe_got(true, h, false));
+        }
 }
 
 /* A ray parallel to the plane, beside it or in it: M = 0, a miss, no division. */

@@ -84,9 +84,15 @@ static const char *loop_mistake(const surface_list *list, ray r, real t_min, rea
     one.items = &list->items[want];
     one.n = 1;
     hit_record alone;
-    if (!surfaces_intersect(&one, r, t_min, t_max, &alone))
+    if (!surfaces_intersect(&one, r, t_min, t_max, &alone)) {
+        /* hit by the list of one in a wider window: the loop asks it, with a narrower window than it was given */
+        const real wider_min = t_min - 1 - real_abs(t_min), wider_max = t_max + 1 + real_abs(t_max);
+        if (surfaces_intersect(&one, r, wider_min, wider_max, &alone))
+            return "the window narrowed: a hit just inside (t_min, t_max) was lost; start t_best at t_max itself and "
+                   "pass t_min on unchanged, with no epsilon added to either";
         return "a surface of the list never asked (a list of one is not hit): for (k = 0; k < list->n; k++) asks "
                "the first and the last";
+    }
     if (found && hit->surface > want && real_abs(hit->t - t) <= tol)
         return "two surfaces at the same t: the first in the list keeps it, the later ones are asked with the window "
                "(t_min, t_best), open at t_best";
@@ -234,6 +240,13 @@ static void test_t_window(void **state)
     expect_closest(&list, down_z, 0, 8.5, 3, 8, TOL(16), window);
     expect_closest(&list, down_z, 8, 20, 2, 9, TOL(16), window);       /* t_min itself is outside */
     expect_closest(&list, down_z, 9.6, 10.9, -1, 0, 0, window);       /* inside the ball, between hits */
+    /* FRONT at t = 8 (exact: integer data) a hair inside either end of the window, 512 eps: far above the
+     * rounding of t, far below the epsilons a loop might add (1e-4, 1e-9 in double), which lose the hit. */
+    const real hair = 512 * REAL_EPSILON;
+    expect_closest(&list, down_z, 0, 8 + hair, 3, 8, TOL(16),
+                   describe("t_max = 8 + %.3g: is t_best started at t_max itself, not t_max - epsilon?", (double)hair));
+    expect_closest(&list, down_z, 8 - hair, 20, 3, 8, TOL(16),
+                   describe("t_min = 8 - %.3g: is t_min passed on unchanged, not t_min + epsilon?", (double)hair));
     /* Everything lies behind a ray that starts at z = 10 and looks up +z. */
     const ray up_z = {{0, 0, 10}, {0, 0, 1}};
     expect_closest(&list, up_z, 0, REAL_INFINITY, -1, 0, 0, "are hits behind the origin (t < t_min) refused?");

@@ -134,6 +134,16 @@ static void test_inverse_square(void **state)
                          describe("lambert(the same light moved %g times as far along l): blue", r),
                          "1 / r^2 of the value at r = 1", sr, sizeof sr / sizeof sr[0]);
     }
+    /* r = 0.3: r^2 = 0.09 is not a float (rounded to one it is off by 4e-8
+     * relative, thousands of times FAR_TOL in double), so a float slipped
+     * into the double build shows; the distances above have squares that are. */
+    scene_light close = {.position = vec3_add(point, vec3_scale(l, (real)0.3)), .intensity = {4, 4, 4}};
+    const double expected_close = 0.9 * 4 * sqrt(0.5) / 0.09;
+    assert_close_why(expected_close, lambert(k_d, point, n, &close).b, FAR_TOL(expected_close, 0.3),
+                     "lambert(the same light at distance 0.3 along l): blue",
+                     "a float in a computation of the double build (r^2, l or the cosine stored in a float, or "
+                     "sqrtf): keep every quantity a real",
+                     NULL, 0);
 }
 
 /* A light behind the surface (n . l < 0) gives nothing, never a negative

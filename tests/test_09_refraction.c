@@ -133,6 +133,19 @@ static void test_refract_equal_indices(void **state)
         assert_vec3_why(d, T, 4 * REAL_EPSILON, input, grouping, NULL, 0);
         assert_close_why(cos_i, cos_t, 4 * REAL_EPSILON * cos_i, describe("%s: cos_t", input), grouping, NULL, 0);
     }
+    /* Exactly grazing, d . n = 0 (axis vectors, so the dot product is exactly 0): r = 1 gives
+     * cos^2(theta_t) = 0 + 1 x 0 = 0 exactly, not below 0, so the ray transmits (refract.h) along
+     * T = d + (0 - 0) n = d, with cos(theta_t) = sqrt(0) = 0: every operation is exact, yet allow the
+     * loop's 4 REAL_EPSILON. */
+    vec3 d = vec3_make(1, 0, 0), n = vec3_make(0, 1, 0), T = {0, 0, 0};
+    real cos_t = -1;
+    const char *const at_zero = "total internal reflection is cos^2(theta_t) < 0, strictly: here cos^2(theta_t) = "
+                                "(1 - r^2) + r^2 cos^2(theta_i) = 0 and the ray goes straight on (T = d), so the "
+                                "test <= 0 reports a transmitted ray reflected";
+    expect_transmits(d, n, (real)1.5, (real)1.5, "exactly grazing (d . n = 0)", at_zero, &T, &cos_t);
+    const char *const grazing = "refract exactly grazing, d = (1, 0, 0), n = (0, 1, 0), eta 1.5 on both sides";
+    assert_vec3_why(d, T, 4 * REAL_EPSILON, grazing, at_zero, NULL, 0);
+    assert_close_why(0, cos_t, 4 * REAL_EPSILON, describe("%s: cos_t", grazing), at_zero, NULL, 0);
 }
 
 /* r d + c n: the form of T, with a coefficient c of n right or wrong. */

@@ -109,7 +109,7 @@ static void expect_resolution(const double extent[3], long surfaces, double dens
     grid_resolution(extent, surfaces, density, cap, n);
     if (n[0] == want[0] && n[1] == want[1] && n[2] == want[2])
         return;
-    const double lambda_n = density * (double)surfaces;
+    const double lambda_n = density * (double)surfaces, first = fmax(lambda_n, 1); /* step 1: at least 1 */
     const struct {
         double cells;
         int root;
@@ -122,16 +122,18 @@ static void expect_resolution(const double extent[3], long surfaces, double dens
                                                     "number of surfaces"},
         {density, 0, S_RIGHT, round, true, "the number of surfaces left out: about lambda N cells, the density times "
                                            "the number of surfaces"},
-        {lambda_n, 0, S_RIGHT, floor, true, "n_a = floor(e_a s): the counts are rounded to the nearest, round(e_a s)"},
-        {lambda_n, 0, S_RIGHT, ceil, true, "n_a = ceil(e_a s): the counts are rounded to the nearest, round(e_a s)"},
-        {lambda_n, 0, S_RIGHT, round, false, "an axis whose e_a s rounds to 0 still gets one cell: n_a = max(round(e_a "
+        {first, 0, S_RIGHT, floor, true, "n_a = floor(e_a s): the counts are rounded to the nearest, round(e_a s)"},
+        {first, 0, S_RIGHT, ceil, true, "n_a = ceil(e_a s): the counts are rounded to the nearest, round(e_a s)"},
+        {first, 0, S_RIGHT, round, false, "an axis whose e_a s rounds to 0 still gets one cell: n_a = max(round(e_a "
                                              "s), 1)"},
-        {lambda_n, 3, S_RIGHT, round, true, "the cube root for a flat scene: with k spanned axes (extent above 0) s "
+        {first, 3, S_RIGHT, round, true, "the cube root for a flat scene: with k spanned axes (extent above 0) s "
                                             "is the k-th root, here the square root, not the cube root"},
-        {lambda_n, 0, S_INVERSE, round, true, "s upside down: s = (lambda N / (e_x e_y e_z))^(1/k) cells per unit of "
+        {first, 0, S_INVERSE, round, true, "s upside down: s = (lambda N / (e_x e_y e_z))^(1/k) cells per unit of "
                                               "length, the cells over the volume"},
-        {lambda_n, 0, S_ROOT_OF_CELLS, round, true, "s = (lambda N)^(1/k) / (e_x e_y e_z): the root is of the cells "
+        {first, 0, S_ROOT_OF_CELLS, round, true, "s = (lambda N)^(1/k) / (e_x e_y e_z): the root is of the cells "
                                                     "over the volume, s = (lambda N / (e_x e_y e_z))^(1/k)"},
+        {lambda_n, 0, S_RIGHT, round, true, "lambda N below 1 taken as it is: the first try is s for max(lambda N, 1) "
+                                            "cells, at least one (README, \"The grid's box and resolution\", step 1)"},
     };
     const char *why = "s = (min(lambda N, cap) / product of the spanned extents)^(1/k) with k spanned axes, n_a = "
                       "max(round(e_a s), 1), a flat axis 1";
@@ -230,6 +232,10 @@ static void test_resolution(void **state)
     /* a thin line: s = (10^6 / 10^-18)^(1/3) = 10^8 cells per unit; x is held at 2^20 cells, y and z round
      * 0.1 to 0 and get one each: 2^20 cells, within the cap 2^24, so no shrinking */
     expect_resolution((const double[3]){1, 1e-9, 1e-9}, 500000, 2, 1L << 24, (const int[3]){1 << 20, 1, 1});
+    /* lambda N = 0.05 x 2 = 0.1, below 1: the first try is s for max(0.1, 1) = 1 cell over the volume 8,
+     * s = (1 / 8)^(1/3) = 0.5 (to a rounding), round(4) = 4 and round(0.5) = 0 or 1 (either way one cell);
+     * s for 0.1 cells, 0.232, would give round(1.86) = 2 */
+    expect_resolution((const double[3]){8, 1, 1}, 2, 0.05, 1L << 20, (const int[3]){4, 1, 1});
     rng_state = 18;
     surface_list list;
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
