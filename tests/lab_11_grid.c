@@ -7,6 +7,8 @@
 #include "11_grid/renderer/grid_stage.h"
 #include "11_grid/lab/fast_query.h"
 #include "11_grid/lab/fast_search.h"
+#include "box.h"
+#include "scene_shapes.h"
 
 #define GRID fast_grid
 #define GRID_OPTIONS fast_grid_options
@@ -18,23 +20,23 @@
 #define GRID_QUERY_KNOBS (&fast_defaults)
 /* a few densities with every knob on, one level and two (the default split,
  * and splits so low that most cells with surfaces get grids of their own),
- * then mailboxing, leaping and culling off one at a time and all together;
- * the last two prefetch (these small scenes' grids would not by size); the
- * second and the last keep the triangles' normals, as the lab does */
+ * then mailboxing, leaping and culling off one at a time and all together
+ * (boxes too); the last two prefetch (these small scenes' grids would not by
+ * size); the second and the last keep the triangles' normals, as the lab does */
 static const fast_grid_options knob_sets[] = {
-    {0.3, 1L << 20, true, true, true, 0, 0, false},
-    {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT, 0, true},
-    {10, 1L << 20, true, true, true, 0, 0, false},
-    {2, 1L << 20, true, true, true, 0, 0, false},
-    {0.3, 1L << 20, true, true, true, 2, 0, false},
-    {2, 1L << 20, true, true, true, 4, 0, false},
-    {2, 1L << 20, false, true, true, 0, 0, false},
-    {2, 1L << 20, true, false, true, 0, 0, false},
-    {2, 1L << 20, true, true, false, 0, 0, false},
-    {2, 1L << 20, false, false, false, 0, 0, false},
-    {2, 1L << 20, false, false, false, 3, 0, false},
-    {2, 1L << 20, true, true, true, 4, FAST_GRID_PREFETCH_ON, false},
-    {0.3, 1L << 20, true, true, true, 0, FAST_GRID_PREFETCH_ON, true},
+    {0.3, 1L << 20, true, true, true, 0, 0, false, true},
+    {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT, 0, true, true},
+    {10, 1L << 20, true, true, true, 0, 0, false, true},
+    {2, 1L << 20, true, true, true, 0, 0, false, true},
+    {0.3, 1L << 20, true, true, true, 2, 0, false, true},
+    {2, 1L << 20, true, true, true, 4, 0, false, true},
+    {2, 1L << 20, false, true, true, 0, 0, false, true},
+    {2, 1L << 20, true, false, true, 0, 0, false, true},
+    {2, 1L << 20, true, true, false, 0, 0, false, true},
+    {2, 1L << 20, false, false, false, 0, 0, false, false},
+    {2, 1L << 20, false, false, false, 3, 0, false, false},
+    {2, 1L << 20, true, true, true, 4, FAST_GRID_PREFETCH_ON, false, true},
+    {0.3, 1L << 20, true, true, true, 0, FAST_GRID_PREFETCH_ON, true, true},
 };
 #define N_KNOB_SETS (sizeof knob_sets / sizeof knob_sets[0])
 
@@ -350,6 +352,104 @@ static void test_closest_without_record(void **state)
     }
 }
 
+/* Boxes of twelve triangles (box_triangles, as the scene reader makes them),
+ * each tested as one box: thin slabs, sticks, cubes and one large box, far
+ * from the origin at a random scale, with the edge cases of test_box: rays
+ * from outside at the boxes, rays that start on a face with t_min > 0 and
+ * leave it (as shadow rays do), rays along a face's plane or an edge, rays
+ * parallel to an axis, and windows that start or end a real away from the
+ * hit on a face; every knob set against the linear scan.  Then
+ * a box is found: a ray at a face's middle tests its two triangles, where
+ * the cell that lists the twelve tests more. */
+static void set_axis(vec3 *v, int a, real value) { *(a == 0 ? &v->x : a == 1 ? &v->y : &v->z) = value; }
+
+static void test_boxes_as_boxes(void **state)
+{
+    (void)state;
+    rng_state = 29;
+    const long n = 4000;
+    for (int scene_no = 0; scene_no < 4; scene_no++) {
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, triangle_tests[scene_no % 2]);
+        const real unit = scene_no < 2 ? uniform((real)0.5, 2) : (scene_no == 2 ? (real)1e-5 : (real)1e5);
+        const vec3 centre = vec3_scale(uniform_vec(vec3_make(-300, -300, -300), vec3_make(300, 300, 300)), unit);
+        vec3 lo[16], hi[16];
+        for (int b = 0; b < 16; b++) {
+            const vec3 c = vec3_add(centre, vec3_scale(uniform_vec(vec3_make(-8, -8, -8), vec3_make(8, 8, 8)), unit));
+            vec3 half = vec3_scale(uniform_vec(vec3_make((real)0.3, (real)0.3, (real)0.3), vec3_make(2, 2, 2)), unit);
+            if (b % 4 == 1) /* a slab */
+                half.y = (real)0.013 * unit;
+            if (b % 4 == 2) /* a stick */
+                half.x = half.z = (real)0.05 * unit;
+            if (b == 3) /* a box around several others */
+                half = vec3_scale(vec3_make(6, 5, 7), unit);
+            lo[b] = vec3_sub(c, half);
+            hi[b] = vec3_add(c, half);
+            vec3 t[BOX_TRIANGLES][3];
+            box_triangles(lo[b], hi[b], t);
+            for (int k = 0; k < BOX_TRIANGLES; k++)
+                surface_list_add_triangle(&list, (triangle){t[k][0], t[k][1], t[k][2]}, 0, b);
+        }
+        ray_set rays = rays_alloc(n);
+        for (long k = 0; k < n; k++) {
+            const int b = (int)(next_u64() % 16), kind = (int)(k % 5);
+            const vec3 size = vec3_sub(hi[b], lo[b]);
+            vec3 on = vec3_add(lo[b], vec3_make(size.x * uniform(0, 1), size.y * uniform(0, 1), size.z * uniform(0, 1)));
+            const int axis = (int)(next_u64() % 3), high = (int)(next_u64() % 2);
+            set_axis(&on, axis, vec3_axis(high ? hi[b] : lo[b], axis)); /* a point on a face */
+            vec3 d = random_direction();
+            if (kind == 2) /* along the face's plane */
+                set_axis(&d, axis, 0);
+            if (kind == 3) /* along an axis */
+                d = vec3_make(axis == 0 ? 1 : 0, axis == 1 ? -1 : 0, axis == 2 ? 1 : 0);
+            const vec3 p = kind == 1 || kind == 2 ? on : vec3_sub(on, vec3_scale(d, 30 * unit));
+            rays.r[k] = (ray){p, kind == 0 ? vec3_sub(on, p) : d};
+            rays.t_min[k] = kind == 1 ? 64 * REAL_EPSILON * uniform(1, 100) : 0;
+            rays.t_max[k] = kind == 4 ? uniform(0, 40) : REAL_INFINITY;
+            hit_record h;
+            if (kind == 4 && surfaces_intersect(&list, rays.r[k - 4], 0, REAL_INFINITY, &h)) {
+                /* a window that ends or starts a real away from the hit of ray k - 4 (at a face): where
+                 * rounding decides whether a face's plane is crossed in the window */
+                rays.r[k] = rays.r[k - 4];
+                rays.t_min[k] = next_u64() % 2 ? -real_next_up(-h.t) : 0; /* the real below h.t */
+                rays.t_max[k] = rays.t_min[k] > 0 ? REAL_INFINITY : real_next_up(h.t);
+            }
+        }
+        expect_as_linear(&list, &rays, n / 4);
+    }
+    /* found: a slab alone (one cell thick: a box is tested as one where its faces share cells), a ray at the
+     * middle of its +x face */
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+    vec3 t[BOX_TRIANGLES][3];
+    box_triangles(vec3_make((real)10.1, -(real)3.3, (real)7.7), vec3_make((real)11.9, -(real)3.2, (real)9.4), t);
+    for (int k = 0; k < BOX_TRIANGLES; k++)
+        surface_list_add_triangle(&list, (triangle){t[k][0], t[k][1], t[k][2]}, 0, 0);
+    const ray r = {vec3_make(30, -(real)3.25, (real)8.55), vec3_make(-1, (real)0.0001, (real)0.02)};
+    for (int as_box = 0; as_box < 2; as_box++) {
+        fast_grid g;
+        fast_grid_options opt = fast_grid_default_options();
+        opt.boxes = as_box;
+        build_fast(&g, &list, opt);
+        fast_grid_counts counts = {0};
+        hit_record h;
+        assert_true_why(fast_grid_intersect_counted(&g, r, 0, REAL_INFINITY, &h, &counts),
+                        "the ray at the +x face's middle misses the box (boxes %s)", as_box ? "on" : "off");
+        /* the +x face is triangles 2 and 3 of box_triangles */
+        assert_true_why(h.surface == 2 || h.surface == 3, "the ray hit triangle %d, not one of the +x face's (2, 3)",
+                        h.surface);
+        if (as_box && counts.tests != 2)
+            fail_msg("a box's ray at a face's middle: 2 triangle tests expected (its face's), %llu made",
+                     (unsigned long long)counts.tests);
+        if (!as_box && counts.tests <= 2)
+            fail_msg("without boxes the cells at the +x face list more than its two triangles: more than 2 tests "
+                     "expected, %llu",
+                     (unsigned long long)counts.tests);
+        fast_grid_free(&g);
+    }
+    surface_list_free(&list);
+}
+
 static const graded_test tests[] = {
     GRADED(test_random_scenes, 0),
     GRADED(test_zero_components, 0),
@@ -364,6 +464,7 @@ static const graded_test tests[] = {
     GRADED(test_empty_cubes, 0),
     GRADED(test_prefetch_by_size, 0),
     GRADED(test_closest_without_record, 0),
+    GRADED(test_boxes_as_boxes, 0),
     GRADED(test_directions_of_any_length, 0),
     GRADED(test_rays_not_finite, 0),
     GRADED(test_cornell_scenes, 0),

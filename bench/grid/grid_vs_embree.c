@@ -384,7 +384,8 @@ int main(int argc, char **argv)
             fast_grid h;
             fast_grid_options opt = {.density = densities[k], .max_cells = FAST_GRID_DEFAULT_MAX_CELLS,
                                      .mailbox = variant != 1, .leap = variant != 2, .cull = variant != 3,
-                                     .split = grid_options.split, .prefetch = grid_options.prefetch};
+                                     .split = grid_options.split, .prefetch = grid_options.prefetch,
+                                     .boxes = grid_options.boxes};
             t0 = now();
             if (fast_grid_build(&h, &list, opt, err, sizeof err) != 0) {
                 fprintf(stderr, "grid_vs_embree: %s\n", err);

@@ -1,6 +1,7 @@
 /* fast_build.c - chapter 11's lab: the fast grid's cells, with culling boxes and empty-cube distances. */
 #include "11_grid/lab/fast_grid.h"
 
+#include "11_grid/lab/fast_boxes.h"
 #include "11_grid/lab/fast_build.h"
 
 #include <math.h>
@@ -18,33 +19,11 @@ fast_grid_options fast_grid_default_options(void)
                           .cull = true,
                           .split = FAST_GRID_DEFAULT_SPLIT,
                           .prefetch = FAST_GRID_PREFETCH_AUTO,
-                          .normals = false};
+                          .normals = false,
+                          .boxes = true};
 }
 
 static real get(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
-
-/* fmin and fmax without the library's call, which the build made twelve
- * times a triangle: the other value where one is NaN, as they do (the sign
- * of a zero bound is the only difference, and no bound reads it). */
-static inline real lesser(real x, real y) { return x < y || y != y ? x : y; }
-static inline real greater(real x, real y) { return x > y || y != y ? x : y; }
-
-/* A surface's bounding box: a sphere's centre +- R, a triangle's vertices' extremes. */
-void fast_grid_surface_bounds(const surface *s, vec3 *lo, vec3 *hi)
-{
-    if (s->kind == SHAPE_SPHERE) {
-        real r = real_abs(s->sphere.radius);
-        vec3 c = s->sphere.center;
-        *lo = vec3_make(c.x - r, c.y - r, c.z - r);
-        *hi = vec3_make(c.x + r, c.y + r, c.z + r);
-    } else {
-        const triangle *t = &s->triangle;
-        *lo = vec3_make(lesser(t->a.x, lesser(t->b.x, t->c.x)), lesser(t->a.y, lesser(t->b.y, t->c.y)),
-                        lesser(t->a.z, lesser(t->b.z, t->c.z)));
-        *hi = vec3_make(greater(t->a.x, greater(t->b.x, t->c.x)), greater(t->a.y, greater(t->b.y, t->c.y)),
-                        greater(t->a.z, greater(t->b.z, t->c.z)));
-    }
-}
 
 static vec3 widen(vec3 v, real m) { return vec3_make(v.x + m, v.y + m, v.z + m); }
 
@@ -132,6 +111,11 @@ static void cull_box(const fast_grid *g, vec3 lo, vec3 hi, int i, int j, int k, 
 }
 /* end snippet */
 
+void fast_grid_cull_box(const fast_grid *g, vec3 lo, vec3 hi, int i, int j, int k, uint8_t box[6])
+{
+    cull_box(g, lo, hi, i, j, k, box);
+}
+
 /* The cells each surface is listed in, found once (the separating axis test
  * is the build's dearest step) and kept until the entries are written. */
 typedef struct {
@@ -143,9 +127,12 @@ typedef struct {
     size_t n, size;
 } bin_list;
 
-/* Counts surface s (its index in the list: index) in every cell it overlaps
- * and adds (cell, index) to bins.  False when out of memory. */
-static bool bin_surface(fast_grid *g, const surface *s, uint32_t index, uint32_t *count, bin_list *bins)
+/* Counts surface s in every cell it overlaps and adds (cell, index) to bins:
+ * index is s's own, or for the triangles of a box its first one's, each cell
+ * once (stamp: per cell, the last box listed there, which is `box`; NULL for
+ * a surface alone).  False when out of memory. */
+static bool bin_surface(fast_grid *g, const surface *s, uint32_t index, uint32_t *count, bin_list *bins,
+                        uint32_t *stamp, uint32_t box)
 {
     vec3 lo, hi;
     fast_grid_surface_bounds(s, &lo, &hi);
@@ -168,6 +155,10 @@ static bool bin_surface(fast_grid *g, const surface *s, uint32_t index, uint32_t
                 if (by_axes && !triangle_touches_cell(g, &s->triangle, i, j, k))
                     continue;
                 long c = i + (long)g->n[0] * (j + (long)g->n[1] * k);
+                if (stamp && stamp[c] == box)
+                    continue; /* the box is listed there already */
+                if (stamp)
+                    stamp[c] = box;
                 if (bins->n == bins->size) {
                     size_t size = bins->size ? 2 * bins->size : 1024;
                     binned *at = realloc(bins->at, size * sizeof *at);
@@ -195,8 +186,14 @@ static void write_entries(fast_grid *g, const bin_list *bins, uint32_t *fill)
         *entry = (fast_grid_entry){.surface = b.surface};
         if (!g->cull)
             continue;
+        const uint32_t in_box = g->boxes ? g->boxes->of[b.surface] : FAST_BOX_NONE;
+        if (in_box != FAST_BOX_NONE) {
+            fast_grid_box_cull_box(g, &g->boxes->box[in_box], (int)(b.cell % n0), (int)(b.cell / n0 % n1),
+                                   (int)(b.cell / n0 / n1), entry->box);
+            continue;
+        }
         if (b.surface != boxed) {
-            fast_grid_surface_bounds(&g->list->items[b.surface], &lo, &hi);
+            fast_grid_entry_bounds(g, b.surface, &lo, &hi);
             boxed = b.surface;
         }
         cull_box(g, lo, hi, (int)(b.cell % n0), (int)(b.cell / n0 % n1), (int)(b.cell / n0 / n1), entry->box);
@@ -302,12 +299,25 @@ int fast_grid_fill(fast_grid *g, const uint32_t *subset, long n, bool leap, char
         goto out_of_memory;
     }
     bin_list bins = {NULL, 0, 0};
-    for (long q = 0; q < n; q++)
-        if (!bin_surface(g, &g->list->items[subset ? subset[q] : q], subset ? subset[q] : (uint32_t)q, count, &bins)) {
-            free(count);
-            free(bins.at);
-            goto out_of_memory;
-        }
+    uint32_t *stamp = g->boxes ? malloc((size_t)g->n_cells * sizeof *stamp) : NULL;
+    bool binned = !g->boxes || stamp;
+    for (long c = 0; c < g->n_cells && stamp; c++)
+        stamp[c] = FAST_BOX_NONE;
+    for (long q = 0; q < n && binned; q++) {
+        /* a surface alone, or a box by its first triangle (its others are listed as that) */
+        const uint32_t k = subset ? subset[q] : (uint32_t)q, b = g->boxes ? g->boxes->of[k] : FAST_BOX_NONE;
+        if (b == FAST_BOX_NONE)
+            binned = bin_surface(g, &g->list->items[k], k, count, &bins, NULL, 0);
+        else if (k == g->boxes->box[b].first)
+            for (uint32_t t = k; t < k + 12 && binned; t++)
+                binned = bin_surface(g, &g->list->items[t], k, count, &bins, stamp, b);
+    }
+    free(stamp);
+    if (!binned) {
+        free(count);
+        free(bins.at);
+        goto out_of_memory;
+    }
     uint64_t total = 0;
     for (long c = 0; c < g->n_cells; c++) {
         g->start[c] = (uint32_t)total;
@@ -403,6 +413,11 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
     fast_grid_resolution(extent, binned, opt.density, opt.max_cells, g->n);
     g->lo = widen(lo, -g->margin);
     g->hi = widen(hi, g->margin);
+    if (opt.boxes && !fast_boxes_find(&g->boxes, list))
+        goto out_of_memory;
+    const real cell[3] = {(hi.x - lo.x + 2 * g->margin) / (real)g->n[0], (hi.y - lo.y + 2 * g->margin) / (real)g->n[1],
+                          (hi.z - lo.z + 2 * g->margin) / (real)g->n[2]};
+    fast_boxes_keep_small(&g->boxes, cell);
     int status = fast_grid_fill(g, NULL, list->n, opt.leap, err, err_size);
     if (status == 0)
         status = fast_grid_split(g, opt, err, err_size);
@@ -440,6 +455,8 @@ void fast_grid_free(fast_grid *g)
     free(g->unbinned);
     free(g->empty);
     free(g->normal);
+    fast_boxes_free(g->boxes);
+    g->boxes = NULL;
     if (g->plane[0])
         free(g->plane[0] - g->beyond);
     for (long k = 0; k < g->n_subs; k++)
@@ -461,5 +478,5 @@ size_t fast_grid_memory(const fast_grid *g)
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
     return sizeof *g + (cells + (size_t)g->n_unbinned) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof(fast_grid_entry) +
            (g->empty ? 8 * (size_t)g->n_cells : 0) + (g->normal ? (size_t)g->list->n * sizeof *g->normal : 0) +
-           (g->plane[0] ? plane_count(g) * sizeof(real) : 0) + fast_grid_subs_memory(g);
+           (g->plane[0] ? plane_count(g) * sizeof(real) : 0) + fast_grid_subs_memory(g) + fast_boxes_memory(g->boxes);
 }

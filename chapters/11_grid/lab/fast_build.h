@@ -8,8 +8,25 @@
 
 #include "11_grid/lab/fast_grid.h"
 
-/* A surface's bounding box: a sphere's centre +- R, a triangle's vertices' extremes. */
+/* fmin and fmax without the library's call, which the build made twelve
+ * times a triangle: the other value where one is NaN, as they do (the sign
+ * of a zero bound is the only difference, and no bound reads it). */
+static inline real lesser(real x, real y) { return x < y || y != y ? x : y; }
+static inline real greater(real x, real y) { return x > y || y != y ? x : y; }
+
+/* A surface's bounding box: a sphere's centre +- R, a triangle's vertices' extremes (fast_bounds.c). */
 void fast_grid_surface_bounds(const surface *s, vec3 *lo, vec3 *hi);
+
+/* The bounds of what entry k of a cell stands for: surface k, or, where g->boxes
+ * has k as a box's first triangle, that box (a box is listed once, by its first). */
+void fast_grid_entry_bounds(const fast_grid *g, uint32_t k, vec3 *lo, vec3 *hi);
+
+/* The part of the box [lo, hi] (widened by the margin) inside cell (i, j, k), for culling: fast_build.c's cull_box. */
+void fast_grid_cull_box(const fast_grid *g, vec3 lo, vec3 hi, int i, int j, int k, uint8_t box[6]);
+
+struct fast_box;
+/* The culling box of box b's entry in cell (i, j, k): the parts of its triangles' boxes there (fast_bounds.c). */
+void fast_grid_box_cull_box(const fast_grid *g, const struct fast_box *b, int i, int j, int k, uint8_t box[6]);
 
 /* Cells along each axis for a box of these extents holding `surfaces`:
  * about density x surfaces in all, at most max_cells, as cubic as the box allows. */

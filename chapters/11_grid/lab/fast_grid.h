@@ -11,7 +11,9 @@
  * Sheffer's proximity clouds, a cube per octant of directions), and a cell
  * that lists many surfaces gets a grid of its own (two levels, Kalojanov,
  * Billeter and Slusallek 2011).  The triangles of a watertight list take the
- * watertight test with its ray part made once per ray.
+ * watertight test with its ray part made once per ray, and a box of twelve
+ * triangles whose faces share cells is listed and tested as one box
+ * (fast_boxes.h).
  *
  * fast_grid_intersect returns what the lesson's grid_intersect and chapter
  * 04's surfaces_intersect return: the same surface and bit for bit the same
@@ -37,6 +39,7 @@ typedef struct {
     int split;       /* a cell that lists more surfaces than this gets a grid of its own; 0: one level */
     int prefetch;    /* FAST_GRID_PREFETCH_*: fetch the next cell and the surfaces to test ahead of their use */
     bool normals;    /* keep each triangle's unit normal for the hit's record (24 bytes a surface) */
+    bool boxes;      /* test a box's twelve triangles as one box (fast_boxes.h) */
 } fast_grid_options;
 /* end snippet */
 
@@ -73,6 +76,7 @@ typedef struct {
 } fast_grid_entry;
 
 typedef struct fast_grid fast_grid;
+struct fast_boxes;
 struct fast_grid {
     const surface_list *list; /* the surfaces; the grid holds their indices only */
     vec3 lo, hi;              /* the grid's box: the surfaces' bounding box, widened by `margin` */
@@ -105,6 +109,9 @@ struct fast_grid {
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
     vec3 *normal;             /* with fast_grid_options.normals, per surface: a triangle's triangle_normal (the
                                * record of a hit needs it; a division and a square root in a chain); else NULL */
+    struct fast_boxes *boxes; /* the boxes of twelve triangles among the surfaces (fast_boxes.h): a cell lists
+                               * a box once, by its first triangle, and the march tests it as one; NULL
+                               * when there are none, and in a built sub-grid (the march has the top's) */
     fast_grid *subs;          /* the grids of the cells that have their own (two levels), over the
                                * cell's box and the surfaces it lists; they have no subs themselves */
     long n_subs;
@@ -126,8 +133,8 @@ typedef struct {
     uint64_t culled; /* surfaces of those cells whose boxes the ray passes by */
 } fast_grid_counts;
 
-/* The default knobs: FAST_GRID_DEFAULT_DENSITY, FAST_GRID_DEFAULT_MAX_CELLS, mailboxing, leaping and culling
- * on, two levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell, prefetching by size, no normals kept. */
+/* The default knobs: FAST_GRID_DEFAULT_DENSITY, FAST_GRID_DEFAULT_MAX_CELLS, mailboxing, leaping, culling
+ * and boxes on, two levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell, prefetching by size, no normals kept. */
 fast_grid_options fast_grid_default_options(void);
 
 /* Builds the grid of `list`, which must outlive it and not change.  Returns

@@ -36,7 +36,7 @@ static long box_cells(fast_grid *sub, const uint32_t *subset, long n)
     for (long q = 0; q < n; q++) {
         vec3 lo, hi;
         int first[3], last[3];
-        fast_grid_surface_bounds(&sub->list->items[subset[q]], &lo, &hi);
+        fast_grid_entry_bounds(sub, subset[q], &lo, &hi);
         fast_grid_cell_range(sub, vec3_sub(lo, m), vec3_add(hi, m), first, last);
         if (first[0] <= last[0] && first[1] <= last[1] && first[2] <= last[2]) /* else wholly outside */
             cells += (long)(last[0] - first[0] + 1) * (last[1] - first[1] + 1) * (last[2] - first[2] + 1);
@@ -54,11 +54,12 @@ static long box_cells(fast_grid *sub, const uint32_t *subset, long n)
 static int build_sub(fast_grid *sub, const fast_grid *g, const uint32_t *subset, long n, const int idx[3],
                      fast_grid_options opt, char *err, size_t err_size)
 {
-    *sub = (fast_grid){.list = g->list, .mailbox = g->mailbox, .cull = g->cull, .margin = g->margin, .scale = g->scale};
+    *sub = (fast_grid){.list = g->list, .mailbox = g->mailbox, .cull = g->cull, .margin = g->margin, .scale = g->scale,
+                       .boxes = g->boxes};
     vec3 lo = vec3_make(REAL_INFINITY, REAL_INFINITY, REAL_INFINITY), hi = vec3_neg(lo);
     for (long q = 0; q < n; q++) {
         vec3 slo, shi;
-        fast_grid_surface_bounds(&g->list->items[subset[q]], &slo, &shi);
+        fast_grid_entry_bounds(g, subset[q], &slo, &shi);
         lo = vec3_make(real_fmin(lo.x, slo.x), real_fmin(lo.y, slo.y), real_fmin(lo.z, slo.z));
         hi = vec3_make(real_fmax(hi.x, shi.x), real_fmax(hi.y, shi.y), real_fmax(hi.z, shi.z));
     }
@@ -78,21 +79,23 @@ static int build_sub(fast_grid *sub, const fast_grid *g, const uint32_t *subset,
     fast_grid_resolution(extent, n, opt.density, opt.max_cells, sub->n);
     if (box_cells(sub, subset, n) > MOST_CELLS_PER_SURFACE * n)
         return 1;
-    if (fast_grid_fill(sub, subset, n, opt.leap, err, err_size) != 0) {
+    const int status = fast_grid_fill(sub, subset, n, opt.leap, err, err_size);
+    sub->boxes = NULL; /* g's, which its build has read */
+    if (status != 0) {
         fast_grid_free(sub);
         return -1;
     }
     return 0;
 }
 
-/* Whether surface s spans cell idx of g along two axes or more: its box
- * (widened by the margin) covers the cell's frame there, as a floor covers
- * every cell under it.  Such a surface stays in the cell's own list beside
- * the cell's grid, which then fits the other surfaces alone. */
-static bool spans_cell(const fast_grid *g, const surface *s, const int idx[3])
+/* Whether entry k (a surface, or a box) spans cell idx of g along two axes
+ * or more: its box (widened by the margin) covers the cell's frame there, as
+ * a floor covers every cell under it.  Such an entry stays in the cell's own
+ * list beside the cell's grid, which then fits the other entries alone. */
+static bool spans_cell(const fast_grid *g, uint32_t k, const int idx[3])
 {
     vec3 lo, hi;
-    fast_grid_surface_bounds(s, &lo, &hi);
+    fast_grid_entry_bounds(g, k, &lo, &hi);
     const real s_lo[3] = {lo.x, lo.y, lo.z}, s_hi[3] = {hi.x, hi.y, hi.z};
     int covered = 0;
     for (int a = 0; a < 3; a++)
@@ -160,7 +163,7 @@ int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_s
         long n_rest = 0;
         for (uint32_t q = 0; q < crowded[k].count; q++) {
             uint32_t surface = g->refs[g->start[c] + q].surface;
-            if (!spans_cell(g, &g->list->items[surface], idx))
+            if (!spans_cell(g, surface, idx))
                 subset[n_rest++] = surface;
         }
         if (n_rest == 0)
@@ -203,7 +206,7 @@ int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_s
             const int idx[3] = {(int)(c % g->n[0]), (int)(c / g->n[0] % g->n[1]), (int)(c / g->n[0] / g->n[1])};
             uint32_t n_spanning = 0;
             for (uint32_t q = from; q < to; q++)
-                if (spans_cell(g, &g->list->items[g->refs[q].surface], idx))
+                if (spans_cell(g, g->refs[q].surface, idx))
                     spanning[n_spanning++] = g->refs[q];
             g->refs[written++] = (fast_grid_entry){.surface = FAST_GRID_SUB + (uint32_t)crowded[k].sub};
             memcpy(&g->refs[written], spanning, n_spanning * sizeof *spanning);

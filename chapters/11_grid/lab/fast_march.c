@@ -10,13 +10,7 @@
 #include <math.h>
 
 #include "11_grid/lab/fast_cull.h"
-#include "11_grid/lab/fast_search.h"
-
-/* The mailbox: the last surfaces tested along this ray, one slot per value
- * of (index mod MAILBOX).  A surface found in its slot was tested already
- * and is skipped; a slot taken over by another surface only costs a second
- * test of the first, never a wrong answer. */
-#define MAILBOX 32
+#include "11_grid/lab/fast_noted.h"
 
 /* A cell's entries are sifted this many at a time, by the ray's span in the
  * cell (cull_span) when the cell lists at least SIFT_FROM of them; fewer are
@@ -270,13 +264,6 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
 }
 /* end snippet */
 
-/* What one ray's march keeps besides the search: the mailbox, the counts. */
-typedef struct {
-    uint32_t mailbox[MAILBOX];
-    uint64_t cells, leaps, culled;
-    bool prefetch; /* the top grid's */
-} march_state;
-
 /* Asks the processor to fetch what a test of surface k reads (its kind and
  * a triangle's vertices: the lines of their first and last bytes, 80 bytes
  * that span at most two lines of 64 where a surface starts on 16 bytes)
@@ -289,20 +276,6 @@ static inline void prefetch_surface(const surface_list *list, uint32_t k)
 }
 
 static void march(const fast_grid *g, search *s, const ray_frame *rf, march_state *ms);
-
-/* Whether surface k was tested already along the ray (the mailbox). */
-static inline bool tested_already(const march_state *ms, bool use_mailbox, uint32_t k)
-{
-    return use_mailbox && ms->mailbox[k % MAILBOX] == k;
-}
-
-/* Surface k against the ray, noted in the mailbox. */
-static inline void test_noted(search *s, march_state *ms, bool use_mailbox, uint32_t k)
-{
-    if (use_mailbox)
-        ms->mailbox[k % MAILBOX] = k;
-    test_surface(s, k);
-}
 
 /* snippet: cell */
 /* Every surface of cell m->cell, each tested over the whole window
@@ -450,10 +423,9 @@ static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min,
     ms.cells = ms.leaps = ms.culled = 0;
     ms.prefetch = g->prefetch;
     if (g->n_cells) {
-        for (int b = 0; b < MAILBOX; b++)
-            ms.mailbox[b] = UINT32_MAX;
         ray_frame rf;
         frame_of(&rf, g, r);
+        noted_start(&ms, g, rf.p, rf.inv_d, rf.slack);
         march(g, s, &rf, &ms);
     }
     if (counts) {

@@ -70,7 +70,8 @@ int lab_query_build(const void *knobs, const surface_list *list, const scene *de
                                  .cull = k->cull == 0,
                                  .split = k->split,
                                  .prefetch = k->prefetch,
-                                 .normals = true};
+                                 .normals = true,
+                                 .boxes = k->boxes == 0};
         status = fast_grid_build(&lq->fast, list, opt, why, sizeof why);
     } else if (lq->accel == LAB_ACCEL_GRID) {
         grid_options opt = {.density = (double)k->grid.density, .max_cells = k->grid.max_cells};

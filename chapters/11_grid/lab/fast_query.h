@@ -22,6 +22,7 @@ typedef struct {
     int cull;
     int split;   /* --split: a cell listing more surfaces than this gets a grid of its own (0: one level) */
     int prefetch; /* --prefetch: auto|on|off, FAST_GRID_PREFETCH_* */
+    int boxes;    /* --boxes: 0 on, 1 off */
 } fast_knobs;
 enum { LAB_ACCEL_FAST, LAB_ACCEL_GRID, LAB_ACCEL_LIST };
 #define FAST_KNOBS_DEFAULT {.grid = GRID_KNOBS_DEFAULT, .accel = LAB_ACCEL_FAST, .split = FAST_GRID_DEFAULT_SPLIT}

@@ -3,8 +3,8 @@
  * Renders what chapter 11's renderer renders, through --accel=fast (the fast
  * grid, fast_grid.h: the default here), grid (the lesson's) or list (chapter
  * 04's linear scan); all three give the same image byte for byte.  Adds the
- * fast grid's knobs --mailbox, --leap, --cull (on|off), --split, --prefetch
- * (auto|on|off), --show=cells|tests (a heat map of the cells visited or the
+ * fast grid's knobs --mailbox, --leap, --cull, --boxes (on|off), --split,
+ * --prefetch (auto|on|off), --show=cells|tests (a heat map of the cells visited or the
  * surfaces tested by each pixel's eye ray), --heat-max (the count shown
  * white), and a report line: what the structure cost and what it did per ray.
  */
@@ -48,6 +48,7 @@ static int lab_knob_rows(lab_context *lab, knob *rows)
          "fast grid: a cell listing more surfaces than this gets a grid of its own (0: one level)"},
         {"prefetch", KNOB_CHOICE, &k->prefetch, auto_on_off,
          "fast grid: fetch the next cell and the surfaces to test ahead (auto: grid and surfaces over 4 MB)"},
+        {"boxes", KNOB_CHOICE, &k->boxes, on_off, "fast grid: test a box's twelve triangles as one box"},
         {"show", KNOB_CHOICE, &lab->show, show_choices, "the image, or each pixel's eye ray's cells visited or tests"},
         {"heat-max", KNOB_INT, &lab->heat_max, NULL, "--show=cells|tests: the count shown white"},
     };

@@ -1,0 +1,67 @@
+/* fast_noted.h - chapter 11's lab: what one ray's march keeps besides the search.
+ *
+ * The mailbox (the surfaces tested along the ray), the boxes tested along it
+ * (fast_boxes.h), and the counts the march adds up.
+ */
+#ifndef CH11_LAB_FAST_NOTED_H
+#define CH11_LAB_FAST_NOTED_H
+
+#include "11_grid/lab/fast_boxes.h"
+#include "11_grid/lab/fast_grid.h"
+#include "11_grid/lab/fast_search.h"
+
+/* The mailbox: the last surfaces tested along this ray, one slot per value
+ * of (index mod MAILBOX).  A surface found in its slot was tested already
+ * and is skipped; a slot taken over by another surface only costs a second
+ * test of the first, never a wrong answer.  The boxes tested, the same way
+ * by (box mod BOXES_NOTED). */
+#define MAILBOX 32
+#define BOXES_NOTED 8
+
+typedef struct {
+    uint32_t mailbox[MAILBOX];
+    uint32_t box_done[BOXES_NOTED];
+    const struct fast_boxes *boxes; /* the top grid's, or NULL */
+    const real *p, *inv_d, *slack;  /* the ray as the march has it, for test_box */
+    real margin;                    /* the top grid's (a sub-grid has the same) */
+    uint64_t cells, leaps, culled;
+    bool prefetch; /* the top grid's */
+} march_state;
+
+/* Before the march of a ray (p, inv_d, slack: its frame's) through g, the top grid. */
+static inline void noted_start(march_state *ms, const fast_grid *g, const real *p, const real *inv_d,
+                               const real *slack)
+{
+    for (int b = 0; b < MAILBOX; b++)
+        ms->mailbox[b] = UINT32_MAX;
+    for (int b = 0; b < BOXES_NOTED && g->boxes; b++)
+        ms->box_done[b] = FAST_BOX_NONE;
+    ms->boxes = g->boxes;
+    ms->p = p;
+    ms->inv_d = inv_d;
+    ms->slack = slack;
+    ms->margin = g->margin;
+}
+
+/* Whether surface k was tested already along the ray (the mailbox). */
+static inline bool tested_already(const march_state *ms, bool use_mailbox, uint32_t k)
+{
+    return use_mailbox && ms->mailbox[k % MAILBOX] == k;
+}
+
+/* Surface k against the ray, noted in the mailbox; the first triangle of a
+ * box (which a cell lists for the box): the box, once along the ray. */
+static inline void test_noted(search *s, march_state *ms, bool use_mailbox, uint32_t k)
+{
+    if (use_mailbox)
+        ms->mailbox[k % MAILBOX] = k;
+    const uint32_t b = ms->boxes ? ms->boxes->of[k] : FAST_BOX_NONE;
+    if (b == FAST_BOX_NONE) {
+        test_surface(s, k);
+    } else if (ms->box_done[b % BOXES_NOTED] != b) {
+        ms->box_done[b % BOXES_NOTED] = b;
+        ms->culled += test_box(s, &ms->boxes->box[b], ms->p, ms->inv_d, ms->slack, ms->margin);
+    }
+}
+
+#endif
