@@ -311,8 +311,9 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
     }
     const bool cull = g->cull, use_mailbox = g->mailbox;
     if (!cull || n - j < SIFT_FROM) {
-        for (uint32_t e = j; e < n && ms->prefetch; e++)
-            prefetch_surface(s->list, surface[e]);
+        if (ms->prefetch)
+            for (uint32_t e = j; e < n; e++)
+                prefetch_surface(s->list, surface[e]);
         for (; j < n; j++)
             if (!tested_already(ms, use_mailbox, surface[j]))
                 test_noted(s, ms, use_mailbox, surface[j]);

@@ -34,8 +34,9 @@ static inline void noted_start(march_state *ms, const fast_grid *g, const real *
 {
     for (int b = 0; b < MAILBOX; b++)
         ms->mailbox[b] = UINT32_MAX;
-    for (int b = 0; b < BOXES_NOTED && g->boxes; b++)
-        ms->box_done[b] = FAST_BOX_NONE;
+    if (g->boxes)
+        for (int b = 0; b < BOXES_NOTED; b++)
+            ms->box_done[b] = FAST_BOX_NONE;
     ms->boxes = g->boxes;
     ms->p = p;
     ms->inv_d = inv_d;
