@@ -142,3 +142,56 @@ size_t fast_boxes_memory(const fast_boxes *b)
 {
     return b ? sizeof *b + (size_t)b->n * sizeof *b->box + (size_t)b->n_surfaces * sizeof *b->of : 0;
 }
+
+/* snippet: test_box */
+/* The face of axis a that the ray crosses at t = at, within +- width: its
+ * two triangles, when that crossing can lie in [t_in, t_out] and before the
+ * best hit so far.  Returns how many it tested. */
+static uint32_t test_face(search *s, const uint32_t face[2], real at, real width, real t_in, real t_out)
+{
+    const real end = t_out < s->upper ? t_out : s->upper;
+    if (at - width > end || at + width < t_in)
+        return 0;
+    test_surface(s, face[0]);
+    test_surface(s, face[1]);
+    return 2;
+}
+
+uint32_t test_box(search *s, const fast_box *b, const real p[3], const real inv_d[3], const real slack[3], real margin)
+{
+    /* The slabs: t where the ray crosses the plane of the face it enters by
+     * along each axis and of the face it leaves by, each within +- width (the
+     * margin, and the rounding); [t_in, t_out], where it is inside all three. */
+    real t_in = s->t_min, t_out = s->upper, enters[3], leaves[3], width[3];
+    int near[3]; /* the face it enters by along a: 2 a (low) or 2 a + 1 (high) */
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; a++) {
+        near[a] = 2 * a + (inv_d[a] < 0);
+        if (inv_d[a] == 0) { /* inside the slab along a for every t, or beside the box */
+            if (p[a] < b->lo[a] - margin || p[a] > b->hi[a] + margin)
+                return 12;
+            enters[a] = leaves[a] = 0;
+            width[a] = REAL_INFINITY; /* both faces of a stay in: the ray never leaves their planes' slab */
+            continue;
+        }
+        const real at_lo = (b->lo[a] - p[a]) * inv_d[a], at_hi = (b->hi[a] - p[a]) * inv_d[a];
+        enters[a] = inv_d[a] < 0 ? at_hi : at_lo;
+        leaves[a] = inv_d[a] < 0 ? at_lo : at_hi;
+        width[a] = margin * real_abs(inv_d[a]) + slack[a];
+        const real in = enters[a] - width[a], out = leaves[a] + width[a];
+        t_in = in > t_in ? in : t_in; /* a NaN is passed over: it never culls */
+        t_out = out < t_out ? out : t_out;
+    }
+    if (t_in > t_out)
+        return 12;
+    /* The faces it enters by first: a hit there closes the window on those it leaves by. */
+    uint32_t tested = 0;
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; a++)
+        tested += test_face(s, b->face[near[a]], enters[a], width[a], t_in, t_out);
+#pragma GCC unroll 3
+    for (int a = 0; a < 3; a++)
+        tested += test_face(s, b->face[near[a] ^ 1], leaves[a], width[a], t_in, t_out);
+    return 12 - tested;
+}
+/* end snippet */

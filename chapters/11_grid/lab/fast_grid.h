@@ -59,6 +59,11 @@ enum { FAST_GRID_PREFETCH_AUTO, FAST_GRID_PREFETCH_ON, FAST_GRID_PREFETCH_OFF };
  * surfaces that span the cell (which its grid leaves out). */
 #define FAST_GRID_SUB 0x80000000u
 
+/* In the packed lists (fast_pack.c), an entry FAST_GRID_BOX + b stands for
+ * box b of g->boxes (fast_boxes.h), which the build lists by its first
+ * triangle: the march tells it from a surface without a load. */
+#define FAST_GRID_BOX 0x40000000u
+
 /* A surface's box inside a cell is kept in steps of 1/FAST_GRID_BOX_STEPS of the
  * cell's frame, one byte per side; 127 leaves each byte's top bit free, so
  * that the march compares all six sides at once in one 64-bit word. */

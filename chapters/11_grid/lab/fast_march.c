@@ -270,7 +270,7 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
  * while the march goes on with the cell's other entries. */
 static inline void prefetch_surface(const surface_list *list, uint32_t k)
 {
-    const surface *item = &list->items[k];
+    const surface *item = &list->items[k & (FAST_GRID_BOX - 1)]; /* a box's entry: some surface, never beyond the list */
     __builtin_prefetch(item);
     __builtin_prefetch((const char *)(&item->triangle.c + 1) - 1);
 }
@@ -316,7 +316,7 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
                 prefetch_surface(s->list, surface[e]);
         for (; j < n; j++)
             if (!tested_already(ms, use_mailbox, surface[j]))
-                test_noted(s, ms, use_mailbox, surface[j]);
+                test_noted(s, ms, g, rf->p, rf->inv_d, rf->slack, use_mailbox, surface[j]);
         return;
     }
     uint32_t span_lo, span_hi;
@@ -360,7 +360,7 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
                 ms->culled++; /* a hit in this batch has closed the window before its box */
                 continue;
             }
-            test_noted(s, ms, use_mailbox, surface[e]);
+            test_noted(s, ms, g, rf->p, rf->inv_d, rf->slack, use_mailbox, surface[e]);
         }
         j = end;
     }
@@ -426,7 +426,7 @@ static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min,
     if (g->n_cells) {
         ray_frame rf;
         frame_of(&rf, g, r);
-        noted_start(&ms, g, rf.p, rf.inv_d, rf.slack);
+        noted_start(&ms, g);
         march(g, s, &rf, &ms);
     }
     if (counts) {

@@ -22,15 +22,12 @@ typedef struct {
     uint32_t mailbox[MAILBOX];
     uint32_t box_done[BOXES_NOTED];
     const struct fast_boxes *boxes; /* the top grid's, or NULL */
-    const real *p, *inv_d, *slack;  /* the ray as the march has it, for test_box */
-    real margin;                    /* the top grid's (a sub-grid has the same) */
     uint64_t cells, leaps, culled;
     bool prefetch; /* the top grid's */
 } march_state;
 
-/* Before the march of a ray (p, inv_d, slack: its frame's) through g, the top grid. */
-static inline void noted_start(march_state *ms, const fast_grid *g, const real *p, const real *inv_d,
-                               const real *slack)
+/* Before the march of a ray through g, the top grid. */
+static inline void noted_start(march_state *ms, const fast_grid *g)
 {
     for (int b = 0; b < MAILBOX; b++)
         ms->mailbox[b] = UINT32_MAX;
@@ -38,10 +35,6 @@ static inline void noted_start(march_state *ms, const fast_grid *g, const real *
         for (int b = 0; b < BOXES_NOTED; b++)
             ms->box_done[b] = FAST_BOX_NONE;
     ms->boxes = g->boxes;
-    ms->p = p;
-    ms->inv_d = inv_d;
-    ms->slack = slack;
-    ms->margin = g->margin;
 }
 
 /* Whether surface k was tested already along the ray (the mailbox). */
@@ -50,18 +43,20 @@ static inline bool tested_already(const march_state *ms, bool use_mailbox, uint3
     return use_mailbox && ms->mailbox[k % MAILBOX] == k;
 }
 
-/* Surface k against the ray, noted in the mailbox; the first triangle of a
- * box (which a cell lists for the box): the box, once along the ray. */
-static inline void test_noted(search *s, march_state *ms, bool use_mailbox, uint32_t k)
+/* Entry k of a cell of grid g against the ray, noted in the mailbox: surface
+ * k, or for FAST_GRID_BOX + b, box b, once along the ray (test_box, with the
+ * march's p, inv_d and slack of the ray). */
+static inline void test_noted(search *s, march_state *ms, const fast_grid *g, const real p[3], const real inv_d[3],
+                              const real slack[3], bool use_mailbox, uint32_t k)
 {
     if (use_mailbox)
         ms->mailbox[k % MAILBOX] = k;
-    const uint32_t b = ms->boxes ? ms->boxes->of[k] : FAST_BOX_NONE;
-    if (b == FAST_BOX_NONE) {
+    const uint32_t b = k - FAST_GRID_BOX;
+    if (k < FAST_GRID_BOX) {
         test_surface(s, k);
     } else if (ms->box_done[b % BOXES_NOTED] != b) {
         ms->box_done[b % BOXES_NOTED] = b;
-        ms->culled += test_box(s, &ms->boxes->box[b], ms->p, ms->inv_d, ms->slack, ms->margin);
+        ms->culled += test_box(s, &ms->boxes->box[b], p, inv_d, slack, g->margin);
     }
 }
 

@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "11_grid/lab/fast_boxes.h"
 #include "11_grid/lab/fast_build.h"
 
 _Static_assert(sizeof(fast_grid_entry) == 3 * sizeof(uint32_t), "a record takes the three words of its packed entry");
@@ -17,7 +18,8 @@ _Static_assert(sizeof(fast_grid_entry) == 3 * sizeof(uint32_t), "a record takes 
 /* Three sides of a box (x, y, z) in one word: x | y << 8 | z << 16. */
 static uint32_t sides(const uint8_t b[3]) { return (uint32_t)b[0] | (uint32_t)b[1] << 8 | (uint32_t)b[2] << 16; }
 
-bool fast_grid_pack(fast_grid *g)
+/* The lists of g packed, a box's entry made FAST_GRID_BOX + its index in `boxes` (the top grid's). */
+static bool pack(fast_grid *g, const struct fast_boxes *boxes)
 {
     uint32_t most = 0;
     for (long c = 0; c < g->n_cells; c++)
@@ -33,7 +35,8 @@ bool fast_grid_pack(fast_grid *g)
         memcpy(copy, g->refs + first, n * sizeof *copy);
         uint32_t *surface = lists + 3 * (size_t)first, *lo = surface + n, *hi = lo + n;
         for (uint32_t q = 0; q < n; q++) {
-            surface[q] = copy[q].surface;
+            const uint32_t k = copy[q].surface, b = boxes && k < FAST_GRID_SUB ? boxes->of[k] : FAST_BOX_NONE;
+            surface[q] = b == FAST_BOX_NONE ? k : FAST_GRID_BOX + b;
             lo[q] = sides(copy[q].box);
             hi[q] = sides(copy[q].box + 3);
         }
@@ -44,7 +47,9 @@ bool fast_grid_pack(fast_grid *g)
     g->lists = lists;
     g->refs = NULL;
     for (long k = 0; k < g->n_subs; k++)
-        if (!fast_grid_pack(&g->subs[k]))
+        if (!pack(&g->subs[k], boxes))
             return false;
     return true;
 }
+
+bool fast_grid_pack(fast_grid *g) { return pack(g, g->boxes); }
