@@ -355,7 +355,7 @@ load_after=$(cut -d' ' -f1-3 /proc/loadavg 2>/dev/null)
 # What the plots and the page need, kept for BENCH_REPLOT=1.
 declare -p chapters latest reps target started cpu cores compiler load_before load_after reduced_at skipped_knobs \
     growth_chapters max_triangles linear_max size_builtin size_stage chapter_side knob_rows common_rows \
-    precision_rows growth_rows strip_list grid_log pov_rows pov_version pov_note slow >"$work/state.sh" 2>/dev/null
+    precision_rows growth_rows strip_list grid_log pov_rows pov_reps pov_version pov_note slow >"$work/state.sh" 2>/dev/null
 
 # ---- plots and the page -----------------------------------------------------------------
 

@@ -51,11 +51,12 @@ setting() {
 # only once (its min and max are then its one time).
 # Past $budget_cut seconds (default 150) every measurement takes at most 3
 # rounds, so that the bench keeps within its ten minutes as chapters add
-# knobs; $reduced_at records when that began.
+# knobs; $reduced_at records when that began.  MEASURE_ALL_ROUNDS=1 keeps
+# them all (the POV-Ray section's few short runs, which decide a goal).
 reduced_at=""
 measure() {
     local group=$1 rounds=$2 n=${#S_LABEL[@]} k r log status parse=${MEASURE_PARSE:-summary_of}
-    if [ "$SECONDS" -gt "${budget_cut:-300}" ] && [ "$rounds" -gt 3 ]; then
+    if [ -z "${MEASURE_ALL_ROUNDS:-}" ] && [ "$SECONDS" -gt "${budget_cut:-300}" ] && [ "$rounds" -gt 3 ]; then
         rounds=3
         if [ -z "$reduced_at" ]; then
             reduced_at=$SECONDS

@@ -196,7 +196,9 @@ parse time or start-up).  The project's side is the latest chapter whose rendere
 of the scene (it prints no "ignores:" line for it).  Chapter 11 runs as its lab's renderer,
 \`build/11_grid/lab --accel=fast\` (row label \`11_grid/lab\`): the fast grid of chapters/11_grid/lab/, which
 gives the lesson's image byte for byte; the lesson's renderer marches the lecture's simple grid, which is
-there to be read, not raced.
+there to be read, not raced.  Each round runs the project's renderer on 1 and 2 threads, then POV-Ray on
+1 and 2, so that both see the same load; the times are medians of ${pov_reps:-9} rounds (3 for a scene
+the project renders at a smaller size), whatever the rest of the bench was cut to.
 EOF
 if [ -n "$pov_note" ]; then
     echo

@@ -369,6 +369,10 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
                  opt.density, opt.max_cells, opt.prefetch);
         return -1;
     }
+    if ((uint32_t)list->n >= FAST_GRID_BOX) { /* an index at or above it would read as a box's entry */
+        snprintf(err, err_size, "grid: %d surfaces, more than the 2^30 - 1 its lists can name", list->n);
+        return -1;
+    }
     /* The box of every surface with finite bounds; the others are tested for every ray. */
     vec3 lo = vec3_make(REAL_INFINITY, REAL_INFINITY, REAL_INFINITY), hi = vec3_neg(lo);
     long binned = 0;
