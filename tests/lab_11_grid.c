@@ -356,11 +356,12 @@ static void test_closest_without_record(void **state)
  * each tested as one box: thin slabs, sticks, cubes and one large box, far
  * from the origin at a random scale, with the edge cases of test_box: rays
  * from outside at the boxes, rays that start on a face with t_min > 0 and
- * leave it (as shadow rays do), rays along a face's plane or an edge, rays
+ * leave it (as shadow rays do), rays at points on the diagonal a face's two
+ * triangles share, rays along a face's plane or an edge, rays
  * parallel to an axis, and windows that start or end a real away from the
  * hit on a face; every knob set against the linear scan.  Then
- * a box is found: a ray at a face's middle tests its two triangles, where
- * the cell that lists the twelve tests more. */
+ * a box is found: a ray at a face tests that face's two triangles, where
+ * the cells that list the twelve test more. */
 static void set_axis(vec3 *v, int a, real value) { *(a == 0 ? &v->x : a == 1 ? &v->y : &v->z) = value; }
 
 static void test_boxes_as_boxes(void **state)
@@ -397,6 +398,12 @@ static void test_boxes_as_boxes(void **state)
             vec3 on = vec3_add(lo[b], vec3_make(size.x * uniform(0, 1), size.y * uniform(0, 1), size.z * uniform(0, 1)));
             const int axis = (int)(next_u64() % 3), high = (int)(next_u64() % 2);
             set_axis(&on, axis, vec3_axis(high ? hi[b] : lo[b], axis)); /* a point on a face */
+            if (next_u64() % 2) { /* on the diagonal its two triangles share (box_triangles': low u, v to high) */
+                const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+                const real f = uniform(0, 1);
+                set_axis(&on, u, vec3_axis(lo[b], u) + f * (vec3_axis(hi[b], u) - vec3_axis(lo[b], u)));
+                set_axis(&on, v, vec3_axis(lo[b], v) + f * (vec3_axis(hi[b], v) - vec3_axis(lo[b], v)));
+            }
             vec3 d = random_direction();
             if (kind == 2) /* along the face's plane */
                 set_axis(&d, axis, 0);
@@ -417,36 +424,38 @@ static void test_boxes_as_boxes(void **state)
         }
         expect_as_linear(&list, &rays, n / 4);
     }
-    /* found: a slab alone (one cell thick: a box is tested as one where its faces share cells), a ray at the
-     * middle of its +x face */
+    /* found: a slab alone (one cell thick: a box is tested as one where its faces share cells), rays at its
+     * +x face (triangles 2 and 3 of box_triangles), at the face's centre and at a point off its diagonal:
+     * the face's two triangles are tested, no other */
     surface_list list;
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
     vec3 t[BOX_TRIANGLES][3];
     box_triangles(vec3_make((real)10.1, -(real)3.3, (real)7.7), vec3_make((real)11.9, -(real)3.2, (real)9.4), t);
     for (int k = 0; k < BOX_TRIANGLES; k++)
         surface_list_add_triangle(&list, (triangle){t[k][0], t[k][1], t[k][2]}, 0, 0);
-    const ray r = {vec3_make(30, -(real)3.25, (real)8.55), vec3_make(-1, (real)0.0001, (real)0.02)};
-    for (int as_box = 0; as_box < 2; as_box++) {
-        fast_grid g;
-        fast_grid_options opt = fast_grid_default_options();
-        opt.boxes = as_box;
-        build_fast(&g, &list, opt);
-        fast_grid_counts counts = {0};
-        hit_record h;
-        assert_true_why(fast_grid_intersect_counted(&g, r, 0, REAL_INFINITY, &h, &counts),
-                        "the ray at the +x face's middle misses the box (boxes %s)", as_box ? "on" : "off");
-        /* the +x face is triangles 2 and 3 of box_triangles */
-        assert_true_why(h.surface == 2 || h.surface == 3, "the ray hit triangle %d, not one of the +x face's (2, 3)",
-                        h.surface);
-        if (as_box && counts.tests != 2)
-            fail_msg("a box's ray at a face's middle: 2 triangle tests expected (its face's), %llu made",
-                     (unsigned long long)counts.tests);
-        if (!as_box && counts.tests <= 2)
-            fail_msg("without boxes the cells at the +x face list more than its two triangles: more than 2 tests "
-                     "expected, %llu",
-                     (unsigned long long)counts.tests);
-        fast_grid_free(&g);
-    }
+    const vec3 d = vec3_make(-1, (real)0.0001, (real)0.0002);
+    const vec3 targets[2] = {vec3_make((real)11.9, -(real)3.25, (real)8.55), vec3_make((real)11.9, -(real)3.22, (real)7.9)};
+    for (int q = 0; q < 2; q++)
+        for (int as_box = 0; as_box < 2; as_box++) {
+            const ray r = {vec3_sub(targets[q], vec3_scale(d, 18)), d};
+            fast_grid g;
+            fast_grid_options opt = fast_grid_default_options();
+            opt.boxes = as_box;
+            build_fast(&g, &list, opt);
+            fast_grid_counts counts = {0};
+            hit_record h;
+            assert_true_why(fast_grid_intersect_counted(&g, r, 0, REAL_INFINITY, &h, &counts),
+                            "the ray at the +x face misses the box (boxes %s)", as_box ? "on" : "off");
+            assert_true_why(h.surface == 2 || h.surface == 3,
+                            "the ray hit triangle %d, not one of the +x face's (2, 3)", h.surface);
+            if (as_box && counts.tests != 2)
+                fail_msg("a box's ray at its +x face %s: 2 triangle tests expected (the face's), %llu made",
+                         q ? "off the diagonal" : "at its centre", (unsigned long long)counts.tests);
+            if (!as_box && counts.tests <= 2)
+                fail_msg("without boxes the cells at the +x face list more than its two triangles: more than 2 "
+                         "tests expected, %llu", (unsigned long long)counts.tests);
+            fast_grid_free(&g);
+        }
     surface_list_free(&list);
 }
 
