@@ -352,6 +352,9 @@ static void test_closest_without_record(void **state)
     }
 }
 
+/* Component a of *v set to value. */
+static void set_axis(vec3 *v, int a, real value) { *(a == 0 ? &v->x : a == 1 ? &v->y : &v->z) = value; }
+
 /* Boxes of twelve triangles (box_triangles, as the scene reader makes them),
  * each tested as one box: thin slabs, sticks, cubes and one large box, far
  * from the origin at a random scale, with the edge cases of test_box: rays
@@ -362,8 +365,6 @@ static void test_closest_without_record(void **state)
  * hit on a face; every knob set against the linear scan.  Then
  * a box is found: a ray at a face tests that face's two triangles, where
  * the cells that list the twelve test more. */
-static void set_axis(vec3 *v, int a, real value) { *(a == 0 ? &v->x : a == 1 ? &v->y : &v->z) = value; }
-
 static void test_boxes_as_boxes(void **state)
 {
     (void)state;
