@@ -10,6 +10,7 @@
 
 pov_rows=$work/pov_rows.tsv
 pov_reps=${BENCH_POV_REPS:-9} # rounds of this section, which the ten minutes' cut leaves whole (lib.sh)
+[[ $pov_reps =~ ^[1-9][0-9]*$ ]] || pov_reps=9
 : >"$pov_rows"
 pov_scenes="wire-box two-boxes bunny"
 pov_version=""
@@ -18,12 +19,14 @@ slow="" # the scenes the project's renderer took too long on for rounds
 
 # pov_summary LOG: "SECONDS RAYS": POV-Ray's own trace time (without its
 # parse time and start-up), and the pixel count of the image as its rays;
-# for the project's renderer's log, its summary (summary_of).
+# for the project's renderer's log, its summary (summary_of).  POV-Ray's
+# log is kept as $work/pov/last_pov.log, for its parse time.
 pov_summary() {
     if ! grep -q 'Trace Time:' "$1"; then
         summary_of "$1"
         return
     fi
+    cp -- "$1" "$work/pov/last_pov.log"
     awk '/^ *Trace Time:/ && match($0, /\([0-9.]+ seconds\)/) { s = substr($0, RSTART + 1, RLENGTH - 10) }
          END { if (s != "") print s, (pixels + 0) }' pixels="$pov_pixels" "$1"
 }
@@ -98,7 +101,7 @@ else
         tpovopts="+W${tsize%x*} +H${tsize#*x} -D +FN -A File_Gamma=2.2"
         MEASURE_PARSE=pov_summary
         # The project's renderer and POV-Ray in one group, so that each round runs the four in turn
-        # and both see the same load (POV-Ray last: its log, run.log, then gives its parse time).
+        # and both see the same load.
         settings_clear
         if [ -n "$chapter" ]; then
             setting "ours -j1" "$work/pov/${s}_o1.png" "${ours[@]}" -j 1 -s "$tsize" $knob "$xml"
@@ -109,7 +112,7 @@ else
         MEASURE_ALL_ROUNDS=1 measure "pov_$s" "$pov_rounds"
         MEASURE_PARSE=summary_of
         pov_parse=$(awk '/^ *Parse Time:/ && match($0, /\([0-9.]+ seconds\)/) { p = substr($0, RSTART + 1, RLENGTH - 10) }
-            END { print p }' "$work/run.log")
+            END { print p }' "$work/pov/last_pov.log" 2>/dev/null)
         if [ "$kind" != colour ]; then
             if [ "$tsize" = "${W}x$H" ]; then
                 cp "$work/pov/${s}_t2.png" "$work/pov/${s}_pov.png"

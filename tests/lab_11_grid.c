@@ -356,27 +356,32 @@ static void test_closest_without_record(void **state)
 static void set_axis(vec3 *v, int a, real value) { *(a == 0 ? &v->x : a == 1 ? &v->y : &v->z) = value; }
 
 /* Boxes of twelve triangles (box_triangles, as the scene reader makes them),
- * each tested as one box: thin slabs, sticks, cubes and one large box, far
- * from the origin at a random scale, with the edge cases of test_box: rays
- * from outside at the boxes, rays that start on a face with t_min > 0 and
- * leave it (as shadow rays do), rays at points on the diagonal a face's two
- * triangles share, rays along a face's plane or an edge, rays
- * parallel to an axis, and windows that start or end a real away from the
- * hit on a face; every knob set against the linear scan.  Then
- * a box is found: a ray at a face tests that face's two triangles, where
- * the cells that list the twelve test more. */
+ * each tested as one box: thin slabs, sticks, cubes, one large box, small
+ * cubes crowded into cells that cull, a box twice and two boxes that share a
+ * corner, after a sphere, far from the origin at a random scale.  The rays
+ * are test_box's edge cases: rays from outside at the boxes' faces, at
+ * points on the diagonal a face's two triangles share, at edges and corners
+ * (along an axis and a cube's diagonal too), rays that start on a face with
+ * t_min > 0 and leave it (as shadow rays do), rays along a face's plane and
+ * along an axis, and windows that start or end at the hit on a face or a
+ * real away from it; every knob set against the linear scan.  Then a box is
+ * found: a ray at a face tests that face's two triangles, where the cells
+ * that list the twelve test more. */
 static void test_boxes_as_boxes(void **state)
 {
     (void)state;
     rng_state = 29;
-    const long n = 4000;
+    const long n = 4800;
+    enum { BOXES = 30 };
     for (int scene_no = 0; scene_no < 4; scene_no++) {
         surface_list list;
         surface_list_init(&list, SPHERE_ROBUST, triangle_tests[scene_no % 2]);
         const real unit = scene_no < 2 ? uniform((real)0.5, 2) : (scene_no == 2 ? (real)1e-5 : (real)1e5);
         const vec3 centre = vec3_scale(uniform_vec(vec3_make(-300, -300, -300), vec3_make(300, 300, 300)), unit);
-        vec3 lo[16], hi[16];
-        for (int b = 0; b < 16; b++) {
+        /* a sphere first, so that no box starts at a multiple of twelve */
+        surface_list_add_sphere(&list, (sphere){vec3_add(centre, vec3_make(0, 20 * unit, 0)), unit}, 0, BOXES);
+        vec3 lo[BOXES], hi[BOXES];
+        for (int b = 0; b < BOXES; b++) {
             const vec3 c = vec3_add(centre, vec3_scale(uniform_vec(vec3_make(-8, -8, -8), vec3_make(8, 8, 8)), unit));
             vec3 half = vec3_scale(uniform_vec(vec3_make((real)0.3, (real)0.3, (real)0.3), vec3_make(2, 2, 2)), unit);
             if (b % 4 == 1) /* a slab */
@@ -387,6 +392,19 @@ static void test_boxes_as_boxes(void **state)
                 half = vec3_scale(vec3_make(6, 5, 7), unit);
             lo[b] = vec3_sub(c, half);
             hi[b] = vec3_add(c, half);
+            if (b >= 16 && b < 28) { /* small cubes crowded together: cells of many boxes, which cull */
+                const vec3 at = vec3_add(centre, vec3_scale(uniform_vec(vec3_make(-1, -1, -1), vec3_make(1, 1, 1)), unit));
+                lo[b] = vec3_sub(at, vec3_scale(vec3_make((real)0.15, (real)0.15, (real)0.15), unit));
+                hi[b] = vec3_add(at, vec3_scale(vec3_make((real)0.15, (real)0.15, (real)0.15), unit));
+            }
+            if (b == 28) { /* box 0 again: ties across boxes */
+                lo[b] = lo[0];
+                hi[b] = hi[0];
+            }
+            if (b == 29) { /* a box with a corner on box 1's */
+                lo[b] = hi[1];
+                hi[b] = vec3_add(hi[1], vec3_scale(vec3_make(1, 1, 1), unit));
+            }
             vec3 t[BOX_TRIANGLES][3];
             box_triangles(lo[b], hi[b], t);
             for (int k = 0; k < BOX_TRIANGLES; k++)
@@ -394,7 +412,7 @@ static void test_boxes_as_boxes(void **state)
         }
         ray_set rays = rays_alloc(n);
         for (long k = 0; k < n; k++) {
-            const int b = (int)(next_u64() % 16), kind = (int)(k % 5);
+            const int b = (int)(next_u64() % BOXES), kind = (int)(k % 6);
             const vec3 size = vec3_sub(hi[b], lo[b]);
             vec3 on = vec3_add(lo[b], vec3_make(size.x * uniform(0, 1), size.y * uniform(0, 1), size.z * uniform(0, 1)));
             const int axis = (int)(next_u64() % 3), high = (int)(next_u64() % 2);
@@ -405,23 +423,56 @@ static void test_boxes_as_boxes(void **state)
                 set_axis(&on, u, vec3_axis(lo[b], u) + f * (vec3_axis(hi[b], u) - vec3_axis(lo[b], u)));
                 set_axis(&on, v, vec3_axis(lo[b], v) + f * (vec3_axis(hi[b], v) - vec3_axis(lo[b], v)));
             }
+            if (kind == 5) /* on an edge, or a corner */
+                for (int a = 0; a < 3; a++)
+                    if (a != axis && (a == (axis + 1) % 3 || next_u64() % 2))
+                        set_axis(&on, a, vec3_axis(next_u64() % 2 ? hi[b] : lo[b], a));
             vec3 d = random_direction();
             if (kind == 2) /* along the face's plane */
                 set_axis(&d, axis, 0);
-            if (kind == 3) /* along an axis */
+            if (kind == 3 || (kind == 5 && next_u64() % 3 == 0)) /* along an axis */
                 d = vec3_make(axis == 0 ? 1 : 0, axis == 1 ? -1 : 0, axis == 2 ? 1 : 0);
+            else if (kind == 5 && next_u64() % 2) /* along a diagonal of the cube */
+                d = vec3_make(next_u64() % 2 ? 1 : -1, next_u64() % 2 ? 1 : -1, next_u64() % 2 ? 1 : -1);
             const vec3 p = kind == 1 || kind == 2 ? on : vec3_sub(on, vec3_scale(d, 30 * unit));
             rays.r[k] = (ray){p, kind == 0 ? vec3_sub(on, p) : d};
             rays.t_min[k] = kind == 1 ? 64 * REAL_EPSILON * uniform(1, 100) : 0;
             rays.t_max[k] = kind == 4 ? uniform(0, 40) : REAL_INFINITY;
             hit_record h;
             if (kind == 4 && surfaces_intersect(&list, rays.r[k - 4], 0, REAL_INFINITY, &h)) {
-                /* a window that ends or starts a real away from the hit of ray k - 4 (at a face): where
+                /* a window that starts or ends at the hit of ray k - 4 (at a face) or a real away from it: where
                  * rounding decides whether a face's plane is crossed in the window */
+                const int end = (int)(next_u64() % 4);
                 rays.r[k] = rays.r[k - 4];
-                rays.t_min[k] = next_u64() % 2 ? -real_next_up(-h.t) : 0; /* the real below h.t */
-                rays.t_max[k] = rays.t_min[k] > 0 ? REAL_INFINITY : real_next_up(h.t);
+                rays.t_min[k] = end == 0 ? -real_next_up(-h.t) : end == 1 ? h.t : 0; /* the real below h.t, h.t */
+                rays.t_max[k] = end == 2 ? real_next_up(h.t) : end == 3 ? h.t : REAL_INFINITY;
             }
+        }
+        expect_as_linear(&list, &rays, n / 4);
+    }
+    /* a lattice of 4 x 4 x 4 small cubes, many to a cell, which culls them by the parts of their
+     * triangles' boxes it holds: rays at their faces from every side, most of which pass one face of a cube
+     * and never come near its opposite face */
+    {
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+        const vec3 corner = vec3_make((real)1003.7, -(real)251.3, (real)77.1);
+        vec3 lo[64], hi[64];
+        for (int b = 0; b < 64; b++) {
+            lo[b] = vec3_add(corner, vec3_make((real)0.5 * (b % 4), (real)0.5 * (b / 4 % 4), (real)0.5 * (b / 16)));
+            hi[b] = vec3_add(lo[b], vec3_make((real)0.3, (real)0.3, (real)0.3));
+            vec3 t[BOX_TRIANGLES][3];
+            box_triangles(lo[b], hi[b], t);
+            for (int k = 0; k < BOX_TRIANGLES; k++)
+                surface_list_add_triangle(&list, (triangle){t[k][0], t[k][1], t[k][2]}, 0, b);
+        }
+        ray_set rays = rays_alloc(n);
+        for (long k = 0; k < n; k++) {
+            const int b = (int)(next_u64() % 64), axis = (int)(next_u64() % 3), high = (int)(next_u64() % 2);
+            vec3 on = vec3_add(lo[b], vec3_make((real)0.3 * uniform(0, 1), (real)0.3 * uniform(0, 1), (real)0.3 * uniform(0, 1)));
+            set_axis(&on, axis, vec3_axis(high ? hi[b] : lo[b], axis));
+            const vec3 from = vec3_add(on, vec3_scale(random_direction(), 10));
+            set_ray(&rays, k, from, vec3_sub(on, from));
         }
         expect_as_linear(&list, &rays, n / 4);
     }

@@ -343,8 +343,10 @@ int fast_grid_fill(fast_grid *g, const uint32_t *subset, long n, bool leap, char
     write_entries(g, &bins, fill);
     free(fill);
     free(bins.at);
-    /* the most the build held at once: the grid, the fill array and the bins */
-    g->peak_bytes = fast_grid_memory(g) + (size_t)g->n_cells * sizeof *fill + bins.size * sizeof *bins.at;
+    /* the most the build held at once: the grid, the fill array and the bins (and the stamps of a grid with
+     * boxes, freed before the entries were made: counted as if held with them, a bound) */
+    g->peak_bytes = fast_grid_memory(g) + (size_t)g->n_cells * sizeof *fill * (g->boxes ? 2 : 1) +
+                    bins.size * sizeof *bins.at;
     if (leap) {
         g->empty = malloc(8 * (size_t)g->n_cells);
         if (!g->empty)

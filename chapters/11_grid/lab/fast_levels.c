@@ -54,8 +54,7 @@ static long box_cells(fast_grid *sub, const uint32_t *subset, long n)
 static int build_sub(fast_grid *sub, const fast_grid *g, const uint32_t *subset, long n, const int idx[3],
                      fast_grid_options opt, char *err, size_t err_size)
 {
-    *sub = (fast_grid){.list = g->list, .mailbox = g->mailbox, .cull = g->cull, .margin = g->margin, .scale = g->scale,
-                       .boxes = g->boxes};
+    *sub = (fast_grid){.list = g->list, .mailbox = g->mailbox, .cull = g->cull, .margin = g->margin, .scale = g->scale};
     vec3 lo = vec3_make(REAL_INFINITY, REAL_INFINITY, REAL_INFINITY), hi = vec3_neg(lo);
     for (long q = 0; q < n; q++) {
         vec3 slo, shi;
@@ -77,10 +76,12 @@ static int build_sub(fast_grid *sub, const fast_grid *g, const uint32_t *subset,
     sub->lo = vec3_make(box_lo[0], box_lo[1], box_lo[2]);
     sub->hi = vec3_make(box_hi[0], box_hi[1], box_hi[2]);
     fast_grid_resolution(extent, n, opt.density, opt.max_cells, sub->n);
-    if (box_cells(sub, subset, n) > MOST_CELLS_PER_SURFACE * n)
+    sub->boxes = g->boxes; /* g's, for the bounds of a box's entry while sub is built; cleared after */
+    const bool too_many = box_cells(sub, subset, n) > MOST_CELLS_PER_SURFACE * n;
+    const int status = too_many ? 1 : fast_grid_fill(sub, subset, n, opt.leap, err, err_size);
+    sub->boxes = NULL;
+    if (too_many)
         return 1;
-    const int status = fast_grid_fill(sub, subset, n, opt.leap, err, err_size);
-    sub->boxes = NULL; /* g's, which its build has read */
     if (status != 0) {
         fast_grid_free(sub);
         return -1;
