@@ -355,6 +355,15 @@ static void test_closest_without_record(void **state)
 /* Component a of *v set to value. */
 static void set_axis(vec3 *v, int a, real value) { *(a == 0 ? &v->x : a == 1 ? &v->y : &v->z) = value; }
 
+/* The box [lo, hi] added to list as the scene reader adds one: twelve triangles (box_triangles). */
+static void add_box(surface_list *list, vec3 lo, vec3 hi, int source)
+{
+    vec3 t[BOX_TRIANGLES][3];
+    box_triangles(lo, hi, t);
+    for (int k = 0; k < BOX_TRIANGLES; k++)
+        surface_list_add_triangle(list, (triangle){t[k][0], t[k][1], t[k][2]}, 0, source);
+}
+
 /* Boxes of twelve triangles (box_triangles, as the scene reader makes them),
  * each tested as one box: thin slabs, sticks, cubes, one large box, small
  * cubes crowded into cells that cull, a box twice and two boxes that share a
@@ -405,10 +414,7 @@ static void test_boxes_as_boxes(void **state)
                 lo[b] = hi[1];
                 hi[b] = vec3_add(hi[1], vec3_scale(vec3_make(1, 1, 1), unit));
             }
-            vec3 t[BOX_TRIANGLES][3];
-            box_triangles(lo[b], hi[b], t);
-            for (int k = 0; k < BOX_TRIANGLES; k++)
-                surface_list_add_triangle(&list, (triangle){t[k][0], t[k][1], t[k][2]}, 0, b);
+            add_box(&list, lo[b], hi[b], b);
         }
         ray_set rays = rays_alloc(n);
         for (long k = 0; k < n; k++) {
@@ -461,10 +467,7 @@ static void test_boxes_as_boxes(void **state)
         for (int b = 0; b < 64; b++) {
             lo[b] = vec3_add(corner, vec3_make((real)0.5 * (b % 4), (real)0.5 * (b / 4 % 4), (real)0.5 * (b / 16)));
             hi[b] = vec3_add(lo[b], vec3_make((real)0.3, (real)0.3, (real)0.3));
-            vec3 t[BOX_TRIANGLES][3];
-            box_triangles(lo[b], hi[b], t);
-            for (int k = 0; k < BOX_TRIANGLES; k++)
-                surface_list_add_triangle(&list, (triangle){t[k][0], t[k][1], t[k][2]}, 0, b);
+            add_box(&list, lo[b], hi[b], b);
         }
         ray_set rays = rays_alloc(n);
         for (long k = 0; k < n; k++) {
@@ -481,10 +484,7 @@ static void test_boxes_as_boxes(void **state)
      * the face's two triangles are tested, no other */
     surface_list list;
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
-    vec3 t[BOX_TRIANGLES][3];
-    box_triangles(vec3_make((real)10.1, -(real)3.3, (real)7.7), vec3_make((real)11.9, -(real)3.2, (real)9.4), t);
-    for (int k = 0; k < BOX_TRIANGLES; k++)
-        surface_list_add_triangle(&list, (triangle){t[k][0], t[k][1], t[k][2]}, 0, 0);
+    add_box(&list, vec3_make((real)10.1, -(real)3.3, (real)7.7), vec3_make((real)11.9, -(real)3.2, (real)9.4), 0);
     const vec3 d = vec3_make(-1, (real)0.0001, (real)0.0002);
     const vec3 targets[2] = {vec3_make((real)11.9, -(real)3.25, (real)8.55), vec3_make((real)11.9, -(real)3.22, (real)7.9)};
     for (int q = 0; q < 2; q++)
