@@ -193,7 +193,7 @@ static void write_entries(fast_grid *g, const bin_list *bins, uint32_t *fill)
             continue;
         }
         if (b.surface != boxed) {
-            fast_grid_entry_bounds(g, b.surface, &lo, &hi);
+            fast_grid_surface_bounds(&g->list->items[b.surface], &lo, &hi); /* a surface alone: a box took the branch above */
             boxed = b.surface;
         }
         cull_box(g, lo, hi, (int)(b.cell % n0), (int)(b.cell / n0 % n1), (int)(b.cell / n0 / n1), entry->box);
