@@ -21,22 +21,25 @@
 /* a few densities with every knob on, one level and two (the default split,
  * and splits so low that most cells with surfaces get grids of their own),
  * then mailboxing, leaping and culling off one at a time and all together
- * (boxes too); the last two prefetch (these small scenes' grids would not by
- * size); the second and the last keep the triangles' normals, as the lab does */
+ * (boxes too); the two after prefetch (these small scenes' grids would not by
+ * size); the second and the fourth from last keep the triangles' normals, as the lab does; the last two
+ * test every scene as a list, without cells (list_up_to), with boxes and without */
 static const fast_grid_options knob_sets[] = {
-    {0.3, 1L << 20, true, true, true, 0, 0, false, true},
-    {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT, 0, true, true},
-    {10, 1L << 20, true, true, true, 0, 0, false, true},
-    {2, 1L << 20, true, true, true, 0, 0, false, true},
-    {0.3, 1L << 20, true, true, true, 2, 0, false, true},
-    {2, 1L << 20, true, true, true, 4, 0, false, true},
-    {2, 1L << 20, false, true, true, 0, 0, false, true},
-    {2, 1L << 20, true, false, true, 0, 0, false, true},
-    {2, 1L << 20, true, true, false, 0, 0, false, true},
-    {2, 1L << 20, false, false, false, 0, 0, false, false},
-    {2, 1L << 20, false, false, false, 3, 0, false, false},
-    {2, 1L << 20, true, true, true, 4, FAST_GRID_PREFETCH_ON, false, true},
-    {0.3, 1L << 20, true, true, true, 0, FAST_GRID_PREFETCH_ON, true, true},
+    {0.3, 1L << 20, true, true, true, 0, 0, false, true, 0},
+    {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT, 0, true, true, 0},
+    {10, 1L << 20, true, true, true, 0, 0, false, true, 0},
+    {2, 1L << 20, true, true, true, 0, 0, false, true, 0},
+    {0.3, 1L << 20, true, true, true, 2, 0, false, true, 0},
+    {2, 1L << 20, true, true, true, 4, 0, false, true, 0},
+    {2, 1L << 20, false, true, true, 0, 0, false, true, 0},
+    {2, 1L << 20, true, false, true, 0, 0, false, true, 0},
+    {2, 1L << 20, true, true, false, 0, 0, false, true, 0},
+    {2, 1L << 20, false, false, false, 0, 0, false, false, 0},
+    {2, 1L << 20, false, false, false, 3, 0, false, false, 0},
+    {2, 1L << 20, true, true, true, 4, FAST_GRID_PREFETCH_ON, false, true, 0},
+    {0.3, 1L << 20, true, true, true, 0, FAST_GRID_PREFETCH_ON, true, true, 0},
+    {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT, 0, true, true, 1 << 30},
+    {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT, 0, false, false, 1 << 30},
 };
 #define N_KNOB_SETS (sizeof knob_sets / sizeof knob_sets[0])
 
@@ -493,6 +496,7 @@ static void test_boxes_as_boxes(void **state)
             fast_grid g;
             fast_grid_options opt = fast_grid_default_options();
             opt.boxes = as_box;
+            opt.list_up_to = 0; /* cells, not a list of one box */
             build_fast(&g, &list, opt);
             fast_grid_counts counts = {0};
             hit_record h;
@@ -511,6 +515,73 @@ static void test_boxes_as_boxes(void **state)
     surface_list_free(&list);
 }
 
+/* A scene of few surfaces is a list, without cells: with the default knobs
+ * when its units cost a ray at most 9 triangle tests (a triangle 1, a box
+ * 1.25, a sphere 4: fast_few.c's weights), else cells; surfaces without
+ * finite bounds are tested apart and do not count.  Each case one unit
+ * either side of the bound, far from the origin; the knob sets above run
+ * every scene both ways against the linear scan. */
+static void test_few_surfaces_as_a_list(void **state)
+{
+    (void)state;
+    rng_state = 29;
+    const struct {
+        int boxes, spheres, triangles;
+        bool list;
+    } cases[] = {{0, 0, 1, true},  {5, 0, 0, true},  {7, 0, 0, true},  {8, 0, 0, false}, {0, 2, 1, true},
+                 {0, 2, 2, false}, {0, 0, 9, true},  {0, 0, 10, false}, {3, 1, 1, true}, {3, 1, 2, false}};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+        const vec3 at = vec3_make(uniform(-9000, 9000), uniform(-9000, 9000), uniform(-9000, 9000));
+        int source = 0;
+        for (int k = 0; k < cases[c].boxes; k++) {
+            const vec3 lo = vec3_add(at, uniform_vec(vec3_make(-5, -5, -5), vec3_make(5, 5, 5)));
+            const vec3 size = uniform_vec(vec3_make((real)0.1, (real)0.1, (real)0.1), vec3_make(2, 2, 2));
+            add_box(&list, lo, vec3_add(lo, size), source++);
+        }
+        for (int k = 0; k < cases[c].spheres; k++)
+            surface_list_add_sphere(&list, (sphere){vec3_add(at, uniform_vec(vec3_make(-5, -5, -5), vec3_make(5, 5, 5))),
+                                                    uniform((real)0.1, 2)},
+                                    0, source++);
+        for (int k = 0; k < cases[c].triangles; k++) {
+            const vec3 a = vec3_add(at, uniform_vec(vec3_make(-5, -5, -5), vec3_make(5, 5, 5)));
+            surface_list_add_triangle(&list, (triangle){a, vec3_add(a, random_direction()), vec3_add(a, random_direction())},
+                                      0, source++);
+        }
+        /* and one surface that no cell could hold: it never counts */
+        surface_list_add_triangle(&list, (triangle){at, vec3_make(REAL_INFINITY, 0, 0), vec3_add(at, random_direction())},
+                                  0, source++);
+        const long units = cases[c].boxes + cases[c].spheres + cases[c].triangles;
+        for (int up_to = 0; up_to < 2; up_to++) {
+            fast_grid_options opt = fast_grid_default_options();
+            opt.list_up_to = up_to ? FAST_GRID_DEFAULT_LIST_UP_TO : 0;
+            fast_grid g;
+            build_fast(&g, &list, opt);
+            const bool list_expected = up_to && cases[c].list;
+            if ((g.units != NULL) != list_expected || (list_expected && g.n_units != units) ||
+                (g.n_cells == 0) != list_expected || g.n_unbinned != 1)
+                fail_msg("%d boxes, %d spheres, %d triangles (list_up_to %d): expected %s, got %ld units, %ld cells, "
+                         "%ld unbinned (1 expected)",
+                         cases[c].boxes, cases[c].spheres, cases[c].triangles, opt.list_up_to,
+                         list_expected ? "a list of them all" : "cells", g.n_units, g.n_cells, g.n_unbinned);
+            fast_grid_free(&g);
+        }
+        surface_list_free(&list);
+    }
+    /* a bad knob: a message, no grid */
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+    surface_list_add_sphere(&list, (sphere){vec3_make(1, 2, 3), 1}, 0, 0);
+    fast_grid_options opt = fast_grid_default_options();
+    opt.list_up_to = -1;
+    fast_grid g;
+    char err[256] = "";
+    assert_int_equal(-1, fast_grid_build(&g, &list, opt, err, sizeof err));
+    assert_non_null(strstr(err, "the list's cost >= 0"));
+    surface_list_free(&list);
+}
+
 static const graded_test tests[] = {
     GRADED(test_random_scenes, 0),
     GRADED(test_zero_components, 0),
@@ -526,6 +597,7 @@ static const graded_test tests[] = {
     GRADED(test_prefetch_by_size, 0),
     GRADED(test_closest_without_record, 0),
     GRADED(test_boxes_as_boxes, 0),
+    GRADED(test_few_surfaces_as_a_list, 0),
     GRADED(test_directions_of_any_length, 0),
     GRADED(test_rays_not_finite, 0),
     GRADED(test_cornell_scenes, 0),

@@ -20,7 +20,8 @@ fast_grid_options fast_grid_default_options(void)
                           .split = FAST_GRID_DEFAULT_SPLIT,
                           .prefetch = FAST_GRID_PREFETCH_AUTO,
                           .normals = false,
-                          .boxes = true};
+                          .boxes = true,
+                          .list_up_to = FAST_GRID_DEFAULT_LIST_UP_TO};
 }
 
 static real get(vec3 v, int a) { return a == 0 ? v.x : a == 1 ? v.y : v.z; }
@@ -366,9 +367,11 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
 {
     *g = (fast_grid){.list = list, .mailbox = opt.mailbox, .cull = opt.cull};
     if (!(opt.density > 0) || opt.max_cells < 1 || opt.max_cells > (1L << 30) ||
-        opt.prefetch < FAST_GRID_PREFETCH_AUTO || opt.prefetch > FAST_GRID_PREFETCH_OFF) {
-        snprintf(err, err_size, "grid: density must be > 0, the cell cap 1 .. 2^30, prefetching 0 .. 2 (got %g, %ld, %d)",
-                 opt.density, opt.max_cells, opt.prefetch);
+        opt.prefetch < FAST_GRID_PREFETCH_AUTO || opt.prefetch > FAST_GRID_PREFETCH_OFF || opt.list_up_to < 0) {
+        snprintf(err, err_size,
+                 "grid: density must be > 0, the cell cap 1 .. 2^30, prefetching 0 .. 2, the list's cost >= 0 "
+                 "(got %g, %ld, %d, %d)",
+                 opt.density, opt.max_cells, opt.prefetch, opt.list_up_to);
         return -1;
     }
     if ((uint32_t)list->n >= FAST_GRID_BOX) { /* an index at or above it would read as a box's entry */
@@ -421,13 +424,18 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
     g->hi = widen(hi, g->margin);
     if (opt.boxes && !fast_boxes_find(&g->boxes, list))
         goto out_of_memory;
-    const real cell[3] = {(hi.x - lo.x + 2 * g->margin) / (real)g->n[0], (hi.y - lo.y + 2 * g->margin) / (real)g->n[1],
-                          (hi.z - lo.z + 2 * g->margin) / (real)g->n[2]};
-    fast_boxes_keep_small(&g->boxes, cell);
-    int status = fast_grid_fill(g, NULL, list->n, opt.leap, err, err_size);
-    if (status == 0)
-        status = fast_grid_split(g, opt, err, err_size);
-    if (status == 0 && !fast_grid_pack(g)) {
+    if (!fast_grid_few_units(g, list, opt.list_up_to))
+        goto out_of_memory;
+    int status = 0;
+    if (!g->units) { /* a list (fast_few.c) has every box kept and no cells */
+        const real w = 2 * g->margin, cell[3] = {(hi.x - lo.x + w) / (real)g->n[0], (hi.y - lo.y + w) / (real)g->n[1],
+                                                 (hi.z - lo.z + w) / (real)g->n[2]};
+        fast_boxes_keep_small(&g->boxes, cell);
+        status = fast_grid_fill(g, NULL, list->n, opt.leap, err, err_size);
+        if (status == 0)
+            status = fast_grid_split(g, opt, err, err_size);
+    }
+    if (status == 0 && !g->units && !fast_grid_pack(g)) {
         snprintf(err, err_size, "grid: out of memory");
         status = -1;
     }
@@ -459,6 +467,7 @@ void fast_grid_free(fast_grid *g)
     free(g->refs);
     free(g->lists);
     free(g->unbinned);
+    free(g->units);
     free(g->empty);
     free(g->normal);
     fast_boxes_free(g->boxes);
@@ -471,18 +480,18 @@ void fast_grid_free(fast_grid *g)
     g->subs = NULL;
     g->n_subs = 0;
     g->plane[0] = g->plane[1] = g->plane[2] = NULL;
-    g->start = g->unbinned = NULL;
+    g->start = g->unbinned = g->units = NULL;
     g->refs = NULL;
     g->lists = NULL;
     g->empty = NULL;
     g->normal = NULL;
-    g->n_cells = g->n_refs = g->n_unbinned = 0;
+    g->n_cells = g->n_refs = g->n_unbinned = g->n_units = 0;
 }
 
 size_t fast_grid_memory(const fast_grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
-    return sizeof *g + (cells + (size_t)g->n_unbinned) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof(fast_grid_entry) +
+    return sizeof *g + (cells + (size_t)g->n_unbinned + (size_t)g->n_units) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof(fast_grid_entry) +
            (g->empty ? 8 * (size_t)g->n_cells : 0) + (g->normal ? (size_t)g->list->n * sizeof *g->normal : 0) +
            (g->plane[0] ? plane_count(g) * sizeof(real) : 0) + fast_grid_subs_memory(g) + fast_boxes_memory(g->boxes);
 }

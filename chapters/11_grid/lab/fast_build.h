@@ -54,6 +54,12 @@ int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_s
  * g->lists from g->refs, in the same memory.  False when out of memory. */
 bool fast_grid_pack(fast_grid *g);
 
+/* A scene of few surfaces, a list: g->units (n_units entries, a surface or
+ * FAST_GRID_BOX + a box of g->boxes) when the units with finite bounds cost
+ * a ray at most up_to triangle tests, boxes and spheres by their measured
+ * weight (fast_few.c); else g is left as it is.  False when out of memory. */
+bool fast_grid_few_units(fast_grid *g, const surface_list *list, int up_to);
+
 /* The memory of g's sub-grids. */
 size_t fast_grid_subs_memory(const fast_grid *g);
 

@@ -13,7 +13,8 @@
  * Billeter and Slusallek 2011).  The triangles of a watertight list take the
  * watertight test with its ray part made once per ray, and a box of twelve
  * triangles whose faces share cells is listed and tested as one box
- * (fast_boxes.h).
+ * (fast_boxes.h).  A scene of a few surfaces is tested as a list, without
+ * cells (fast_few.c).
  *
  * fast_grid_intersect returns what the lesson's grid_intersect and chapter
  * 04's surfaces_intersect return: the same surface and bit for bit the same
@@ -40,6 +41,8 @@ typedef struct {
     int prefetch;    /* FAST_GRID_PREFETCH_*: fetch the next cell and the surfaces to test ahead of their use */
     bool normals;    /* keep each triangle's unit normal for the hit's record (24 bytes a surface) */
     bool boxes;      /* test a box's twelve triangles as one box (fast_boxes.h) */
+    int list_up_to;  /* a scene whose surfaces cost a ray at most this many triangle tests (a box 1.25, a
+                      * sphere 4) is tested as a list, without cells; 0: cells always */
 } fast_grid_options;
 /* end snippet */
 
@@ -53,6 +56,7 @@ enum { FAST_GRID_PREFETCH_AUTO, FAST_GRID_PREFETCH_ON, FAST_GRID_PREFETCH_OFF };
 #define FAST_GRID_DEFAULT_DENSITY 2.0
 #define FAST_GRID_DEFAULT_MAX_CELLS (1L << 24)
 #define FAST_GRID_DEFAULT_SPLIT 48
+#define FAST_GRID_DEFAULT_LIST_UP_TO 9
 
 /* An entry whose `surface` is FAST_GRID_SUB + s stands for the cell's own
  * grid, subs[s]: the first entry of a cell that has one, followed by the
@@ -112,6 +116,10 @@ struct fast_grid {
                                * A table per octant, so that a ray reads one (a cache line holds
                                * 64 cells' worth for it).  NULL when leaping is off */
     uint32_t *unbinned;       /* surfaces without finite bounds: tested for every ray */
+    uint32_t *units;          /* a scene of few surfaces (list_up_to): all of them with finite bounds, entries
+                               * as the lists have them, tested for every ray; the grid then has no cells.
+                               * NULL otherwise */
+    long n_units;
     vec3 *normal;             /* with fast_grid_options.normals, per surface: a triangle's triangle_normal (the
                                * record of a hit needs it; a division and a square root in a chain); else NULL */
     struct fast_boxes *boxes; /* the boxes of twelve triangles among the surfaces (fast_boxes.h): a cell lists
@@ -139,7 +147,8 @@ typedef struct {
 } fast_grid_counts;
 
 /* The default knobs: FAST_GRID_DEFAULT_DENSITY, FAST_GRID_DEFAULT_MAX_CELLS, mailboxing, leaping, culling
- * and boxes on, two levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell, prefetching by size, no normals kept. */
+ * and boxes on, two levels from FAST_GRID_DEFAULT_SPLIT surfaces in a cell, prefetching by size, no normals kept,
+ * a list up to FAST_GRID_DEFAULT_LIST_UP_TO triangle tests. */
 fast_grid_options fast_grid_default_options(void);
 
 /* Builds the grid of `list`, which must outlive it and not change.  Returns

@@ -214,21 +214,21 @@ static inline void frame_of(ray_frame *f, const fast_grid *g, ray r)
     f->octant = octant;
 }
 
-/* Where the ray enters the grid's box: the slabs lo_a <= p_a + t d_a <= hi_a
- * of the three axes, within (t_min, upper), and the first cell: the one
- * holding p + t0 d, moved back along the ray by the rounding of that point,
- * and clamped to the grid.  False when the ray misses the box there. */
-static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, real upper, dda *m)
+/* Whether the ray meets the grid's box, the slabs lo_a <= p_a + t d_a <= hi_a
+ * of the three axes, within (t_min, upper): *t0 is where it enters it. */
+static inline bool box_window(const fast_grid *g, const ray_frame *f, real t_min, real upper, real *t0)
 {
     const real *lo = g->lo_a, *hi = g->hi_a;
-    real t0 = t_min, t1 = upper;
+    real t1 = upper;
+    *t0 = t_min;
     /* A ray from inside the box with the window (0, upper), as shadow rays
      * are: every slab's near side is at t <= 0 and its far side at t >= 0, so
      * the loop below would leave t0 = 0 <= t1.  It is skipped. */
-    const bool inside = t_min == 0 && upper >= 0 && f->p[0] >= lo[0] && f->p[0] <= hi[0] && f->p[1] >= lo[1] &&
-                        f->p[1] <= hi[1] && f->p[2] >= lo[2] && f->p[2] <= hi[2];
+    if (t_min == 0 && upper >= 0 && f->p[0] >= lo[0] && f->p[0] <= hi[0] && f->p[1] >= lo[1] && f->p[1] <= hi[1] &&
+        f->p[2] >= lo[2] && f->p[2] <= hi[2])
+        return true;
 #pragma GCC unroll 3
-    for (int a = 0; a < 3 && !inside; a++) {
+    for (int a = 0; a < 3; a++) {
         if (f->parallel[a]) {
             if (!(f->p[a] >= lo[a] && f->p[a] <= hi[a]))
                 return false;
@@ -242,10 +242,21 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
         }
         near -= f->slack[a];
         far += f->slack[a];
-        t0 = near > t0 ? near : t0; /* fmax and fmin, inline; a NaN is passed over as they do */
+        *t0 = near > *t0 ? near : *t0; /* fmax and fmin, inline; a NaN is passed over as they do */
         t1 = far < t1 ? far : t1;
     }
-    if (!inside && !(t0 <= t1)) /* misses the box, or the window ends before it */
+    return *t0 <= t1; /* false: it misses the box, or the window ends before it */
+}
+
+/* Where the ray enters the grid's box within (t_min, upper) (box_window),
+ * and the first cell: the one holding p + t0 d, moved back along the ray by
+ * the rounding of that point, and clamped to the grid.  False when the ray
+ * misses the box there. */
+static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, real upper, dda *m)
+{
+    const real *lo = g->lo_a;
+    real t0;
+    if (!box_window(g, f, t_min, upper, &t0))
         return false;
     const real back = f->reach + 16 * REAL_EPSILON * real_abs(t0) * f->d_max;
 #pragma GCC unroll 3
@@ -423,11 +434,16 @@ static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min,
     march_state ms;
     ms.cells = ms.leaps = ms.culled = 0;
     ms.prefetch = g->prefetch;
-    if (g->n_cells) {
+    if (g->n_cells || g->units) {
         ray_frame rf;
         frame_of(&rf, g, r);
         noted_start(&ms, g);
-        march(g, s, &rf, &ms);
+        real t0;
+        if (!g->units)
+            march(g, s, &rf, &ms);
+        else if (box_window(g, &rf, s->t_min, s->upper, &t0)) /* a list of few, each once: no mailbox */
+            for (long u = 0; u < g->n_units; u++)
+                test_noted(s, &ms, g, rf.p, rf.inv_d, rf.slack, false, g->units[u]);
     }
     if (counts) {
         counts->cells += ms.cells;

@@ -71,7 +71,8 @@ int lab_query_build(const void *knobs, const surface_list *list, const scene *de
                                  .split = k->split,
                                  .prefetch = k->prefetch,
                                  .normals = true,
-                                 .boxes = k->boxes == 0};
+                                 .boxes = k->boxes == 0,
+                                 .list_up_to = k->list_up_to};
         status = fast_grid_build(&lq->fast, list, opt, why, sizeof why);
     } else if (lq->accel == LAB_ACCEL_GRID) {
         grid_options opt = {.density = (double)k->grid.density, .max_cells = k->grid.max_cells};

@@ -23,9 +23,12 @@ typedef struct {
     int split;   /* --split: a cell listing more surfaces than this gets a grid of its own (0: one level) */
     int prefetch; /* --prefetch: auto|on|off, FAST_GRID_PREFETCH_* */
     int boxes;    /* --boxes: 0 on, 1 off */
+    int list_up_to; /* --list-up-to: a scene that costs a ray at most this many triangle tests is a list */
 } fast_knobs;
 enum { LAB_ACCEL_FAST, LAB_ACCEL_GRID, LAB_ACCEL_LIST };
-#define FAST_KNOBS_DEFAULT {.grid = GRID_KNOBS_DEFAULT, .accel = LAB_ACCEL_FAST, .split = FAST_GRID_DEFAULT_SPLIT}
+#define FAST_KNOBS_DEFAULT                                                                                             \
+    {.grid = GRID_KNOBS_DEFAULT, .accel = LAB_ACCEL_FAST, .split = FAST_GRID_DEFAULT_SPLIT,                            \
+     .list_up_to = FAST_GRID_DEFAULT_LIST_UP_TO}
 
 /* What the closest-hit queries of one thread did since the last reset. */
 typedef struct {

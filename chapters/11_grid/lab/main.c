@@ -4,9 +4,10 @@
  * grid, fast_grid.h: the default here), grid (the lesson's) or list (chapter
  * 04's linear scan); all three give the same image byte for byte.  Adds the
  * fast grid's knobs --mailbox, --leap, --cull, --boxes (on|off), --split,
- * --prefetch (auto|on|off), --show=cells|tests (a heat map of the cells visited or the
- * surfaces tested by each pixel's eye ray), --heat-max (the count shown
- * white), and a report line: what the structure cost and what it did per ray.
+ * --list-up-to, --prefetch (auto|on|off), --show=cells|tests (a heat map of
+ * the cells visited or the surfaces tested by each pixel's eye ray),
+ * --heat-max (the count shown white), and a report line: what the structure
+ * cost and what it did per ray.
  */
 #include <omp.h>
 #include <stdio.h>
@@ -34,7 +35,8 @@ typedef struct {
     int show, heat_max; /* --show, --heat-max */
 } lab_context;
 
-/* The rows of the lab's own knobs, aimed at *lab; returns how many. */
+/* The rows of the lab's own knobs, aimed at *lab; returns how many (LAB_KNOB_ROWS). */
+#define LAB_KNOB_ROWS 10
 static int lab_knob_rows(lab_context *lab, knob *rows)
 {
     fast_knobs *k = &lab->knobs;
@@ -49,10 +51,14 @@ static int lab_knob_rows(lab_context *lab, knob *rows)
         {"prefetch", KNOB_CHOICE, &k->prefetch, auto_on_off,
          "fast grid: fetch the next cell and the surfaces to test ahead (auto: grid and surfaces over 4 MB)"},
         {"boxes", KNOB_CHOICE, &k->boxes, on_off, "fast grid: test a box's twelve triangles as one box"},
+        {"list-up-to", KNOB_INT, &k->list_up_to, NULL,
+         "fast grid: a scene that costs a ray at most this many triangle tests (a box 1.25, a sphere 4) is a list, "
+         "without cells (0: cells always)"},
         {"show", KNOB_CHOICE, &lab->show, show_choices, "the image, or each pixel's eye ray's cells visited or tests"},
         {"heat-max", KNOB_INT, &lab->heat_max, NULL, "--show=cells|tests: the count shown white"},
     };
     int n = (int)(sizeof lab_rows / sizeof lab_rows[0]);
+    _Static_assert(sizeof lab_rows / sizeof lab_rows[0] == LAB_KNOB_ROWS, "main's table of knobs holds them all");
     for (int r = 0; r < n; r++)
         rows[r] = lab_rows[r];
     return n;
@@ -149,6 +155,14 @@ static void report(const void *prepared, render_stats stats, FILE *out)
         return;
     }
     const bool fast = lq->accel == LAB_ACCEL_FAST;
+    if (fast && lq->fast.units) {
+        fprintf(out,
+                "11_grid_lab: fast grid: a list of %ld unit%s for %d surfaces (too few for cells), built in %.3f s; "
+                "per ray %.2f intersection tests (%.2f more culled by their boxes); traced in %.3f s\n",
+                lq->fast.n_units, lq->fast.n_units == 1 ? "" : "s", list->n, lq->build_seconds, (double)sum.counts.tests / queries,
+                (double)sum.counts.culled / queries, stats.seconds);
+        return;
+    }
     const int *n = fast ? lq->fast.n : lq->lesson.n;
     long cells = fast ? lq->fast.n_cells : lq->lesson.n_cells, refs = fast ? lq->fast.n_refs : lq->lesson.n_refs;
     size_t bytes = fast ? fast_grid_memory(&lq->fast) : grid_memory(&lq->lesson);
@@ -166,7 +180,7 @@ static void report(const void *prepared, render_stats stats, FILE *out)
             (double)sum.counts.cells / queries, (double)sum.counts.tests / queries, culled, stats.seconds);
 }
 
-#define MAX_KNOBS (SHAPE_KNOBS + MAX_STAGE_KNOBS + 8)
+#define MAX_KNOBS (SHAPE_KNOBS + MAX_STAGE_KNOBS + LAB_KNOB_ROWS)
 
 int main(int argc, char **argv)
 {
