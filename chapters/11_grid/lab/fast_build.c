@@ -491,7 +491,8 @@ void fast_grid_free(fast_grid *g)
 size_t fast_grid_memory(const fast_grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
-    return sizeof *g + (cells + (size_t)g->n_unbinned + (size_t)g->n_units) * sizeof(uint32_t) + (size_t)g->n_refs * sizeof(fast_grid_entry) +
-           (g->empty ? 8 * (size_t)g->n_cells : 0) + (g->normal ? (size_t)g->list->n * sizeof *g->normal : 0) +
+    return sizeof *g + (cells + (size_t)g->n_unbinned + (size_t)g->n_units) * sizeof(uint32_t) +
+           (size_t)g->n_refs * sizeof(fast_grid_entry) + (g->empty ? 8 * (size_t)g->n_cells : 0) +
+           (g->normal ? (size_t)g->list->n * sizeof *g->normal : 0) +
            (g->plane[0] ? plane_count(g) * sizeof(real) : 0) + fast_grid_subs_memory(g) + fast_boxes_memory(g->boxes);
 }
