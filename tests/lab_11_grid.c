@@ -226,9 +226,14 @@ static void test_rays_not_finite(void **state)
             *component = (real)NAN;
         else if (k % 4 == 3)
             *component = k % 8 < 4 ? REAL_INFINITY : -REAL_INFINITY;
+        if (k % 32 >= 24 && k % 4 != 2) { /* along an axis: the others' boundaries are never crossed */
+            const real along = d.x;
+            d = vec3_make(0, 0, 0);
+            *(k % 3 == 0 ? &d.x : k % 3 == 1 ? &d.y : &d.z) = along != 0 ? along : 1;
+        }
         set_ray(&rays, k, p, d);
     }
-    expect_as_linear(&list, &rays, n / 16); /* the ordinary quarter aims at the scene: most of it hits */
+    expect_as_linear(&list, &rays, n / 32); /* the ordinary quarter aims at the scene: much of it hits */
 }
 
 /* The search's next real above a best t (next_above, the bits plus one for a
@@ -569,6 +574,41 @@ static void test_few_surfaces_as_a_list(void **state)
         }
         surface_list_free(&list);
     }
+    /* A list tests its units whatever the ray: a direction whose components are so small that 1 / d_a
+     * overflows (subnormal) still moves the ray, at t near 1e306 (1e37 in float), where the march takes them
+     * as 0.  A box of side 0.02 (its slab cut), a triangle and a sphere beside it, against the linear scan. */
+    surface_list tiny;
+    surface_list_init(&tiny, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);
+    const real side = (real)0.02;
+    add_box(&tiny, vec3_make(0, 0, 0), vec3_make(side, side, side), 0);
+    surface_list_add_triangle(&tiny, (triangle){vec3_make(-side, -side, -side), vec3_make(-side, 0, -side),
+                                                vec3_make(0, -side, -side)},
+                              0, 1);
+    surface_list_add_sphere(&tiny, (sphere){vec3_make(2 * side, side, 0), side / 4}, 0, 2);
+    const long n = 2000;
+    ray_set rays = rays_alloc(n);
+    for (long k = 0; k < n; k++) {
+        /* beside the box, and for every other ray below the scene's box (outside its slab along z) */
+        const vec3 p = uniform_vec(vec3_make(-side, -side, k % 2 ? -3 * side : -side),
+                                   vec3_make(0, side, k % 2 ? -2 * side : 0));
+        const vec3 to = vec3_sub(uniform_vec(vec3_make(0, 0, 0), vec3_make(side, side, side)), p);
+        vec3 d = vec3_scale(to, REAL_MIN * uniform((real)0.04, (real)0.1) / vec3_max_abs(to));
+        if (k % 3 == 1)
+            d.y = 0; /* and one component exactly 0 */
+        set_ray(&rays, k, p, d);
+    }
+    hit_record *expected = calloc((size_t)n, sizeof *expected);
+    bool *found = calloc((size_t)n, sizeof *found);
+    assert_non_null(expected);
+    assert_non_null(found);
+    const long hits = linear_answers(&tiny, rays.r, rays.t_min, rays.t_max, n, expected, found);
+    compare_grid(&tiny, fast_grid_default_options() /* a list of 3 units */, rays.r, rays.t_min, rays.t_max, n, expected, found);
+    if (hits <= n / 4)
+        fail_msg("only %ld of %ld tiny rays hit something (more than %ld expected)", hits, n, n / 4);
+    free(expected);
+    free(found);
+    rays_free(&rays);
+    surface_list_free(&tiny);
     /* a bad knob: a message, no grid */
     surface_list list;
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_WATERTIGHT);

@@ -167,8 +167,10 @@ uint32_t test_box(search *s, const fast_box *b, const real p[3], const real inv_
 #pragma GCC unroll 3
     for (int a = 0; a < 3; a++) {
         near[a] = 2 * a + (inv_d[a] < 0);
-        if (inv_d[a] == 0) { /* inside the slab along a for every t, or beside the box */
-            if (p[a] < b->lo[a] - margin || p[a] > b->hi[a] + margin)
+        if (inv_d[a] == 0) { /* inside the slab along a for every t, or beside the box; */
+            const real d_a = a == 0 ? s->r.d.x : a == 1 ? s->r.d.y : s->r.d.z;
+            /* a d_a so small that 1 / d_a overflows moves the ray along a only at an enormous t: no cut there */
+            if (d_a == 0 && (p[a] < b->lo[a] - margin || p[a] > b->hi[a] + margin))
                 return 12;
             enters[a] = leaves[a] = 0;
             width[a] = REAL_INFINITY; /* both faces of a stay in: the ray never leaves their planes' slab */

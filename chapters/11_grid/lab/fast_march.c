@@ -425,6 +425,14 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
 }
 /* end snippet */
 
+/* Whether the ray has a component d_a != 0 so small that 1 / d_a overflows:
+ * the march takes it as 0 (it stays in its slab of cells, fast_grid.h's
+ * limit), but a list need not: its units are tested whatever the box says. */
+static inline bool moves_unseen(const ray_frame *rf)
+{
+    return (rf->parallel[0] && rf->d[0] != 0) | (rf->parallel[1] && rf->d[1] != 0) | (rf->parallel[2] && rf->d[2] != 0);
+}
+
 /* The search of ray r through g, to its end: the best hit is s->best (-1: none). */
 static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min, real t_max, fast_grid_counts *counts)
 {
@@ -439,9 +447,12 @@ static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min,
         frame_of(&rf, g, r);
         noted_start(&ms, g);
         real t0;
-        if (!g->units)
+        if (!vec3_is_finite(r.p)) /* its rounding slack is not finite, nor are its crossings: no march */
+            for (int k = 0; k < g->list->n; k++)
+                test_surface(s, (uint32_t)k);
+        else if (!g->units)
             march(g, s, &rf, &ms);
-        else if (box_window(g, &rf, s->t_min, s->upper, &t0)) /* a list of few, each once: no mailbox */
+        else if (moves_unseen(&rf) || box_window(g, &rf, s->t_min, s->upper, &t0)) /* a list: each once */
             for (long u = 0; u < g->n_units; u++)
                 test_noted(s, &ms, g, rf.p, rf.inv_d, rf.slack, false, g->units[u]);
     }
