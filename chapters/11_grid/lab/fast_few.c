@@ -51,6 +51,7 @@ bool fast_grid_few_units(fast_grid *g, const surface_list *list, int up_to)
         if (vec3_is_finite(lo) && vec3_is_finite(hi) && unit_at(g, k))
             g->units[g->n_units++] = unit_entry(g, k);
     }
+    g->peak_bytes = fast_grid_memory(g);
     g->n[0] = g->n[1] = g->n[2] = 0; /* no cells; the box, for the rays that miss it */
     g->lo_a[0] = g->lo.x, g->lo_a[1] = g->lo.y, g->lo_a[2] = g->lo.z;
     g->hi_a[0] = g->hi.x, g->hi_a[1] = g->hi.y, g->hi_a[2] = g->hi.z;

@@ -26,6 +26,7 @@ static const char *const auto_on_off[] = {"auto", "on", "off", NULL}; /* FAST_GR
 static const char *const accel_choices[] = {"fast", "grid", "list", NULL};
 enum { SHOW_IMAGE, SHOW_CELLS, SHOW_TESTS };
 static const char *const show_choices[] = {"image", "cells", "tests", NULL};
+static const char *const from_zero[] = {"0", NULL}, *const from_one[] = {"1", NULL};
 
 /* What the lab's prepare is given: chapter 11's stage over the lab's query,
  * and the values of every knob, owned by main. */
@@ -46,16 +47,16 @@ static int lab_knob_rows(lab_context *lab, knob *rows)
         {"mailbox", KNOB_CHOICE, &k->mailbox, on_off, "fast grid: skip surfaces already tested along the ray"},
         {"leap", KNOB_CHOICE, &k->leap, on_off, "fast grid: cross blocks of empty cells in one step"},
         {"cull", KNOB_CHOICE, &k->cull, on_off, "fast grid: test a surface only when the ray meets its box"},
-        {"split", KNOB_INT, &k->split, NULL,
+        {"split", KNOB_INT, &k->split, from_zero,
          "fast grid: a cell listing more surfaces than this gets a grid of its own (0: one level)"},
         {"prefetch", KNOB_CHOICE, &k->prefetch, auto_on_off,
          "fast grid: fetch the next cell and the surfaces to test ahead (auto: grid and surfaces over 4 MB)"},
         {"boxes", KNOB_CHOICE, &k->boxes, on_off, "fast grid: test a box's twelve triangles as one box"},
-        {"list-up-to", KNOB_INT, &k->list_up_to, NULL,
+        {"list-up-to", KNOB_INT, &k->list_up_to, from_zero,
          "fast grid: a scene that costs a ray at most this many triangle tests (a box 1.25, a sphere 4) is a list, "
          "without cells (0: cells always)"},
         {"show", KNOB_CHOICE, &lab->show, show_choices, "the image, or each pixel's eye ray's cells visited or tests"},
-        {"heat-max", KNOB_INT, &lab->heat_max, NULL, "--show=cells|tests: the count shown white"},
+        {"heat-max", KNOB_INT, &lab->heat_max, from_one, "--show=cells|tests: the count shown white"},
     };
     int n = (int)(sizeof lab_rows / sizeof lab_rows[0]);
     _Static_assert(sizeof lab_rows / sizeof lab_rows[0] == LAB_KNOB_ROWS, "main's table of knobs holds them all");
@@ -157,10 +158,11 @@ static void report(const void *prepared, render_stats stats, FILE *out)
     const bool fast = lq->accel == LAB_ACCEL_FAST;
     if (fast && lq->fast.units) {
         fprintf(out,
-                "11_grid_lab: fast grid: a list of %ld unit%s for %d surfaces (too few for cells), built in %.3f s; "
-                "per ray %.2f intersection tests (%.2f more culled by their boxes); traced in %.3f s\n",
-                lq->fast.n_units, lq->fast.n_units == 1 ? "" : "s", list->n, lq->build_seconds, (double)sum.counts.tests / queries,
-                (double)sum.counts.culled / queries, stats.seconds);
+                "11_grid_lab: fast grid: a list of %ld unit%s for %d surfaces (--list-up-to: no cells), %.1f MB, "
+                "built in %.3f s; per ray %.2f intersection tests (%.2f more culled by their boxes); traced in %.3f s\n",
+                lq->fast.n_units, lq->fast.n_units == 1 ? "" : "s", list->n, (double)fast_grid_memory(&lq->fast) / 1e6,
+                lq->build_seconds, (double)sum.counts.tests / queries, (double)sum.counts.culled / queries,
+                stats.seconds);
         return;
     }
     const int *n = fast ? lq->fast.n : lq->lesson.n;
