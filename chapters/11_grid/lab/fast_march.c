@@ -426,7 +426,7 @@ static void march(const fast_grid *g, search *s, const ray_frame *rf, march_stat
 /* end snippet */
 
 /* Whether the ray has a component d_a != 0 so small that 1 / d_a overflows:
- * the march takes it as 0 (it stays in its slab of cells, fast_grid.h's
+ * the march takes it as 0 (it stays in its slab of cells: frame_of's
  * limit), but a list need not: its units are tested whatever the box says. */
 static inline bool moves_unseen(const ray_frame *rf)
 {
