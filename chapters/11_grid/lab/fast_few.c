@@ -9,34 +9,32 @@
  * triangles, listed and gridded (the lab's README, "Few surfaces"). */
 enum { QUARTERS_TRIANGLE = 4, QUARTERS_BOX = 5, QUARTERS_SPHERE = 16 };
 
-/* Whether surface k is a unit of the list: not one of a box's triangles
- * after its first (the box is listed once, by its first, as in the cells). */
-static bool unit_at(const fast_grid *g, long k)
+/* The entry of surface k in the list, as the packed lists have it (k, or
+ * FAST_GRID_BOX + its box, by the box's first triangle), or FAST_BOX_NONE
+ * for no entry: a box's other triangles, a surface without finite bounds
+ * (g->unbinned, tested apart). */
+static uint32_t unit_entry(const fast_grid *g, const surface_list *list, long k)
 {
+    vec3 lo, hi;
+    fast_grid_surface_bounds(&list->items[k], &lo, &hi);
     const uint32_t b = g->boxes ? g->boxes->of[k] : FAST_BOX_NONE;
-    return b == FAST_BOX_NONE || g->boxes->box[b].first == (uint32_t)k;
-}
-
-/* The entry of unit k: k, or FAST_GRID_BOX + its box, as the packed lists have it. */
-static uint32_t unit_entry(const fast_grid *g, long k)
-{
-    const uint32_t b = g->boxes ? g->boxes->of[k] : FAST_BOX_NONE;
+    if (!vec3_is_finite(lo) || !vec3_is_finite(hi) || (b != FAST_BOX_NONE && g->boxes->box[b].first != (uint32_t)k))
+        return FAST_BOX_NONE;
     return b == FAST_BOX_NONE ? (uint32_t)k : FAST_GRID_BOX + b;
 }
 
 bool fast_grid_few_units(fast_grid *g, const surface_list *list, int up_to)
 {
-    /* the units with finite bounds (the others are g->unbinned, tested apart) and their cost */
+    /* the units and their cost */
     long n = 0;
     long long quarters = 0;
     for (long k = 0; k < list->n; k++) {
-        vec3 lo, hi;
-        fast_grid_surface_bounds(&list->items[k], &lo, &hi);
-        if (!vec3_is_finite(lo) || !vec3_is_finite(hi) || !unit_at(g, k))
+        const uint32_t e = unit_entry(g, list, k);
+        if (e == FAST_BOX_NONE)
             continue;
-        const bool box = unit_entry(g, k) >= FAST_GRID_BOX;
+        const bool sphere = list->items[k].kind == SHAPE_SPHERE;
         n++;
-        quarters += box ? QUARTERS_BOX : list->items[k].kind == SHAPE_SPHERE ? QUARTERS_SPHERE : QUARTERS_TRIANGLE;
+        quarters += e >= FAST_GRID_BOX ? QUARTERS_BOX : sphere ? QUARTERS_SPHERE : QUARTERS_TRIANGLE;
         if (quarters > 4 * (long long)up_to)
             return true; /* too many: cells */
     }
@@ -46,10 +44,9 @@ bool fast_grid_few_units(fast_grid *g, const surface_list *list, int up_to)
     if (!g->units)
         return false;
     for (long k = 0; k < list->n; k++) {
-        vec3 lo, hi;
-        fast_grid_surface_bounds(&list->items[k], &lo, &hi);
-        if (vec3_is_finite(lo) && vec3_is_finite(hi) && unit_at(g, k))
-            g->units[g->n_units++] = unit_entry(g, k);
+        const uint32_t e = unit_entry(g, list, k);
+        if (e != FAST_BOX_NONE)
+            g->units[g->n_units++] = e;
     }
     g->peak_bytes = fast_grid_memory(g);
     g->n[0] = g->n[1] = g->n[2] = 0; /* no cells; the box, for the rays that miss it */
