@@ -22,18 +22,20 @@
  * and splits so low that most cells with surfaces get grids of their own),
  * then mailboxing, leaping and culling off one at a time and all together
  * (boxes too); the two after prefetch (these small scenes' grids would not by
- * size); the second and the fourth from last keep the triangles' normals, as the lab does; the last two
- * test every scene as a list, without cells (list_up_to), with boxes and without */
+ * size); the second and the fourth from last keep the triangles' normals, as the lab does; the second,
+ * the fifth and the ninth set the few large surfaces of a scene apart from the cells, as the default
+ * list_up_to does (the others keep every surface in cells); the last two test every scene as a list,
+ * without cells (list_up_to), with boxes and without */
 static const fast_grid_options knob_sets[] = {
     {0.3, 1L << 20, true, true, true, 0, 0, false, true, 0},
-    {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT, 0, true, true, 0},
+    {2, 1L << 20, true, true, true, FAST_GRID_DEFAULT_SPLIT, 0, true, true, FAST_GRID_DEFAULT_LIST_UP_TO},
     {10, 1L << 20, true, true, true, 0, 0, false, true, 0},
     {2, 1L << 20, true, true, true, 0, 0, false, true, 0},
-    {0.3, 1L << 20, true, true, true, 2, 0, false, true, 0},
+    {0.3, 1L << 20, true, true, true, 2, 0, false, true, FAST_GRID_DEFAULT_LIST_UP_TO},
     {2, 1L << 20, true, true, true, 4, 0, false, true, 0},
     {2, 1L << 20, false, true, true, 0, 0, false, true, 0},
     {2, 1L << 20, true, false, true, 0, 0, false, true, 0},
-    {2, 1L << 20, true, true, false, 0, 0, false, true, 0},
+    {2, 1L << 20, true, true, false, 0, 0, false, true, FAST_GRID_DEFAULT_LIST_UP_TO},
     {2, 1L << 20, false, false, false, 0, 0, false, false, 0},
     {2, 1L << 20, false, false, false, 3, 0, false, false, 0},
     {2, 1L << 20, true, true, true, 4, FAST_GRID_PREFETCH_ON, false, true, 0},
@@ -622,6 +624,123 @@ static void test_few_surfaces_as_a_list(void **state)
     surface_list_free(&list);
 }
 
+/* The floor of test_large_surfaces_apart, half-width w, its top at y = 0: a
+ * box (one unit), two triangles, a sphere of radius w below the plane, or
+ * five strips of two triangles (ten units, beyond list_up_to). */
+enum { FLOOR_BOX, FLOOR_TWO_TRIANGLES, FLOOR_SPHERE, FLOOR_TEN_TRIANGLES };
+static void add_floor(surface_list *list, int kind, vec3 at, real w, int *source)
+{
+    if (kind == FLOOR_BOX) {
+        add_box(list, vec3_add(at, vec3_make(-w, -w / 50, -w)), vec3_add(at, vec3_make(w, 0, w)), (*source)++);
+    } else if (kind == FLOOR_SPHERE) {
+        surface_list_add_sphere(list, (sphere){vec3_add(at, vec3_make(0, -w, 0)), w}, 0, (*source)++);
+    } else {
+        const int strips = kind == FLOOR_TWO_TRIANGLES ? 1 : 5;
+        for (int k = 0; k < strips; k++) {
+            const real x0 = -w + 2 * w * (real)k / (real)strips, x1 = -w + 2 * w * (real)(k + 1) / (real)strips;
+            const vec3 a = vec3_add(at, vec3_make(x0, 0, -w)), b = vec3_add(at, vec3_make(x1, 0, -w)),
+                       c = vec3_add(at, vec3_make(x1, 0, w)), d = vec3_add(at, vec3_make(x0, 0, w));
+            surface_list_add_triangle(list, (triangle){a, b, c}, 0, (*source)++);
+            surface_list_add_triangle(list, (triangle){a, c, d}, 0, (*source)++);
+        }
+    }
+}
+
+/* The few large surfaces of a scene are tested apart from the cells, which
+ * then cover the others alone (fast_few.c): a floor 200 units wide (a box,
+ * two triangles or a sphere as the ground) under a cluster of boxes, spheres
+ * and turned triangles a few units wide, far from the origin at scales 1e-5
+ * to 1e5.  Not apart: with list_up_to 0, under a cluster spread over the
+ * floor (the cells would not get finer), under a floor of ten triangles (a
+ * ray would test more than list_up_to), nor a stick as tall as the scene
+ * (its short axis).  Every scene against the linear scan with every knob
+ * set: rays from above at the cluster and the floor around it, rays that
+ * leave the floor's top with t_min > 0 (as shadow rays do), rays along the
+ * floor's plane, and rays along the axes. */
+static void test_large_surfaces_apart(void **state)
+{
+    (void)state;
+    rng_state = 31;
+    const struct {
+        int floor;
+        real spread; /* the cluster's half-width, in units of the floor's */
+        bool stick;
+        long apart;  /* with the default knobs: the entries apart */
+    } cases[] = {{FLOOR_BOX, (real)0.02, false, 1},       {FLOOR_TWO_TRIANGLES, (real)0.02, false, 2},
+                 {FLOOR_SPHERE, (real)0.02, false, 1},    {FLOOR_TEN_TRIANGLES, (real)0.02, false, 0},
+                 {FLOOR_BOX, (real)0.9, false, 0},         {FLOOR_BOX, (real)0.02, true, 1}};
+    const real scales[] = {(real)1e-5, 1, (real)1e5};
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
+        for (size_t sc = 0; sc < sizeof scales / sizeof scales[0]; sc++) {
+            const real unit = scales[sc] * uniform((real)0.7, (real)1.4), w = 100 * unit, h = cases[c].spread * w;
+            const vec3 at = vec3_scale(uniform_vec(vec3_make(-9000, -9000, -9000), vec3_make(9000, 9000, 9000)), unit);
+            const vec3 cluster = vec3_add(at, vec3_make(0, 3 * unit, 0));
+            const vec3 near_lo = vec3_add(cluster, vec3_make(-h, -2 * unit, -h)),
+                       near_hi = vec3_add(cluster, vec3_make(h, 2 * unit, h));
+            surface_list list;
+            surface_list_init(&list, SPHERE_ROBUST, triangle_tests[c % 2]);
+            int source = 0;
+            add_floor(&list, cases[c].floor, at, w, &source);
+            for (int k = 0; k < 6; k++) {
+                const vec3 lo = uniform_vec(near_lo, near_hi);
+                add_box(&list, lo, vec3_add(lo, vec3_scale(uniform_vec(vec3_make((real)0.1, (real)0.1, (real)0.1),
+                                                                       vec3_make(1, 1, 1)), unit)),
+                        source++);
+                surface_list_add_sphere(&list, (sphere){uniform_vec(near_lo, near_hi), uniform((real)0.1, (real)0.5) * unit},
+                                        0, source++);
+                const vec3 a = uniform_vec(near_lo, near_hi);
+                surface_list_add_triangle(&list, (triangle){a, vec3_add(a, vec3_scale(random_direction(), unit)),
+                                                            vec3_add(a, vec3_scale(random_direction(), unit))},
+                                          0, source++);
+            }
+            if (cases[c].stick) /* from the floor to above the cluster: the scene's height */
+                add_box(&list, vec3_add(cluster, vec3_make(0, -3 * unit, 0)),
+                        vec3_add(cluster, vec3_make(unit / 10, 3 * unit, unit / 10)), source++);
+            /* set apart or not, and then the cells' box */
+            for (int up_to = 0; up_to < 2; up_to++) {
+                fast_grid_options opt = fast_grid_default_options();
+                opt.list_up_to = up_to ? FAST_GRID_DEFAULT_LIST_UP_TO : 0;
+                fast_grid g;
+                build_fast(&g, &list, opt);
+                const long expected = up_to ? cases[c].apart : 0;
+                const real width = g.hi.x - g.lo.x;
+                if (g.n_apart != expected || g.n_cells == 0 || (expected > 0) != (width < w / 4))
+                    fail_msg("case %zu at scale %g (list_up_to %d): %ld entries apart (%ld expected), %ld cells, "
+                             "cells' box %g wide (the floor %g)",
+                             c, (double)unit, opt.list_up_to, g.n_apart, expected, g.n_cells, (double)width,
+                             (double)(2 * w));
+                fast_grid_free(&g);
+            }
+            const long n = 2400;
+            ray_set rays = rays_alloc(n);
+            for (long k = 0; k < n; k++) {
+                const vec3 target = k % 8 ? uniform_vec(near_lo, near_hi)
+                                          : vec3_add(at, vec3_make(uniform(-3 * h, 3 * h), 0, uniform(-3 * h, 3 * h)));
+                vec3 p, d;
+                if (k % 4 == 0) { /* from above */
+                    p = vec3_add(cluster, vec3_scale(vec3_make(uniform(-20, 20), uniform(5, 20), uniform(-20, 20)), unit));
+                    d = vec3_sub(target, p);
+                } else if (k % 4 == 1) { /* leaving the floor's top */
+                    p = vec3_add(at, vec3_make(uniform(-2 * h, 2 * h), 0, uniform(-2 * h, 2 * h)));
+                    d = vec3_sub(target, p);
+                    d.y = real_abs(d.y) + unit / 100;
+                } else if (k % 4 == 2) { /* along the floor's plane, or just above it */
+                    p = vec3_add(at, vec3_make(uniform(-2 * h, 2 * h), k % 8 == 2 ? 0 : unit / 1000, uniform(-2 * h, 2 * h)));
+                    d = vec3_sub(target, p);
+                    d.y = 0;
+                } else { /* along an axis */
+                    p = uniform_vec(vec3_sub(near_lo, vec3_make(unit, unit, unit)), vec3_add(near_hi, vec3_make(unit, unit, unit)));
+                    d = vec3_make(0, 0, 0);
+                    set_axis(&d, (int)(k / 4 % 3), k / 12 % 2 ? unit : -unit);
+                }
+                set_ray(&rays, k, p, d);
+                if (k % 4 == 1)
+                    rays.t_min[k] = (real)1e-9;
+            }
+            expect_as_linear(&list, &rays, n / 4);
+        }
+}
+
 static const graded_test tests[] = {
     GRADED(test_random_scenes, 0),
     GRADED(test_zero_components, 0),
@@ -638,6 +757,7 @@ static const graded_test tests[] = {
     GRADED(test_closest_without_record, 0),
     GRADED(test_boxes_as_boxes, 0),
     GRADED(test_few_surfaces_as_a_list, 0),
+    GRADED(test_large_surfaces_apart, 0),
     GRADED(test_directions_of_any_length, 0),
     GRADED(test_rays_not_finite, 0),
     GRADED(test_cornell_scenes, 0),

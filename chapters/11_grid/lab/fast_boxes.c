@@ -107,13 +107,13 @@ bool fast_boxes_find(fast_boxes **found, const surface_list *list)
     return true;
 }
 
-void fast_boxes_keep_small(fast_boxes **found, const real cell[3])
+void fast_boxes_keep_small(fast_boxes **found, const real cell[3], const bool *keep)
 {
     fast_boxes *b = *found;
     long kept = 0;
     for (long k = 0; b && k < b->n; k++) {
         const fast_box *box = &b->box[k];
-        bool small = false;
+        bool small = keep && keep[box->first];
         for (int a = 0; a < 3; a++)
             small = small || box->hi[a] - box->lo[a] <= 2 * cell[a];
         for (uint32_t t = box->first; t < box->first + 12; t++)

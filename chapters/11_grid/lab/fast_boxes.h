@@ -44,9 +44,10 @@ bool fast_boxes_find(fast_boxes **found, const surface_list *list);
  * cell[a] (a floor, a stick, a box of about a cell): where a box's faces
  * share cells, its triangles are tested there as they come in the lists,
  * faces behind the ray as well; a larger box's triangles stay triangles,
- * listed cell by cell where each one is.  Frees *b and sets it to NULL when
- * none is kept. */
-void fast_boxes_keep_small(fast_boxes **b, const real cell[3]);
+ * listed cell by cell where each one is.  Keeps also the boxes whose
+ * triangles `keep` flags (NULL: none), which are tested apart from the cells.
+ * Frees *b and sets it to NULL when none is kept. */
+void fast_boxes_keep_small(fast_boxes **b, const real cell[3], const bool *keep);
 void fast_boxes_free(fast_boxes *b); /* b may be NULL */
 size_t fast_boxes_memory(const fast_boxes *b); /* 0 for NULL */
 

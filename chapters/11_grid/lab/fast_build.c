@@ -418,8 +418,6 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
     if (!(g->margin > 0))
         g->margin = 1; /* every surface is a point at the origin */
     /* end snippet */
-    double extent[3] = {(double)hi.x - (double)lo.x, (double)hi.y - (double)lo.y, (double)hi.z - (double)lo.z};
-    fast_grid_resolution(extent, binned, opt.density, opt.max_cells, g->n);
     g->lo = widen(lo, -g->margin);
     g->hi = widen(hi, g->margin);
     if (opt.boxes && !fast_boxes_find(&g->boxes, list))
@@ -428,10 +426,35 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
         goto out_of_memory;
     int status = 0;
     if (!g->units) { /* a list (fast_few.c) has every box kept and no cells */
+        /* the large surfaces apart (fast_few.c): the cells then cover the others' box */
+        bool *apart = calloc((size_t)list->n, sizeof *apart);
+        uint32_t *subset = NULL;
+        long n = list->n;
+        if (!apart)
+            goto out_of_memory;
+        if (opt.list_up_to > 0 &&
+            fast_grid_find_apart(g, list, opt.list_up_to, opt.density, opt.max_cells, apart, &lo, &hi, &binned)) {
+            g->lo = widen(lo, -g->margin);
+            g->hi = widen(hi, g->margin);
+            subset = malloc((size_t)list->n * sizeof *subset);
+            n = 0;
+            for (long k = 0; subset && k < list->n; k++)
+                if (!apart[k])
+                    subset[n++] = (uint32_t)k;
+        }
+        double extent[3] = {(double)hi.x - (double)lo.x, (double)hi.y - (double)lo.y, (double)hi.z - (double)lo.z};
+        fast_grid_resolution(extent, binned, opt.density, opt.max_cells, g->n);
         const real w = 2 * g->margin, cell[3] = {(hi.x - lo.x + w) / (real)g->n[0], (hi.y - lo.y + w) / (real)g->n[1],
                                                  (hi.z - lo.z + w) / (real)g->n[2]};
-        fast_boxes_keep_small(&g->boxes, cell);
-        status = fast_grid_fill(g, NULL, list->n, opt.leap, err, err_size);
+        fast_boxes_keep_small(&g->boxes, cell, apart);
+        if ((n < list->n && !subset) || (subset && !fast_grid_keep_apart(g, list, apart))) {
+            free(apart);
+            free(subset);
+            goto out_of_memory;
+        }
+        free(apart);
+        status = fast_grid_fill(g, subset, n, opt.leap, err, err_size);
+        free(subset);
         if (status == 0)
             status = fast_grid_split(g, opt, err, err_size);
     }
@@ -468,6 +491,7 @@ void fast_grid_free(fast_grid *g)
     free(g->lists);
     free(g->unbinned);
     free(g->units);
+    free(g->apart);
     free(g->empty);
     free(g->normal);
     fast_boxes_free(g->boxes);
@@ -480,18 +504,18 @@ void fast_grid_free(fast_grid *g)
     g->subs = NULL;
     g->n_subs = 0;
     g->plane[0] = g->plane[1] = g->plane[2] = NULL;
-    g->start = g->unbinned = g->units = NULL;
+    g->start = g->unbinned = g->units = g->apart = NULL;
     g->refs = NULL;
     g->lists = NULL;
     g->empty = NULL;
     g->normal = NULL;
-    g->n_cells = g->n_refs = g->n_unbinned = g->n_units = 0;
+    g->n_cells = g->n_refs = g->n_unbinned = g->n_units = g->n_apart = 0;
 }
 
 size_t fast_grid_memory(const fast_grid *g)
 {
     size_t cells = g->start ? (size_t)g->n_cells + 1 : 0;
-    return sizeof *g + (cells + (size_t)g->n_unbinned + (size_t)g->n_units) * sizeof(uint32_t) +
+    return sizeof *g + (cells + (size_t)g->n_unbinned + (size_t)g->n_units + (size_t)g->n_apart) * sizeof(uint32_t) +
            (size_t)g->n_refs * sizeof(fast_grid_entry) + (g->empty ? 8 * (size_t)g->n_cells : 0) +
            (g->normal ? (size_t)g->list->n * sizeof *g->normal : 0) +
            (g->plane[0] ? plane_count(g) * sizeof(real) : 0) + fast_grid_subs_memory(g) + fast_boxes_memory(g->boxes);

@@ -1,4 +1,6 @@
-/* fast_few.c - chapter 11's lab: a scene of few surfaces is tested as a list, without cells. */
+/* fast_few.c - chapter 11's lab: surfaces tested for every ray: a scene of few surfaces as a list,
+ * without cells, and the few large surfaces of a scene (a floor) apart from the cells of the rest. */
+#include <math.h>
 #include <stdlib.h>
 
 #include "11_grid/lab/fast_boxes.h"
@@ -23,6 +25,12 @@ static uint32_t unit_entry(const fast_grid *g, const surface_list *list, long k)
     return b == FAST_BOX_NONE ? (uint32_t)k : FAST_GRID_BOX + b;
 }
 
+/* A unit's cost in quarters of a triangle test. */
+static long long unit_quarters(const surface_list *list, uint32_t e)
+{
+    return e >= FAST_GRID_BOX ? QUARTERS_BOX : list->items[e].kind == SHAPE_SPHERE ? QUARTERS_SPHERE : QUARTERS_TRIANGLE;
+}
+
 bool fast_grid_few_units(fast_grid *g, const surface_list *list, int up_to)
 {
     /* the units and their cost */
@@ -32,9 +40,8 @@ bool fast_grid_few_units(fast_grid *g, const surface_list *list, int up_to)
         const uint32_t e = unit_entry(g, list, k);
         if (e == FAST_BOX_NONE)
             continue;
-        const bool sphere = list->items[k].kind == SHAPE_SPHERE;
         n++;
-        quarters += e >= FAST_GRID_BOX ? QUARTERS_BOX : sphere ? QUARTERS_SPHERE : QUARTERS_TRIANGLE;
+        quarters += unit_quarters(list, e);
         if (quarters > 4 * (long long)up_to)
             return true; /* too many: cells */
     }
@@ -52,5 +59,83 @@ bool fast_grid_few_units(fast_grid *g, const surface_list *list, int up_to)
     g->n[0] = g->n[1] = g->n[2] = 0; /* no cells; the box, for the rays that miss it */
     g->lo_a[0] = g->lo.x, g->lo_a[1] = g->lo.y, g->lo_a[2] = g->lo.z;
     g->hi_a[0] = g->hi.x, g->hi_a[1] = g->hi.y, g->hi_a[2] = g->hi.z;
+    return true;
+}
+
+/* The cells along axis a, of n_a over lo_a .. lo_a + e_a, that x0 .. x1 overlaps. */
+static double cells_over(double x0, double x1, double lo_a, double e_a, int n_a)
+{
+    if (!(e_a > 0))
+        return 1;
+    const double first = floor((x0 - lo_a) / e_a * n_a), last = floor((x1 - lo_a) / e_a * n_a);
+    return fmin(last, n_a - 1) - fmax(first, 0) + 1;
+}
+
+bool fast_grid_find_apart(const fast_grid *g, const surface_list *list, int up_to, double density, long max_cells,
+                          bool *apart, vec3 *lo, vec3 *hi, long *rest)
+{
+    const double box_lo[3] = {lo->x, lo->y, lo->z}, extent[3] = {hi->x - lo->x, hi->y - lo->y, hi->z - lo->z};
+    const double longest = fmax(extent[0], fmax(extent[1], extent[2]));
+    /* the large units (more than half the box along an axis at least a quarter of its longest) and their
+     * cost; the others' box and count */
+    long long quarters = 0;
+    long large = 0, others = 0, surfaces = 0;
+    double rest_lo[3] = {INFINITY, INFINITY, INFINITY}, rest_hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (long k = 0; k < list->n; k++) {
+        const uint32_t e = unit_entry(g, list, k);
+        if (e == FAST_BOX_NONE)
+            continue;
+        vec3 ulo, uhi;
+        fast_grid_entry_bounds(g, (uint32_t)k, &ulo, &uhi);
+        const double u_lo[3] = {ulo.x, ulo.y, ulo.z}, u_hi[3] = {uhi.x, uhi.y, uhi.z};
+        bool is_large = false;
+        for (int a = 0; a < 3; a++)
+            is_large = is_large || (extent[a] >= longest / 4 && u_hi[a] - u_lo[a] > extent[a] / 2);
+        const long count = e >= FAST_GRID_BOX ? 12 : 1;
+        surfaces += count;
+        if (is_large) {
+            large++;
+            quarters += unit_quarters(list, e);
+            for (long t = k; t < k + count; t++)
+                apart[t] = true;
+            continue;
+        }
+        others += count;
+        for (int a = 0; a < 3; a++) {
+            rest_lo[a] = fmin(rest_lo[a], u_lo[a]);
+            rest_hi[a] = fmax(rest_hi[a], u_hi[a]);
+        }
+    }
+    /* worth it: the others would lie in at most a quarter of the cells the whole box would get */
+    int n[3];
+    fast_grid_resolution(extent, surfaces, density, max_cells, n);
+    double covered = 1;
+    for (int a = 0; a < 3; a++)
+        covered *= cells_over(rest_lo[a], rest_hi[a], box_lo[a], extent[a], n[a]);
+    if (large == 0 || others == 0 || quarters > 4 * (long long)up_to ||
+        !(4 * covered <= (double)n[0] * n[1] * (double)n[2])) {
+        for (long k = 0; k < list->n; k++)
+            apart[k] = false;
+        return false;
+    }
+    *lo = vec3_make((real)rest_lo[0], (real)rest_lo[1], (real)rest_lo[2]);
+    *hi = vec3_make((real)rest_hi[0], (real)rest_hi[1], (real)rest_hi[2]);
+    *rest = others;
+    return true;
+}
+
+bool fast_grid_keep_apart(fast_grid *g, const surface_list *list, const bool *apart)
+{
+    long n = 0;
+    for (long k = 0; k < list->n; k++)
+        n += apart[k] && unit_entry(g, list, k) != FAST_BOX_NONE;
+    g->apart = malloc((size_t)(n ? n : 1) * sizeof *g->apart);
+    if (!g->apart)
+        return false;
+    for (long k = 0; k < list->n; k++) {
+        const uint32_t e = apart[k] ? unit_entry(g, list, k) : FAST_BOX_NONE;
+        if (e != FAST_BOX_NONE)
+            g->apart[g->n_apart++] = e;
+    }
     return true;
 }

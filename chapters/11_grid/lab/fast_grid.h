@@ -42,7 +42,8 @@ typedef struct {
     bool normals;    /* keep each triangle's unit normal for the hit's record (24 bytes a surface) */
     bool boxes;      /* test a box's twelve triangles as one box (fast_boxes.h) */
     int list_up_to;  /* a scene whose surfaces cost a ray at most this many triangle tests (a box 1.25, a
-                      * sphere 4) is tested as a list, without cells; 0: cells always */
+                      * sphere 4) is tested as a list, without cells; large surfaces that cost at most
+                      * this are tested apart from the cells; 0: cells always, nothing apart */
 } fast_grid_options;
 /* end snippet */
 
@@ -120,6 +121,10 @@ struct fast_grid {
                                * as the lists have them, tested for every ray; the grid then has no cells.
                                * NULL otherwise */
     long n_units;
+    uint32_t *apart;          /* the few large surfaces of a scene (a floor under it; list_up_to), entries as the
+                               * lists have them, tested for every ray before the march: the cells cover the
+                               * other surfaces only.  NULL when there are none */
+    long n_apart;
     vec3 *normal;             /* with fast_grid_options.normals, per surface: a triangle's triangle_normal (the
                                * record of a hit needs it; a division and a square root in a chain); else NULL */
     struct fast_boxes *boxes; /* the boxes of twelve triangles among the surfaces (fast_boxes.h): a cell lists

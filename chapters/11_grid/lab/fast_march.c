@@ -447,11 +447,14 @@ static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min,
         frame_of(&rf, g, r);
         noted_start(&ms, g);
         real t0;
-        if (!vec3_is_finite(r.p)) /* its rounding slack is not finite, nor are its crossings: no march */
+        if (!vec3_is_finite(r.p)) { /* its rounding slack is not finite, nor are its crossings: no march */
             for (int k = 0; k < g->list->n; k++)
                 test_surface(s, (uint32_t)k);
-        else if (!g->units)
+        } else if (!g->units) { /* the large surfaces apart first: a hit on them can end the march early */
+            for (long u = 0; u < g->n_apart; u++)
+                test_noted(s, &ms, g, rf.p, rf.inv_d, rf.slack, false, g->apart[u]);
             march(g, s, &rf, &ms);
+        }
         else if (moves_unseen(&rf) || box_window(g, &rf, s->t_min, s->upper, &t0)) /* a list: each once */
             for (long u = 0; u < g->n_units; u++)
                 test_noted(s, &ms, g, rf.p, rf.inv_d, rf.slack, false, g->units[u]);

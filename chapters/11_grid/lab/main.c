@@ -170,16 +170,19 @@ static void report(const void *prepared, render_stats stats, FILE *out)
     long cells = fast ? lq->fast.n_cells : lq->lesson.n_cells, refs = fast ? lq->fast.n_refs : lq->lesson.n_refs;
     size_t bytes = fast ? fast_grid_memory(&lq->fast) : grid_memory(&lq->lesson);
     /* what only the fast grid has: grids of their own in crowded cells, entries culled by their boxes */
-    char subs[64] = "", culled[64] = "";
+    char subs[64] = "", culled[64] = "", apart[64] = "";
     if (fast) {
         snprintf(subs, sizeof subs, " (%ld with grids of their own)", lq->fast.n_subs);
+        if (lq->fast.n_apart) /* the large surfaces tested for every ray (--list-up-to), the cells around the rest */
+            snprintf(apart, sizeof apart, "; %ld large unit%s tested apart", lq->fast.n_apart,
+                     lq->fast.n_apart == 1 ? "" : "s");
         snprintf(culled, sizeof culled, " (%.2f more culled by their boxes)", (double)sum.counts.culled / queries);
     }
     fprintf(out,
-            "11_grid_lab: %s grid %dx%dx%d = %ld cells%s for %d surfaces (%.2f per cell), %.1f MB, built in %.3f s; "
+            "11_grid_lab: %s grid %dx%dx%d = %ld cells%s for %d surfaces (%.2f per cell%s), %.1f MB, built in %.3f s; "
             "per ray %.2f cells, %.2f intersection tests%s; traced in %.3f s\n",
             fast ? "fast" : "lesson's", n[0], n[1], n[2], cells, subs, list->n,
-            cells ? (double)refs / (double)cells : 0.0, (double)bytes / 1e6, lq->build_seconds,
+            cells ? (double)refs / (double)cells : 0.0, apart, (double)bytes / 1e6, lq->build_seconds,
             (double)sum.counts.cells / queries, (double)sum.counts.tests / queries, culled, stats.seconds);
 }
 
