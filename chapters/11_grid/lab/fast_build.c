@@ -426,33 +426,10 @@ int fast_grid_build(fast_grid *g, const surface_list *list, fast_grid_options op
         goto out_of_memory;
     int status = 0;
     if (!g->units) { /* a list (fast_few.c) has every box kept and no cells */
-        /* the large surfaces apart (fast_few.c): the cells then cover the others' box */
-        bool *apart = calloc((size_t)list->n, sizeof *apart);
-        uint32_t *subset = NULL;
+        uint32_t *subset = NULL; /* the surfaces in cells: all but the large ones apart (fast_few.c) */
         long n = list->n;
-        if (!apart)
+        if (!fast_grid_fit(g, list, opt, lo, hi, binned, &subset, &n))
             goto out_of_memory;
-        if (opt.list_up_to > 0 &&
-            fast_grid_find_apart(g, list, opt.list_up_to, opt.density, opt.max_cells, apart, &lo, &hi, &binned)) {
-            g->lo = widen(lo, -g->margin);
-            g->hi = widen(hi, g->margin);
-            subset = malloc((size_t)list->n * sizeof *subset);
-            n = 0;
-            for (long k = 0; subset && k < list->n; k++)
-                if (!apart[k])
-                    subset[n++] = (uint32_t)k;
-        }
-        double extent[3] = {(double)hi.x - (double)lo.x, (double)hi.y - (double)lo.y, (double)hi.z - (double)lo.z};
-        fast_grid_resolution(extent, binned, opt.density, opt.max_cells, g->n);
-        const real w = 2 * g->margin, cell[3] = {(hi.x - lo.x + w) / (real)g->n[0], (hi.y - lo.y + w) / (real)g->n[1],
-                                                 (hi.z - lo.z + w) / (real)g->n[2]};
-        fast_boxes_keep_small(&g->boxes, cell, apart);
-        if ((n < list->n && !subset) || (subset && !fast_grid_keep_apart(g, list, apart))) {
-            free(apart);
-            free(subset);
-            goto out_of_memory;
-        }
-        free(apart);
         status = fast_grid_fill(g, subset, n, opt.leap, err, err_size);
         free(subset);
         if (status == 0)

@@ -60,20 +60,16 @@ bool fast_grid_pack(fast_grid *g);
  * weight (fast_few.c); else g is left as it is.  False when out of memory. */
 bool fast_grid_few_units(fast_grid *g, const surface_list *list, int up_to);
 
-/* Large surfaces apart, for a grid that is not a list: of the units with
- * finite bounds, those whose box reaches over more than half the scene's box
- * [*lo, *hi] along an axis at least a quarter as long as its longest (a floor
- * under the scene; not a stick as tall as a flat scene), when they cost a
- * ray at most up_to triangle tests and the others would lie in at most a
- * quarter of the cells the whole box would get (density, max_cells).  Then apart[k]
- * is true for each of their surfaces (list->n flags, false on entry), *lo and
- * *hi are the others' box and *rest their count, and it returns true; else
- * false, everything as it was.  The boxes of g are those fast_boxes_find found. */
-bool fast_grid_find_apart(const fast_grid *g, const surface_list *list, int up_to, double density, long max_cells,
-                          bool *apart, vec3 *lo, vec3 *hi, long *rest);
-
-/* g->apart from the flags (after fast_boxes_keep_small, which keeps their boxes).  False when out of memory. */
-bool fast_grid_keep_apart(fast_grid *g, const surface_list *list, const bool *apart);
+/* The cells of a grid that is not a list, before fast_grid_fill: the few
+ * large surfaces of the scene set apart (g->apart, tested for every ray:
+ * fast_few.c says which), the cells' box (g->lo, g->hi: the others' box,
+ * widened by the margin) and resolution (g->n) for the box [lo, hi] of the
+ * `binned` surfaces with finite bounds, the boxes kept (fast_boxes_keep_small),
+ * and whether there are spheres (g->spheres).
+ * *subset and *n are then the surfaces to bin (NULL and list->n: all of
+ * them); *subset is the caller's to free.  False when out of memory. */
+bool fast_grid_fit(fast_grid *g, const surface_list *list, fast_grid_options opt, vec3 lo, vec3 hi, long binned,
+                   uint32_t **subset, long *n);
 
 /* The memory of g's sub-grids. */
 size_t fast_grid_subs_memory(const fast_grid *g);

@@ -1,6 +1,7 @@
 /* fast_few.c - chapter 11's lab: surfaces tested for every ray: a scene of few surfaces as a list,
  * without cells, and the few large surfaces of a scene (a floor) apart from the cells of the rest. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 
 #include "11_grid/lab/fast_boxes.h"
@@ -71,8 +72,17 @@ static double cells_over(double x0, double x1, double lo_a, double e_a, int n_a)
     return fmin(last, n_a - 1) - fmax(first, 0) + 1;
 }
 
-bool fast_grid_find_apart(const fast_grid *g, const surface_list *list, int up_to, double density, long max_cells,
-                          bool *apart, vec3 *lo, vec3 *hi, long *rest)
+/* Large surfaces apart: of the units with finite bounds, those whose box
+ * reaches over more than half the scene's box [*lo, *hi] along an axis at
+ * least a quarter as long as its longest (a floor under the scene; not a
+ * stick as tall as a flat scene), when they cost a ray at most up_to
+ * triangle tests and the others would lie in at most a quarter of the cells
+ * the whole box would get.  Then apart[k] is true for each of their
+ * surfaces (false on entry), *lo and *hi are the others' box and *rest their
+ * count, and it returns true; else false, everything as it was.  The boxes
+ * of g are those fast_boxes_find found. */
+static bool find_apart(const fast_grid *g, const surface_list *list, int up_to, double density, long max_cells,
+                       bool *apart, vec3 *lo, vec3 *hi, long *rest)
 {
     const double box_lo[3] = {lo->x, lo->y, lo->z}, extent[3] = {hi->x - lo->x, hi->y - lo->y, hi->z - lo->z};
     const double longest = fmax(extent[0], fmax(extent[1], extent[2]));
@@ -112,6 +122,7 @@ bool fast_grid_find_apart(const fast_grid *g, const surface_list *list, int up_t
     double covered = 1;
     for (int a = 0; a < 3; a++)
         covered *= cells_over(rest_lo[a], rest_hi[a], box_lo[a], extent[a], n[a]);
+    if (getenv("APART_DEBUG")) fprintf(stderr, "apart: large %ld others %ld quarters %lld covered %g of %d %d %d = %g\n", large, others, quarters, covered, n[0], n[1], n[2], covered / n[0] / n[1] / n[2]);
     if (large == 0 || others == 0 || quarters > 4 * (long long)up_to ||
         !(4 * covered <= (double)n[0] * n[1] * (double)n[2])) {
         for (long k = 0; k < list->n; k++)
@@ -124,7 +135,8 @@ bool fast_grid_find_apart(const fast_grid *g, const surface_list *list, int up_t
     return true;
 }
 
-bool fast_grid_keep_apart(fast_grid *g, const surface_list *list, const bool *apart)
+/* g->apart from the flags, after fast_boxes_keep_small (which keeps their boxes).  False when out of memory. */
+static bool keep_apart(fast_grid *g, const surface_list *list, const bool *apart)
 {
     long n = 0;
     for (long k = 0; k < list->n; k++)
@@ -138,4 +150,35 @@ bool fast_grid_keep_apart(fast_grid *g, const surface_list *list, const bool *ap
             g->apart[g->n_apart++] = e;
     }
     return true;
+}
+
+bool fast_grid_fit(fast_grid *g, const surface_list *list, fast_grid_options opt, vec3 lo, vec3 hi, long binned,
+                   uint32_t **subset, long *n)
+{
+    for (int k = 0; k < list->n && !g->spheres; k++)
+        g->spheres = list->items[k].kind == SHAPE_SPHERE;
+    bool *apart = calloc((size_t)list->n, sizeof *apart);
+    if (!apart)
+        return false;
+    if (opt.list_up_to > 0 && find_apart(g, list, opt.list_up_to, opt.density, opt.max_cells, apart, &lo, &hi, &binned)) {
+        g->lo = vec3_sub(lo, vec3_make(g->margin, g->margin, g->margin));
+        g->hi = vec3_add(hi, vec3_make(g->margin, g->margin, g->margin));
+        *subset = malloc((size_t)list->n * sizeof **subset);
+        *n = 0;
+        for (long k = 0; *subset && k < list->n; k++)
+            if (!apart[k])
+                (*subset)[(*n)++] = (uint32_t)k;
+    }
+    const double extent[3] = {(double)hi.x - (double)lo.x, (double)hi.y - (double)lo.y, (double)hi.z - (double)lo.z};
+    fast_grid_resolution(extent, binned, opt.density, opt.max_cells, g->n);
+    const real w = 2 * g->margin, cell[3] = {(hi.x - lo.x + w) / (real)g->n[0], (hi.y - lo.y + w) / (real)g->n[1],
+                                             (hi.z - lo.z + w) / (real)g->n[2]};
+    fast_boxes_keep_small(&g->boxes, cell, apart);
+    const bool kept = *n == list->n || (*subset && keep_apart(g, list, apart));
+    free(apart);
+    if (!kept) {
+        free(*subset);
+        *subset = NULL;
+    }
+    return kept;
 }

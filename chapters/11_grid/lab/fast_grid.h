@@ -139,6 +139,7 @@ struct fast_grid {
     bool mailbox;
     bool cull;                /* the boxes are filled in */
     bool prefetch;            /* the march prefetches (the top grid's choice holds for its subs) */
+    bool spheres;             /* some surface is a sphere: culled in cells of few entries too (the top grid's) */
     size_t peak_bytes;        /* the most memory the build held at once */
 };
 /* end snippet */

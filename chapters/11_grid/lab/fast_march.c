@@ -325,9 +325,7 @@ static inline void visit_cell(const fast_grid *g, const dda *m, cull_frame *f, s
         if (ms->prefetch)
             for (uint32_t e = j; e < n; e++)
                 prefetch_surface(s->list, surface[e]);
-        for (; j < n; j++)
-            if (!tested_already(ms, use_mailbox, surface[j]))
-                test_noted(s, ms, g, rf->p, rf->inv_d, rf->slack, use_mailbox, surface[j]);
+        test_entries(s, ms, g, surface + j, lo + j, hi + j, n - j, f, m->i, rf->p, rf->d, rf->inv_d, rf->slack);
         return;
     }
     uint32_t span_lo, span_hi;
@@ -442,6 +440,7 @@ static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min,
     march_state ms;
     ms.cells = ms.leaps = ms.culled = 0;
     ms.prefetch = g->prefetch;
+    ms.spheres = g->cull && g->spheres;
     if (g->n_cells || g->units) {
         ray_frame rf;
         frame_of(&rf, g, r);

@@ -7,6 +7,7 @@
 #define CH11_LAB_FAST_NOTED_H
 
 #include "11_grid/lab/fast_boxes.h"
+#include "11_grid/lab/fast_cull.h"
 #include "11_grid/lab/fast_grid.h"
 #include "11_grid/lab/fast_search.h"
 
@@ -24,6 +25,7 @@ typedef struct {
     const struct fast_boxes *boxes; /* the top grid's, or NULL */
     uint64_t cells, leaps, culled;
     bool prefetch; /* the top grid's */
+    bool spheres;  /* the top grid's: spheres are culled in cells of few entries too */
 } march_state;
 
 /* Before the march of a ray through g, the top grid. */
@@ -57,6 +59,44 @@ static inline void test_noted(search *s, march_state *ms, const fast_grid *g, co
     } else if (ms->box_done[b % BOXES_NOTED] != b) {
         ms->box_done[b % BOXES_NOTED] = b;
         ms->culled += test_box(s, &ms->boxes->box[b], p, inv_d, slack, g->margin);
+    }
+}
+
+/* The n entries of a cell of few entries of grid g (cell i; its surfaces,
+ * its boxes' low and high sides as the packed lists have them), each tested
+ * once along the ray, without sifting.  A sphere's test costs four of a
+ * triangle's: where the scene has spheres (ms->spheres), a sphere's box in
+ * the cell is looked at first (passes_box, the cell's frame made at its
+ * first sphere), as a cell of many entries looks at every box. */
+static inline void test_entries(search *s, march_state *ms, const fast_grid *g, const uint32_t *surface,
+                                const uint32_t *lo, const uint32_t *hi, uint32_t n, cull_frame *f, const int i[3],
+                                const real p[3], const real d[3], const real inv_d[3], const real slack[3])
+{
+    const bool use_mailbox = g->mailbox;
+    if (!ms->spheres) { /* a loop of its own: no look at the kind of each */
+        for (uint32_t j = 0; j < n; j++)
+            if (!tested_already(ms, use_mailbox, surface[j]))
+                test_noted(s, ms, g, p, inv_d, slack, use_mailbox, surface[j]);
+        return;
+    }
+    bool framed = false;
+    for (uint32_t j = 0; j < n; j++) {
+        const uint32_t k = surface[j];
+        if (tested_already(ms, use_mailbox, k))
+            continue;
+        if (k < FAST_GRID_BOX && s->list->items[k].kind == SHAPE_SPHERE) {
+            if (!framed) {
+                if (!f->started)
+                    cull_start(f, g, d, inv_d);
+                cull_cell(f, g, i, p, inv_d, slack);
+                framed = true;
+            }
+            if (!passes_box(unpack_box(lo[j], hi[j]).side, f, s->t_min, s->upper)) {
+                ms->culled++;
+                continue;
+            }
+        }
+        test_noted(s, ms, g, p, inv_d, slack, use_mailbox, k);
     }
 }
 
