@@ -741,6 +741,50 @@ static void test_large_surfaces_apart(void **state)
         }
 }
 
+/* The fast grid's cell range (the build runs it for every surface, its ceil,
+ * floor and clamps written out) gives the lesson's grid_cell_range's answers:
+ * boxes inside, across and beyond a grid far from the origin, with sides on
+ * cell boundaries exactly, a side NaN or infinite, at three scales. */
+static void test_cell_range_as_the_lesson(void **state)
+{
+    (void)state;
+    rng_state = 37;
+    const real scales[] = {(real)1e-5, 1, (real)1e5};
+    for (size_t sc = 0; sc < sizeof scales / sizeof scales[0]; sc++)
+        for (int trial = 0; trial < 20; trial++) {
+            const real unit = scales[sc] * uniform((real)0.5, 2);
+            fast_grid g = {.n = {1 + trial % 7, 1 + trial % 3 * 20, 1 + trial}};
+            g.lo = vec3_scale(uniform_vec(vec3_make(-900, -900, -900), vec3_make(900, 900, 900)), unit);
+            g.cell = vec3_scale(uniform_vec(vec3_make((real)0.1, (real)0.1, (real)0.1), vec3_make(3, 3, 3)), unit);
+            g.hi = vec3_make(g.lo.x + (real)g.n[0] * g.cell.x, g.lo.y + (real)g.n[1] * g.cell.y, g.lo.z + (real)g.n[2] * g.cell.z);
+            const grid lesson = {.lo = g.lo, .hi = g.hi, .cell = g.cell, .n = {g.n[0], g.n[1], g.n[2]}};
+            for (int k = 0; k < 500; k++) {
+                real side[2][3];
+                for (int end = 0; end < 2; end++)
+                    for (int a = 0; a < 3; a++) {
+                        const real lo_a = a == 0 ? g.lo.x : a == 1 ? g.lo.y : g.lo.z;
+                        const real cell_a = a == 0 ? g.cell.x : a == 1 ? g.cell.y : g.cell.z;
+                        const int pick = (int)(next_u64() % 8);
+                        /* a boundary exactly (as the lesson computes it), anywhere around the grid, far beyond */
+                        side[end][a] = pick < 3   ? lo_a + (real)(int)(next_u64() % (uint64_t)(g.n[a] + 3) - 1) * cell_a
+                                       : pick < 6 ? lo_a + uniform(-2, (real)g.n[a] + 2) * cell_a
+                                       : pick == 6 ? (next_u64() % 2 ? REAL_INFINITY : -REAL_INFINITY)
+                                                   : (next_u64() % 4 ? lo_a - 1e6 * cell_a : (real)NAN);
+                    }
+                const vec3 lo = vec3_make(side[0][0], side[0][1], side[0][2]), hi = vec3_make(side[1][0], side[1][1], side[1][2]);
+                int first[3], last[3], want_first[3], want_last[3];
+                fast_grid_cell_range(&g, lo, hi, first, last);
+                grid_cell_range(&lesson, lo, hi, want_first, want_last);
+                for (int a = 0; a < 3; a++)
+                    if (first[a] != want_first[a] || last[a] != want_last[a])
+                        fail_msg("axis %d of a grid of %d cells: the box %.17g .. %.17g gives cells %d .. %d, the "
+                                 "lesson's %d .. %d",
+                                 a, g.n[a], (double)side[0][a], (double)side[1][a], first[a], last[a], want_first[a],
+                                 want_last[a]);
+            }
+        }
+}
+
 static const graded_test tests[] = {
     GRADED(test_random_scenes, 0),
     GRADED(test_zero_components, 0),
@@ -758,6 +802,7 @@ static const graded_test tests[] = {
     GRADED(test_boxes_as_boxes, 0),
     GRADED(test_few_surfaces_as_a_list, 0),
     GRADED(test_large_surfaces_apart, 0),
+    GRADED(test_cell_range_as_the_lesson, 0),
     GRADED(test_directions_of_any_length, 0),
     GRADED(test_rays_not_finite, 0),
     GRADED(test_cornell_scenes, 0),

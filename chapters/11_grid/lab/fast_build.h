@@ -64,12 +64,12 @@ bool fast_grid_few_units(fast_grid *g, const surface_list *list, int up_to);
  * large surfaces of the scene set apart (g->apart, tested for every ray:
  * fast_few.c says which), the cells' box (g->lo, g->hi: the others' box,
  * widened by the margin) and resolution (g->n) for the box [lo, hi] of the
- * `binned` surfaces with finite bounds, the boxes kept (fast_boxes_keep_small),
- * and whether there are spheres (g->spheres).
+ * `binned` surfaces with finite bounds (`widest`: their largest extent along
+ * each axis), and the boxes kept (fast_boxes_keep_small).
  * *subset and *n are then the surfaces to bin (NULL and list->n: all of
  * them); *subset is the caller's to free.  False when out of memory. */
-bool fast_grid_fit(fast_grid *g, const surface_list *list, fast_grid_options opt, vec3 lo, vec3 hi, long binned,
-                   uint32_t **subset, long *n);
+bool fast_grid_fit(fast_grid *g, const surface_list *list, fast_grid_options opt, vec3 lo, vec3 hi, vec3 widest,
+                   long binned, uint32_t **subset, long *n);
 
 /* The memory of g's sub-grids. */
 size_t fast_grid_subs_memory(const fast_grid *g);

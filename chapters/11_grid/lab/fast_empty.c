@@ -41,6 +41,7 @@ bool fast_grid_empty_distances(fast_grid *g)
                 /* The 6 neighbours in the rows ahead along f_1 and f_2, done, for the whole row at once
                  * (loads that no step of the row waits for)... */
                 const uint8_t *y = s + m0, *z = s + m01, *yz = s + m01 + m0;
+#pragma omp simd /* least does not overlap the rows it reads: sixteen cells to an instruction */
                 for (int f0 = 0; f0 < n0; f0++) {
                     uint8_t l = far;
                     l = y[f0] < l ? y[f0] : l;

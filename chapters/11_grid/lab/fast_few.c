@@ -152,15 +152,27 @@ static bool keep_apart(fast_grid *g, const surface_list *list, const bool *apart
     return true;
 }
 
-bool fast_grid_fit(fast_grid *g, const surface_list *list, fast_grid_options opt, vec3 lo, vec3 hi, long binned,
-                   uint32_t **subset, long *n)
+/* Whether some surface's box reaches over more than half the scene's box [lo, hi] along an axis at least a
+ * quarter of its longest, by the widest extent of any surface along each axis: a box of twelve triangles
+ * is as wide along each axis as the widest of them, so where this is false no unit is large. */
+static bool may_be_large(vec3 lo, vec3 hi, vec3 widest)
 {
-    for (int k = 0; k < list->n && !g->spheres; k++)
-        g->spheres = list->items[k].kind == SHAPE_SPHERE;
+    const double extent[3] = {(double)hi.x - lo.x, (double)hi.y - lo.y, (double)hi.z - lo.z},
+                 wide[3] = {widest.x, widest.y, widest.z};
+    const double longest = fmax(extent[0], fmax(extent[1], extent[2]));
+    bool may = false;
+    for (int a = 0; a < 3; a++)
+        may = may || (extent[a] >= longest / 4 && wide[a] > extent[a] / 2);
+    return may;
+}
+
+bool fast_grid_fit(fast_grid *g, const surface_list *list, fast_grid_options opt, vec3 lo, vec3 hi, vec3 widest,
+                   long binned, uint32_t **subset, long *n)
+{
     bool *apart = calloc((size_t)list->n, sizeof *apart);
     if (!apart)
         return false;
-    if (opt.list_up_to > 0 && find_apart(g, list, opt.list_up_to, opt.density, opt.max_cells, apart, &lo, &hi, &binned)) {
+    if (opt.list_up_to > 0 && may_be_large(lo, hi, widest) && find_apart(g, list, opt.list_up_to, opt.density, opt.max_cells, apart, &lo, &hi, &binned)) {
         g->lo = vec3_sub(lo, vec3_make(g->margin, g->margin, g->margin));
         g->hi = vec3_add(hi, vec3_make(g->margin, g->margin, g->margin));
         *subset = malloc((size_t)list->n * sizeof **subset);

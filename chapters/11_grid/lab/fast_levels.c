@@ -152,11 +152,12 @@ int fast_grid_split(fast_grid *g, fast_grid_options opt, char *err, size_t err_s
         if (g->start[c + 1] - g->start[c] > (uint32_t)opt.split)
             crowded[k++] = (crowded_cell){.cell = c, .count = g->start[c + 1] - g->start[c], .sub = -1};
     /* The most crowded cells first, while the grids of their own take at
-     * most a quarter of what the grid takes with one level (at least 1 MB):
+     * most a sixteenth of what the grid takes with one level (at least 1 MB):
      * on a mesh the crowded cells are where thin triangles meet (the poles
-     * of a sphere), and their grids cost much and buy little. */
+     * of a sphere), and their grids cost much and buy little (a quarter took
+     * the sphere's build from 0.21 to 0.36 s, for 0.6 % of its rays' time). */
     qsort(crowded, (size_t)n_crowded, sizeof *crowded, by_count);
-    size_t budget = fast_grid_memory(g) / 4, spent = 0;
+    size_t budget = fast_grid_memory(g) / 16, spent = 0;
     budget = budget > (1u << 20) ? budget : (1u << 20);
     for (k = 0; k < n_crowded && spent < budget; k++) {
         const long c = crowded[k].cell;
