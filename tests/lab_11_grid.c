@@ -650,50 +650,65 @@ static void add_floor(surface_list *list, int kind, vec3 at, real w, int *source
  * then cover the others alone (fast_few.c): a floor 200 units wide (a box,
  * two triangles or a sphere as the ground) under a cluster of boxes, spheres
  * and turned triangles a few units wide, far from the origin at scales 1e-5
- * to 1e5.  Not apart: with list_up_to 0, under a cluster spread over the
- * floor (the cells would not get finer), under a floor of ten triangles (a
- * ray would test more than list_up_to), nor a stick as tall as the scene
- * (its short axis).  Every scene against the linear scan with every knob
- * set: rays from above at the cluster and the floor around it, rays that
- * leave the floor's top with t_min > 0 (as shadow rays do), rays along the
- * floor's plane, and rays along the axes. */
+ * to 1e5, once after a box too large to stay a box in the cells (dropped by
+ * fast_boxes_keep_small, which renumbers the boxes kept).  Not apart: with
+ * list_up_to 0, under a cluster spread over the floor (the cells would not
+ * get finer), under a cluster a few margins wide (its cells would be
+ * narrower than the margin every box is widened by), under a floor of ten
+ * triangles (a ray would test more than list_up_to), nor a stick as tall as
+ * the scene (its short axis).  Every scene against the linear scan with
+ * every knob set: rays from above at the cluster and the floor around it,
+ * rays that leave the floor's top with t_min > 0 (as shadow rays do), rays
+ * along the floor's plane, along the axes, from a million units and more
+ * away at the floor's edges and corners and at the spheres' rims, and with
+ * direction components so small that 1 / d_a overflows. */
 static void test_large_surfaces_apart(void **state)
 {
     (void)state;
     rng_state = 31;
+    enum { SPREAD, TINY, DROPPED_BOX, STICK };
     const struct {
         int floor;
-        real spread; /* the cluster's half-width, in units of the floor's */
-        bool stick;
+        real spread; /* the cluster's half-width, in units of the floor's half-width */
+        int kind;    /* and what else the scene has */
         long apart;  /* with the default knobs: the entries apart */
-    } cases[] = {{FLOOR_BOX, (real)0.02, false, 1},       {FLOOR_TWO_TRIANGLES, (real)0.02, false, 2},
-                 {FLOOR_SPHERE, (real)0.02, false, 1},    {FLOOR_TEN_TRIANGLES, (real)0.02, false, 0},
-                 {FLOOR_BOX, (real)0.9, false, 0},         {FLOOR_BOX, (real)0.02, true, 1}};
+    } cases[] = {{FLOOR_BOX, (real)0.02, SPREAD, 1},          {FLOOR_TWO_TRIANGLES, (real)0.02, SPREAD, 2},
+                 {FLOOR_SPHERE, (real)0.02, SPREAD, 1},       {FLOOR_TEN_TRIANGLES, (real)0.02, SPREAD, 0},
+                 {FLOOR_BOX, (real)0.9, SPREAD, 0},            {FLOOR_BOX, (real)0.02, STICK, 1},
+                 {FLOOR_BOX, (real)0.02, DROPPED_BOX, 1},     {FLOOR_TWO_TRIANGLES, 0, TINY, 0}};
     const real scales[] = {(real)1e-5, 1, (real)1e5};
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
         for (size_t sc = 0; sc < sizeof scales / sizeof scales[0]; sc++) {
-            const real unit = scales[sc] * uniform((real)0.7, (real)1.4), w = 100 * unit, h = cases[c].spread * w;
+            const real unit = scales[sc] * uniform((real)0.7, (real)1.4), w = 100 * unit;
             const vec3 at = vec3_scale(uniform_vec(vec3_make(-9000, -9000, -9000), vec3_make(9000, 9000, 9000)), unit);
-            const vec3 cluster = vec3_add(at, vec3_make(0, 3 * unit, 0));
-            const vec3 near_lo = vec3_add(cluster, vec3_make(-h, -2 * unit, -h)),
-                       near_hi = vec3_add(cluster, vec3_make(h, 2 * unit, h));
+            /* a tiny cluster: 4 margins of the scene's size (fast_build.c) across, its surfaces as small */
+            const real margin = 64 * REAL_EPSILON * (vec3_max_abs(at) + w);
+            const real h = cases[c].kind == TINY ? 2 * margin : cases[c].spread * w;
+            const real size = cases[c].kind == TINY ? margin / 2 : unit;
+            const vec3 cluster = vec3_add(at, vec3_make(0, 3 * size, 0));
+            const vec3 near_lo = vec3_add(cluster, vec3_make(-h, -2 * size, -h)),
+                       near_hi = vec3_add(cluster, vec3_make(h, 2 * size, h));
             surface_list list;
             surface_list_init(&list, SPHERE_ROBUST, triangle_tests[c % 2]);
             int source = 0;
+            if (cases[c].kind == DROPPED_BOX) /* 10 units: more than two of the cluster's cells along every axis */
+                add_box(&list, vec3_add(cluster, vec3_scale(vec3_make(-5, 0, -5), unit)),
+                        vec3_add(cluster, vec3_scale(vec3_make(5, 10, 5), unit)), source++);
             add_floor(&list, cases[c].floor, at, w, &source);
+            sphere balls[6];
             for (int k = 0; k < 6; k++) {
                 const vec3 lo = uniform_vec(near_lo, near_hi);
                 add_box(&list, lo, vec3_add(lo, vec3_scale(uniform_vec(vec3_make((real)0.1, (real)0.1, (real)0.1),
-                                                                       vec3_make(1, 1, 1)), unit)),
+                                                                       vec3_make(1, 1, 1)), size)),
                         source++);
-                surface_list_add_sphere(&list, (sphere){uniform_vec(near_lo, near_hi), uniform((real)0.1, (real)0.5) * unit},
-                                        0, source++);
+                balls[k] = (sphere){uniform_vec(near_lo, near_hi), uniform((real)0.1, (real)0.5) * size};
+                surface_list_add_sphere(&list, balls[k], 0, source++);
                 const vec3 a = uniform_vec(near_lo, near_hi);
-                surface_list_add_triangle(&list, (triangle){a, vec3_add(a, vec3_scale(random_direction(), unit)),
-                                                            vec3_add(a, vec3_scale(random_direction(), unit))},
+                surface_list_add_triangle(&list, (triangle){a, vec3_add(a, vec3_scale(random_direction(), size)),
+                                                            vec3_add(a, vec3_scale(random_direction(), size))},
                                           0, source++);
             }
-            if (cases[c].stick) /* from the floor to above the cluster: the scene's height */
+            if (cases[c].kind == STICK) /* from the floor to above the cluster: the scene's height */
                 add_box(&list, vec3_add(cluster, vec3_make(0, -3 * unit, 0)),
                         vec3_add(cluster, vec3_make(unit / 10, 3 * unit, unit / 10)), source++);
             /* set apart or not, and then the cells' box */
@@ -711,33 +726,51 @@ static void test_large_surfaces_apart(void **state)
                              (double)(2 * w));
                 fast_grid_free(&g);
             }
-            const long n = 2400;
+            const long n = 3000;
             ray_set rays = rays_alloc(n);
             for (long k = 0; k < n; k++) {
                 const vec3 target = k % 8 ? uniform_vec(near_lo, near_hi)
                                           : vec3_add(at, vec3_make(uniform(-3 * h, 3 * h), 0, uniform(-3 * h, 3 * h)));
                 vec3 p, d;
-                if (k % 4 == 0) { /* from above */
-                    p = vec3_add(cluster, vec3_scale(vec3_make(uniform(-20, 20), uniform(5, 20), uniform(-20, 20)), unit));
+                if (k % 6 == 0) { /* from above */
+                    p = vec3_add(cluster, vec3_scale(vec3_make(uniform(-20, 20), uniform(5, 20), uniform(-20, 20)), size));
                     d = vec3_sub(target, p);
-                } else if (k % 4 == 1) { /* leaving the floor's top */
+                } else if (k % 6 == 1) { /* leaving the floor's top */
                     p = vec3_add(at, vec3_make(uniform(-2 * h, 2 * h), 0, uniform(-2 * h, 2 * h)));
                     d = vec3_sub(target, p);
-                    d.y = real_abs(d.y) + unit / 100;
-                } else if (k % 4 == 2) { /* along the floor's plane, or just above it */
-                    p = vec3_add(at, vec3_make(uniform(-2 * h, 2 * h), k % 8 == 2 ? 0 : unit / 1000, uniform(-2 * h, 2 * h)));
+                    d.y = real_abs(d.y) + size / 100;
+                } else if (k % 6 == 2) { /* along the floor's plane, or just above it */
+                    p = vec3_add(at, vec3_make(uniform(-2 * h, 2 * h), k % 12 == 2 ? 0 : size / 1000, uniform(-2 * h, 2 * h)));
                     d = vec3_sub(target, p);
                     d.y = 0;
-                } else { /* along an axis */
-                    p = uniform_vec(vec3_sub(near_lo, vec3_make(unit, unit, unit)), vec3_add(near_hi, vec3_make(unit, unit, unit)));
+                } else if (k % 6 == 3) { /* along an axis */
+                    p = uniform_vec(vec3_sub(near_lo, vec3_make(size, size, size)), vec3_add(near_hi, vec3_make(size, size, size)));
                     d = vec3_make(0, 0, 0);
-                    set_axis(&d, (int)(k / 4 % 3), k / 12 % 2 ? unit : -unit);
+                    set_axis(&d, (int)(k / 6 % 3), k / 18 % 2 ? size : -size);
+                } else if (k % 6 == 4) { /* from far away at the floor's edges and corners, or at a sphere's rim */
+                    const int along = (int)(k / 96 % 3); /* a corner, or a point of an edge along this axis */
+                    vec3 aim = vec3_add(at, vec3_make(k % 24 < 12 ? -w : w, k % 48 < 24 ? 0 : -w / 50, k % 96 < 48 ? -w : w));
+                    if (k % 7)
+                        set_axis(&aim, along, (along == 0 ? at.x : along == 1 ? at.y - w / 100 : at.z) +
+                                                  uniform(-1, 1) * (along == 1 ? w / 100 : w));
+                    const sphere *ball = &balls[k / 6 % 6];
+                    if (k % 12 == 10)
+                        aim = vec3_add(ball->center, vec3_scale(random_direction(), ball->radius));
+                    /* a million and ten billion times the cluster's surfaces' size away (a tiny cluster's rays
+                     * from farther would not resolve it) */
+                    p = vec3_add(aim, vec3_scale(random_direction(), (k % 5 < 2 ? (real)1e6 : k % 5 < 4 ? (real)1e10 : (real)1e12) * size));
+                    d = vec3_sub(aim, p);
+                } else { /* down from above, with components so small that 1 / d_a overflows (subnormal): the
+                          * cells take them as 0 (frame_of's limit, which a ray along them would meet) */
+                    p = vec3_add(cluster, vec3_scale(vec3_make(uniform(-20, 20), uniform(5, 20), uniform(-20, 20)), size));
+                    d = vec3_make(REAL_MIN * uniform((real)0.01, (real)0.5), -size * uniform((real)0.5, 2),
+                                  -REAL_MIN * uniform((real)0.01, (real)0.5));
                 }
                 set_ray(&rays, k, p, d);
-                if (k % 4 == 1)
-                    rays.t_min[k] = (real)1e-9;
+                if (k % 6 == 1)
+                    rays.t_min[k] = (real)1e-9 * size;
             }
-            expect_as_linear(&list, &rays, n / 4);
+            expect_as_linear(&list, &rays, n / 5);
         }
 }
 

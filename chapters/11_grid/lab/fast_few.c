@@ -1,7 +1,6 @@
 /* fast_few.c - chapter 11's lab: surfaces tested for every ray: a scene of few surfaces as a list,
  * without cells, and the few large surfaces of a scene (a floor) apart from the cells of the rest. */
 #include <math.h>
-#include <stdio.h>
 #include <stdlib.h>
 
 #include "11_grid/lab/fast_boxes.h"
@@ -63,6 +62,13 @@ bool fast_grid_few_units(fast_grid *g, const surface_list *list, int up_to)
     return true;
 }
 
+/* Every box is widened by the margin of the whole scene's size: the cells of
+ * the surfaces not set apart must be at least this many margins wide, or
+ * each surface would be listed in many of them, their count growing as the
+ * square of the surfaces' (a cluster a few margins wide beside a floor far
+ * larger).  Then nothing is set apart. */
+#define MARGINS_A_CELL 16
+
 /* The cells along axis a, of n_a over lo_a .. lo_a + e_a, that x0 .. x1 overlaps. */
 static double cells_over(double x0, double x1, double lo_a, double e_a, int n_a)
 {
@@ -79,7 +85,8 @@ static double cells_over(double x0, double x1, double lo_a, double e_a, int n_a)
  * triangle tests and the others would lie in at most a quarter of the cells
  * the whole box would get.  Then apart[k] is true for each of their
  * surfaces (false on entry), *lo and *hi are the others' box and *rest their
- * count, and it returns true; else false, everything as it was.  The boxes
+ * count, and it returns true; else (or where their cells would be narrower
+ * than MARGINS_A_CELL margins) false, everything as it was.  The boxes
  * of g are those fast_boxes_find found. */
 static bool find_apart(const fast_grid *g, const surface_list *list, int up_to, double density, long max_cells,
                        bool *apart, vec3 *lo, vec3 *hi, long *rest)
@@ -122,8 +129,14 @@ static bool find_apart(const fast_grid *g, const surface_list *list, int up_to, 
     double covered = 1;
     for (int a = 0; a < 3; a++)
         covered *= cells_over(rest_lo[a], rest_hi[a], box_lo[a], extent[a], n[a]);
-    if (getenv("APART_DEBUG")) fprintf(stderr, "apart: large %ld others %ld quarters %lld covered %g of %d %d %d = %g\n", large, others, quarters, covered, n[0], n[1], n[2], covered / n[0] / n[1] / n[2]);
-    if (large == 0 || others == 0 || quarters > 4 * (long long)up_to ||
+    /* and possible: the others' cells at least MARGINS_A_CELL margins wide along each axis they span */
+    const double rest_extent[3] = {rest_hi[0] - rest_lo[0], rest_hi[1] - rest_lo[1], rest_hi[2] - rest_lo[2]};
+    int n_rest[3];
+    fast_grid_resolution(rest_extent, others, density, max_cells, n_rest);
+    bool wide = true;
+    for (int a = 0; a < 3; a++)
+        wide = wide && (n_rest[a] == 1 || rest_extent[a] >= MARGINS_A_CELL * (double)g->margin * n_rest[a]);
+    if (large == 0 || others == 0 || quarters > 4 * (long long)up_to || !wide ||
         !(4 * covered <= (double)n[0] * n[1] * (double)n[2])) {
         for (long k = 0; k < list->n; k++)
             apart[k] = false;

@@ -440,7 +440,7 @@ static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min,
     march_state ms;
     ms.cells = ms.leaps = ms.culled = 0;
     ms.prefetch = g->prefetch;
-    ms.spheres = g->cull && g->spheres;
+    ms.spheres = g->cull && g->spheres && g->list->sphere_formula == SPHERE_ROBUST; /* (fast_noted.h) */
     if (g->n_cells || g->units) {
         ray_frame rf;
         frame_of(&rf, g, r);

@@ -25,7 +25,7 @@ typedef struct {
     const struct fast_boxes *boxes; /* the top grid's, or NULL */
     uint64_t cells, leaps, culled;
     bool prefetch; /* the top grid's */
-    bool spheres;  /* the top grid's: spheres are culled in cells of few entries too */
+    bool spheres;  /* the top grid's: robust spheres are culled in cells of few entries too */
 } march_state;
 
 /* Before the march of a ray through g, the top grid. */
@@ -67,7 +67,9 @@ static inline void test_noted(search *s, march_state *ms, const fast_grid *g, co
  * once along the ray, without sifting.  A sphere's test costs four of a
  * triangle's: where the scene has spheres (ms->spheres), a sphere's box in
  * the cell is looked at first (passes_box, the cell's frame made at its
- * first sphere), as a cell of many entries looks at every box. */
+ * first sphere), as a cell of many entries looks at every box.  Not for the
+ * lecture's textbook formula, whose roots for a far or small sphere may lie
+ * well outside its box: a list of those takes the loop without the look. */
 static inline void test_entries(search *s, march_state *ms, const fast_grid *g, const uint32_t *surface,
                                 const uint32_t *lo, const uint32_t *hi, uint32_t n, cull_frame *f, const int i[3],
                                 const real p[3], const real d[3], const real inv_d[3], const real slack[3])
