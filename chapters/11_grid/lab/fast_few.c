@@ -28,7 +28,9 @@ static uint32_t unit_entry(const fast_grid *g, const surface_list *list, long k)
 /* A unit's cost in quarters of a triangle test. */
 static long long unit_quarters(const surface_list *list, uint32_t e)
 {
-    return e >= FAST_GRID_BOX ? QUARTERS_BOX : list->items[e].kind == SHAPE_SPHERE ? QUARTERS_SPHERE : QUARTERS_TRIANGLE;
+    if (e >= FAST_GRID_BOX)
+        return QUARTERS_BOX;
+    return list->items[e].kind == SHAPE_SPHERE ? QUARTERS_SPHERE : QUARTERS_TRIANGLE;
 }
 
 bool fast_grid_few_units(fast_grid *g, const surface_list *list, int up_to)
@@ -185,7 +187,8 @@ bool fast_grid_fit(fast_grid *g, const surface_list *list, fast_grid_options opt
     bool *apart = calloc((size_t)list->n, sizeof *apart);
     if (!apart)
         return false;
-    if (opt.list_up_to > 0 && may_be_large(lo, hi, widest) && find_apart(g, list, opt.list_up_to, opt.density, opt.max_cells, apart, &lo, &hi, &binned)) {
+    if (opt.list_up_to > 0 && may_be_large(lo, hi, widest) &&
+        find_apart(g, list, opt.list_up_to, opt.density, opt.max_cells, apart, &lo, &hi, &binned)) {
         g->lo = vec3_sub(lo, vec3_make(g->margin, g->margin, g->margin));
         g->hi = vec3_add(hi, vec3_make(g->margin, g->margin, g->margin));
         *subset = malloc((size_t)list->n * sizeof **subset);

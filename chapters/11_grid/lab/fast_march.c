@@ -453,10 +453,10 @@ static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min,
             for (long u = 0; u < g->n_apart; u++)
                 test_noted(s, &ms, g, rf.p, rf.inv_d, rf.slack, false, g->apart[u]);
             march(g, s, &rf, &ms);
-        }
-        else if (moves_unseen(&rf) || box_window(g, &rf, s->t_min, s->upper, &t0)) /* a list: each once */
+        } else if (moves_unseen(&rf) || box_window(g, &rf, s->t_min, s->upper, &t0)) { /* a list: each once */
             for (long u = 0; u < g->n_units; u++)
                 test_noted(s, &ms, g, rf.p, rf.inv_d, rf.slack, false, g->units[u]);
+        }
     }
     if (counts) {
         counts->cells += ms.cells;
