@@ -659,9 +659,10 @@ static void add_floor(surface_list *list, int kind, vec3 at, real w, int *source
  * the scene (its short axis).  Every scene against the linear scan with
  * every knob set: rays from above at the cluster and the floor around it,
  * rays that leave the floor's top with t_min > 0 (as shadow rays do), rays
- * along the floor's plane, along the axes, from a million units and more
- * away at the floor's edges and corners and at the spheres' rims, and with
- * direction components so small that 1 / d_a overflows. */
+ * along the floor's plane, along the axes, from a million to 1e11 times the
+ * surfaces' size away (as far as a real resolves them) at the floor's edges
+ * and corners and at the spheres' rims, and with direction components so
+ * small that 1 / d_a overflows. */
 static void test_large_surfaces_apart(void **state)
 {
     (void)state;
@@ -680,7 +681,8 @@ static void test_large_surfaces_apart(void **state)
     for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++)
         for (size_t sc = 0; sc < sizeof scales / sizeof scales[0]; sc++) {
             const real unit = scales[sc] * uniform((real)0.7, (real)1.4), w = 100 * unit;
-            const vec3 at = vec3_scale(uniform_vec(vec3_make(-9000, -9000, -9000), vec3_make(9000, 9000, 9000)), unit);
+            /* a thousand units from the origin: in float, the margin there is a hundredth of the cluster's cells */
+            const vec3 at = vec3_scale(uniform_vec(vec3_make(-1000, -1000, -1000), vec3_make(1000, 1000, 1000)), unit);
             /* a tiny cluster: 4 margins of the scene's size (fast_build.c) across, its surfaces as small */
             const real margin = 64 * REAL_EPSILON * (vec3_max_abs(at) + w);
             const real h = cases[c].kind == TINY ? 2 * margin : cases[c].spread * w;
@@ -756,9 +758,11 @@ static void test_large_surfaces_apart(void **state)
                     const sphere *ball = &balls[k / 6 % 6];
                     if (k % 12 == 10)
                         aim = vec3_add(ball->center, vec3_scale(random_direction(), ball->radius));
-                    /* a million and ten billion times the cluster's surfaces' size away (a tiny cluster's rays
-                     * from farther would not resolve it) */
-                    p = vec3_add(aim, vec3_scale(random_direction(), (k % 5 < 2 ? (real)1e6 : k % 5 < 4 ? (real)1e10 : (real)1e12) * size));
+                    /* 1e6, 1e9 and 1e11 times the surfaces' size away, and never so far that a real's rounding of
+                     * the ray's t moves its point by more than 1e-4 of that size (in float, 830 times it) */
+                    const real far = k % 5 < 2 ? (real)1e6 : k % 5 < 4 ? (real)1e9 : (real)1e11;
+                    const real resolved = (real)1e-4 / REAL_EPSILON;
+                    p = vec3_add(aim, vec3_scale(random_direction(), (far < resolved ? far : resolved) * size));
                     d = vec3_sub(aim, p);
                 } else { /* down from above, with components so small that 1 / d_a overflows (subnormal): the
                           * cells take them as 0 (frame_of's limit, which a ray along them would meet) */
