@@ -115,8 +115,9 @@ static inline void cull_span(const cull_frame *f, const fast_grid *g, const int 
         real widen = 1 + rounding * per_unit;
         real q_lo = (q0 < q1 ? q0 : q1) - widen, q_hi = (q0 < q1 ? q1 : q0) + widen;
         /* lo_a: q_lo truncated, in 0 .. FAST_GRID_BOX_STEPS (a NaN: 0); hi_a: q_hi truncated plus
-         * one, in 0 .. FAST_GRID_BOX_STEPS (0 when q_hi <= 0; a NaN: FAST_GRID_BOX_STEPS).  Clamped without branches (whether a side is clamped
-         * changes from cell to cell), to half a step beyond the ends, which truncates to the ends. */
+         * one, in 0 .. FAST_GRID_BOX_STEPS (0 when q_hi <= 0; a NaN: FAST_GRID_BOX_STEPS).  Clamped
+         * without branches (whether a side is clamped changes from cell to cell), to half a step
+         * beyond the ends, which truncates to the ends. */
         const real below = fast_cull_span_clamp[0], beyond = fast_cull_span_clamp[1], last = fast_cull_span_clamp[2];
         real lo_c = q_lo > below ? q_lo : below; /* also NaN */
         lo_c = lo_c < beyond ? lo_c : beyond;

@@ -95,7 +95,7 @@ struct fast_grid {
     real lo_a[3], hi_a[3];    /* lo and hi again, as arrays the march indexes by axis */
     real cell_a[3];           /* cell, as an array */
     real inv_cell_a[3];       /* inv_cell, as an array */
-    real per_unit[3];         /* FAST_GRID_BOX_STEPS / (cell_a + 2 margin): steps of a cell's frame per unit of length */
+    real per_unit[3];         /* FAST_GRID_BOX_STEPS / (cell_a + 2 margin): steps of a cell's frame per unit length */
     real frame_step[3];       /* (cell_a + 2 margin) / FAST_GRID_BOX_STEPS: the length of one step of a cell's frame */
     real *plane[3];           /* plane[a][k] = lo_a + k cell_a: the cell boundaries along axis a, for
                                * k = -beyond .. n_a + beyond (a leap's cube may reach beyond the grid) */
@@ -177,7 +177,8 @@ void fast_grid_cell_range(const fast_grid *g, vec3 box_lo, vec3 box_hi, int firs
 bool fast_grid_intersect(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit);
 
 /* The same, adding what the march did to *counts (when not NULL). */
-bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit, fast_grid_counts *counts);
+bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit,
+                                 fast_grid_counts *counts);
 
 /* The hit alone, without its record: what a caller that only asks which
  * surface, where along the ray and where on a triangle (beta, gamma) gets,

@@ -117,7 +117,9 @@ typedef struct {
 static int by_count(const void *x, const void *y)
 {
     const crowded_cell *a = x, *b = y;
-    return a->count != b->count ? (a->count < b->count) - (a->count > b->count) : (a->cell > b->cell) - (a->cell < b->cell);
+    if (a->count != b->count)
+        return (a->count < b->count) - (a->count > b->count);
+    return (a->cell > b->cell) - (a->cell < b->cell);
 }
 static int by_cell(const void *x, const void *y)
 {

@@ -281,7 +281,8 @@ static inline bool enter(const fast_grid *g, const ray_frame *f, real t_min, rea
  * while the march goes on with the cell's other entries. */
 static inline void prefetch_surface(const surface_list *list, uint32_t k)
 {
-    const surface *item = &list->items[k & (FAST_GRID_BOX - 1)]; /* a box's entry: some surface, never beyond the list */
+    /* a box's entry: some surface, never beyond the list */
+    const surface *item = &list->items[k & (FAST_GRID_BOX - 1)];
     __builtin_prefetch(item);
     __builtin_prefetch((const char *)(&item->triangle.c + 1) - 1);
 }
@@ -466,7 +467,8 @@ static inline void search_grid(const fast_grid *g, search *s, ray r, real t_min,
     }
 }
 
-bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit, fast_grid_counts *counts)
+bool fast_grid_intersect_counted(const fast_grid *g, ray r, real t_min, real t_max, hit_record *hit,
+                                 fast_grid_counts *counts)
 {
     search s;
     search_grid(g, &s, r, t_min, t_max, counts);

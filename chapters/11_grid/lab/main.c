@@ -159,7 +159,8 @@ static void report(const void *prepared, render_stats stats, FILE *out)
     if (fast && lq->fast.units) {
         fprintf(out,
                 "11_grid_lab: fast grid: a list of %ld unit%s for %d surface%s (--list-up-to: no cells), %.1f MB, "
-                "built in %.3f s; per ray %.2f intersection tests (%.2f more culled by their boxes); traced in %.3f s\n",
+                "built in %.3f s; per ray %.2f intersection tests (%.2f more culled by their boxes); "
+                "traced in %.3f s\n",
                 lq->fast.n_units, lq->fast.n_units == 1 ? "" : "s", list->n, list->n == 1 ? "" : "s",
                 (double)fast_grid_memory(&lq->fast) / 1e6,
                 lq->build_seconds, (double)sum.counts.tests / queries, (double)sum.counts.culled / queries,
