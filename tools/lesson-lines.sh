@@ -78,6 +78,16 @@ if [ -z "$ratio_max" ] || awk -v r="$read_all" -v w="$written_all" -v m="$ratio_
     echo "course: read-to-write ratio $ratio to 1, past its budget of ${ratio_max:-(none)} to 1 ($budgets)" >&2
     status=1
 fi
+# A lab stays readable file by file: none of its files (code and pages) passes LAB_FILE_MAX lines.
+LAB_FILE_MAX=500
+for f in chapters/[0-9][0-9]_*/lab/*; do
+    [ -f "$f" ] || continue
+    n=$(lines "$f")
+    if [ "$n" -gt "$LAB_FILE_MAX" ]; then
+        echo "$f: $n lines, past a lab file's $LAB_FILE_MAX ($budgets): split it by concept" >&2
+        status=1
+    fi
+done
 # The layers: the lesson reads neither the program's code beside it nor the lab
 # (renderer/ and lab/ read the lesson), and renderer/ does not read the lab.
 for f in chapters/[0-9][0-9]_*/*.[ch] solutions/[0-9][0-9]_*/*.c chapters/[0-9][0-9]_*/renderer/*.[ch]; do
