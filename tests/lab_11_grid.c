@@ -778,6 +778,65 @@ static void test_large_surfaces_apart(void **state)
         }
 }
 
+/* Spheres that touch, in cells of few entries: a row of them resting on a
+ * floor of two triangles (set apart), each touching the next, far from the
+ * origin at three scales, and rays from a million times their size away to
+ * as far as a real resolves them, aimed at where two surfaces touch: a
+ * sphere's lowest point from below the floor (steeply, and at a slant, where
+ * the floor's t comes through the watertight test's shear along another
+ * axis), the point between two spheres from above.  The two hits are a
+ * rounding apart along the ray, so the
+ * sphere's box in its cell is looked at (test_entries) with the window
+ * already closed by the other surface at about the same t: that look, whose
+ * frame is a rounding of far points, must allow that rounding. */
+static void test_touching_spheres_from_far(void **state)
+{
+    (void)state;
+    rng_state = 41;
+    const real scales[] = {(real)1e-3, 1, (real)1e3};
+    for (size_t sc = 0; sc < sizeof scales / sizeof scales[0]; sc++)
+        for (int order = 0; order < 2; order++) { /* the floor before the spheres in the list, or after */
+            const real unit = scales[sc] * uniform((real)0.7, (real)1.4);
+            const vec3 at = vec3_scale(uniform_vec(vec3_make(-500, -500, -500), vec3_make(500, 500, 500)), unit);
+            enum { BALLS = 12 };
+            sphere balls[BALLS];
+            real x = 0;
+            for (int k = 0; k < BALLS; k++) {
+                const real r = uniform((real)0.3, 1) * unit;
+                x += k ? balls[k - 1].radius + r : 0;
+                balls[k] = (sphere){vec3_add(at, vec3_make(x, r, uniform(-1, 1) * unit / 4)), r};
+            }
+            surface_list list;
+            surface_list_init(&list, SPHERE_ROBUST, triangle_tests[order]);
+            int source = 0;
+            if (order == 0)
+                add_floor(&list, FLOOR_TWO_TRIANGLES, vec3_add(at, vec3_make(x / 2, 0, 0)), 40 * x, &source);
+            for (int k = 0; k < BALLS; k++)
+                surface_list_add_sphere(&list, balls[k], 0, source++);
+            if (order == 1)
+                add_floor(&list, FLOOR_TWO_TRIANGLES, vec3_add(at, vec3_make(x / 2, 0, 0)), 40 * x, &source);
+            const long n = 4000;
+            ray_set rays = rays_alloc(n);
+            const real resolved = (real)1e-4 / REAL_EPSILON;
+            for (long k = 0; k < n; k++) {
+                const sphere *ball = &balls[k % BALLS], *next = &balls[(k + 1) % BALLS];
+                vec3 aim, from;
+                if (k % 2 == 0 || next == &balls[0]) { /* the lowest point, from below the floor */
+                    aim = vec3_sub(ball->center, vec3_make(0, ball->radius, 0));
+                    from = vec3_make(uniform(-1, 1), k % 4 == 0 ? -1 : -uniform((real)0.02, (real)0.3), uniform(-1, 1));
+                } else { /* between two spheres, from a side */
+                    const real f = ball->radius / (ball->radius + next->radius);
+                    aim = vec3_add(ball->center, vec3_scale(vec3_sub(next->center, ball->center), f));
+                    from = vec3_make(uniform((real)-0.2, (real)0.2), uniform((real)0.05, 1), k % 4 < 2 ? 1 : -1);
+                }
+                const real far = k % 3 == 0 ? (real)1e6 : resolved;
+                const vec3 p = vec3_add(aim, vec3_scale(vec3_normalize(from), far * unit));
+                set_ray(&rays, k, p, vec3_sub(aim, p));
+            }
+            expect_as_linear(&list, &rays, n / 2);
+        }
+}
+
 /* The fast grid's cell range (the build runs it for every surface, its ceil,
  * floor and clamps written out) gives the lesson's grid_cell_range's answers:
  * boxes inside, across and beyond a grid far from the origin, with sides on
@@ -840,6 +899,7 @@ static const graded_test tests[] = {
     GRADED(test_few_surfaces_as_a_list, 0),
     GRADED(test_large_surfaces_apart, 0),
     GRADED(test_cell_range_as_the_lesson, 0),
+    GRADED(test_touching_spheres_from_far, 0),
     GRADED(test_directions_of_any_length, 0),
     GRADED(test_rays_not_finite, 0),
     GRADED(test_cornell_scenes, 0),
