@@ -49,6 +49,22 @@ static const fast_knobs fast_defaults = FAST_KNOBS_DEFAULT; /* the lab's: the fa
 
 #include "grid_cases.h"
 
+/* Allocation faults: this suite's calls to malloc, calloc and realloc go
+ * through the wrappers below (the Makefile links it with -Wl,--wrap for the
+ * three).  With alloc_fail_at = k > 0, the k-th call from the last reset of
+ * alloc_calls returns NULL. */
+void *__real_malloc(size_t size);
+void *__real_calloc(size_t count, size_t size);
+void *__real_realloc(void *old, size_t size);
+void *__wrap_malloc(size_t size);
+void *__wrap_calloc(size_t count, size_t size);
+void *__wrap_realloc(void *old, size_t size);
+static long alloc_calls, alloc_fail_at;
+static bool alloc_fault(void) { return alloc_fail_at > 0 && ++alloc_calls == alloc_fail_at; }
+void *__wrap_malloc(size_t size) { return alloc_fault() ? NULL : __real_malloc(size); }
+void *__wrap_calloc(size_t count, size_t size) { return alloc_fault() ? NULL : __real_calloc(count, size); }
+void *__wrap_realloc(void *old, size_t size) { return alloc_fault() ? NULL : __real_realloc(old, size); }
+
 static void build_fast(fast_grid *g, const surface_list *list, fast_grid_options opt)
 {
     char err[256];
@@ -837,6 +853,83 @@ static void test_touching_spheres_from_far(void **state)
         }
 }
 
+/* The build out of memory: each of its allocations fails in turn, on a
+ * floor under a cluster of boxes, spheres and triangles (the floor set
+ * apart), on a crowded cluster with grids of their own in its cells and the
+ * triangles' normals kept, on a scene of few surfaces (a list) and with every
+ * knob off.  Each build either fails with "out of memory" and leaves nothing
+ * allocated (the sanitizer build's leak check at exit), or succeeds and
+ * answers as the linear scan. */
+static void test_out_of_memory(void **state)
+{
+    (void)state;
+    rng_state = 43;
+    for (int scene = 0; scene < 4; scene++) {
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, triangle_tests[scene % 2]);
+        int source = 0;
+        const vec3 at = uniform_vec(vec3_make(-50, -50, -50), vec3_make(50, 50, 50));
+        if (scene == 0)
+            add_floor(&list, FLOOR_BOX, at, 100, &source);
+        const int units = scene == 2 ? 2 : scene == 1 ? 60 : 8;
+        for (int k = 0; k < units; k++) {
+            const vec3 lo = vec3_add(at, uniform_vec(vec3_make(-2, 0, -2), vec3_make(2, 3, 2)));
+            add_box(&list, lo, vec3_add(lo, uniform_vec(vec3_make((real)0.1, (real)0.1, (real)0.1), vec3_make(1, 1, 1))),
+                    source++);
+            surface_list_add_sphere(&list, (sphere){vec3_add(lo, vec3_make(0, 1, 0)), uniform((real)0.1, (real)0.5)},
+                                    0, source++);
+            const vec3 a = vec3_add(lo, vec3_make(1, 0, 1));
+            surface_list_add_triangle(&list, (triangle){a, vec3_add(a, random_direction()), vec3_add(a, random_direction())},
+                                      0, source++);
+        }
+        fast_grid_options opt = fast_grid_default_options();
+        if (scene == 1) {
+            opt.split = 4;
+            opt.normals = true;
+        } else if (scene == 3) {
+            opt = (fast_grid_options){2, 1L << 20, false, false, false, 0, 0, false, false, 0};
+        }
+        const long n = 200;
+        ray_set rays = rays_alloc(n);
+        for (long k = 0; k < n; k++) {
+            const vec3 p = vec3_add(at, vec3_scale(random_direction(), 20));
+            set_ray(&rays, k, p, vec3_sub(vec3_add(at, uniform_vec(vec3_make(-2, 0, -2), vec3_make(3, 4, 3))), p));
+        }
+        long failed = 0;
+        for (long fail_at = 1;; fail_at++) {
+            fast_grid g;
+            char err[256] = "";
+            alloc_calls = 0;
+            alloc_fail_at = fail_at;
+            const int status = fast_grid_build(&g, &list, opt, err, sizeof err);
+            const bool faulted = alloc_calls >= fail_at;
+            alloc_fail_at = 0;
+            if (status != 0) {
+                if (!faulted || !strstr(err, "out of memory"))
+                    fail_msg("scene %d, allocation %ld of the build failing: \"%s\"", scene, fail_at, err);
+                failed++;
+                continue;
+            }
+            for (long k = 0; k < n; k++) {
+                hit_record a = {0}, b = {0};
+                const bool fa = surfaces_intersect(&list, rays.r[k], 0, REAL_INFINITY, &a);
+                const bool fb = fast_grid_intersect(&g, rays.r[k], 0, REAL_INFINITY, &b);
+                if (!same_hit(fa, &a, fb, &b))
+                    fail_msg("scene %d, allocation %ld of the build failing: the build succeeded, and ray %ld hits "
+                             "surface %d (grid) where the linear scan hits %d",
+                             scene, fail_at, k, fb ? b.surface : -1, fa ? a.surface : -1);
+            }
+            fast_grid_free(&g);
+            if (!faulted)
+                break; /* the build made fewer than fail_at allocations: every one has failed once */
+        }
+        if (failed < 3)
+            fail_msg("scene %d: only %ld builds failed (every allocation failed in turn)", scene, failed);
+        rays_free(&rays);
+        surface_list_free(&list);
+    }
+}
+
 /* The fast grid's cell range (the build runs it for every surface, its ceil,
  * floor and clamps written out) gives the lesson's grid_cell_range's answers:
  * boxes inside, across and beyond a grid far from the origin, with sides on
@@ -900,6 +993,7 @@ static const graded_test tests[] = {
     GRADED(test_large_surfaces_apart, 0),
     GRADED(test_cell_range_as_the_lesson, 0),
     GRADED(test_touching_spheres_from_far, 0),
+    GRADED(test_out_of_memory, 0),
     GRADED(test_directions_of_any_length, 0),
     GRADED(test_rays_not_finite, 0),
     GRADED(test_cornell_scenes, 0),
