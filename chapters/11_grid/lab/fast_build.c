@@ -115,10 +115,9 @@ static void cull_box(const fast_grid *g, vec3 lo, vec3 hi, int i, int j, int k, 
         double origin = (double)get(g->lo, a) + index[a] * (double)get(g->cell, a) - (double)g->margin;
         double f_lo = ((double)get(lo, a) - g->margin - origin) * steps - 0.01;
         double f_hi = ((double)get(hi, a) + g->margin - origin) * steps + 0.01;
-        const int t_hi = f_hi > 0 && f_hi < FAST_GRID_BOX_STEPS ? (int)f_hi : 0; /* floor, ceil: truncation */
-        box[a] = (uint8_t)(f_lo <= 0 ? 0 : f_lo >= FAST_GRID_BOX_STEPS ? FAST_GRID_BOX_STEPS : (int)f_lo);
-        box[3 + a] =
-            (uint8_t)(f_hi <= 0 ? 0 : f_hi >= FAST_GRID_BOX_STEPS ? FAST_GRID_BOX_STEPS : t_hi + (t_hi < f_hi));
+        const int top = FAST_GRID_BOX_STEPS, t_hi = f_hi > 0 && f_hi < top ? (int)f_hi : 0; /* truncated: floor, ceil */
+        box[a] = (uint8_t)(f_lo <= 0 ? 0 : f_lo >= top ? top : (int)f_lo);
+        box[3 + a] = (uint8_t)(f_hi <= 0 ? 0 : f_hi >= top ? top : t_hi + (t_hi < f_hi));
     }
 }
 /* end snippet */
