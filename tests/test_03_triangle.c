@@ -319,28 +319,34 @@ static void test_cramer_alone_rejects_what_it_cannot_solve(void **state)
     const char *nan_passes = "a NaN t, beta or gamma passed a comparison: write them so that a NaN fails, "
                              "!(t > t_min && t < t_max), !(beta >= 0 && ...)";
     const char *m_unchecked = "M not checked before dividing: return false when M == 0 or M is not finite";
+    /* M = 10 (REAL_MAX / 2) overflows where the numerators do not: t, beta and gamma come out +-0, and a
+     * window that holds t = 0 would take them for a hit on a vertex */
+    const triangle wide = {{0, 0, 0}, {10, 0, 0}, {0, 1, 0}};
+    const ray steep = {{(real)-0.005, (real)-0.005, -1}, {0, 0, REAL_MAX / 2}};
     const struct {
         const triangle *tri;
         ray r;
+        real t_min;
         const char *what, *mistake;
     } cases[] = {
-        {&flat, {{nan, above.y, above.z}, d}, "p = (NaN, 0.25, 10)", nan_passes},
-        {&flat, {{above.x, nan, above.z}, d}, "p = (0.5, NaN, 10)", nan_passes},
-        {&flat, {{above.x, above.y, inf}, d}, "p = (0.5, 0.25, inf)", nan_passes},
-        {&flat, {{above.x, -inf, above.z}, d}, "p = (0.5, -inf, 10)", nan_passes},
-        {&flat, {above, {d.x, d.y, nan}}, "d = (.., .., NaN): M is NaN", m_unchecked},
-        {&flat, {above, {inf, d.y, d.z}}, "d = (inf, .., ..): M is not finite", m_unchecked},
-        {&flat, {vec3_make(0, 0, 3), vec3_sub(flat.b, flat.a)}, "d parallel to the plane: M = 0", m_unchecked},
-        {&collinear, {above, vec3_sub(collinear.b, above)}, "collinear vertices: M = 0", m_unchecked},
+        {&flat, {{nan, above.y, above.z}, d}, 0, "p = (NaN, 0.25, 10)", nan_passes},
+        {&flat, {{above.x, nan, above.z}, d}, 0, "p = (0.5, NaN, 10)", nan_passes},
+        {&flat, {{above.x, above.y, inf}, d}, 0, "p = (0.5, 0.25, inf)", nan_passes},
+        {&flat, {{above.x, -inf, above.z}, d}, 0, "p = (0.5, -inf, 10)", nan_passes},
+        {&flat, {above, {d.x, d.y, nan}}, 0, "d = (.., .., NaN): M is NaN", m_unchecked},
+        {&flat, {above, {inf, d.y, d.z}}, 0, "d = (inf, .., ..): M is not finite", m_unchecked},
+        {&flat, {vec3_make(0, 0, 3), vec3_sub(flat.b, flat.a)}, 0, "d parallel to the plane: M = 0", m_unchecked},
+        {&collinear, {above, vec3_sub(collinear.b, above)}, 0, "collinear vertices: M = 0", m_unchecked},
+        {&wide, steep, -1, "d = (0, 0, REAL_MAX / 2): M overflows to inf, t, beta and gamma are +-0", m_unchecked},
     };
     for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
         triangle_hit h = {-7, -7, -7};
-        const bool hit = triangle_cramer(cases[k].tri, cases[k].r, 0, inf, &h);
+        const bool hit = triangle_cramer(cases[k].tri, cases[k].r, cases[k].t_min, inf, &h);
         if (hit || !(h.t == -7 && h.beta == -7 && h.gamma == -7)) {
             print_triangle("input", cases[k].tri, cases[k].r);
-            fail_msg("cramer, window (0, inf), %s\n    expected false, *hit untouched\n    got      %s%s\n"
+            fail_msg("cramer, window (%g, inf), %s\n    expected false, *hit untouched\n    got      %s%s\n"
                      "    likely mistake: %s",
-                     cases[k].what, hit ? "true" : "false, but *hit written: ",
+                     (double)cases[k].t_min, cases[k].what, hit ? "true" : "false, but *hit written: ",
                      hit ? (unwritten(h) ? ", *hit not written" : describe(", %s", describe_got(true, h, false)))
                          : describe_got(true, h, false),
                      cases[k].mistake);
@@ -548,6 +554,28 @@ static void test_t_window(void **state)
                       "t compared with 0 instead of t_min: the window (t_min, t_max) is the caller's, here (-inf, 0)",
                       &h);
         expect_t_exactly(&flat, back, -REAL_INFINITY, 0, both[k], h, -1);
+    }
+    /* The same with M = N = 49, 121, 169 (legs of 7, 11, 13): t = N / M is 1 exactly, correctly rounded once,
+     * where N (1 / M) rounds twice (49 fl(1 / 49) = 1 - 2^-53): a window that ends at t = 1 holds no hit. */
+    const real legs[] = {7, 11, 13};
+    for (size_t s = 0; s < sizeof legs / sizeof legs[0]; s++) {
+        const triangle right = {{0, 0, 0}, {-legs[s], 0, 0}, {0, -legs[s], 0}};
+        const ray up = {{-1, -1, -1}, {0, 0, 1}};
+        for (int k = 0; k < N_TESTS; k++) {
+            triangle_hit h = UNWRITTEN_HIT;
+            expect_hit_in(&right, up, 0, 2, both[k], "at t 1, beta = gamma = 1 / leg",
+                          lost_hit_mistake(1 / legs[s], 1 / legs[s]), &h);
+            assert_true_why(h.t == 1,
+                            "--triangle=%s, window (0, 2): %s\n    expected t = 1 exactly (N = M = %g, both exact)\n"
+                            "    got      %s\n    likely mistake: %s",
+                            test_names[k], describe_input(&right, up), (double)(legs[s] * legs[s]),
+                            describe_got(true, h, false),
+                            unwritten(h) ? not_written
+                                         : "t = det[a - b, a - c, a - p] * (1 / M): two roundings where the README's "
+                                           "t = det[a - b, a - c, a - p] / M rounds once");
+            expect_miss(&right, up, 0, 1, both[k]); /* t == t_max: outside */
+            expect_miss(&right, up, 1, 2, both[k]); /* t == t_min: outside */
+        }
     }
 }
 
