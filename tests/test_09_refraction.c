@@ -335,6 +335,29 @@ static void test_critical_angle(void **state)
                      "into glass there is no critical angle: r = eta_i / eta_t is below 1, so |S_t| < |S_i| <= 1; an "
                      "upside-down ratio (eta_t / eta_i) reports total internal reflection here",
                      &T, &cos_t);
+    /* Out of other media into air, refract itself 512 ulps of cos(theta_i) either side of the critical
+     * cosine sqrt(1 - 1 / r^2): a transmission has a finite T and cos_t >= 0, whatever the rounding (the
+     * test is made on the cos^2(theta_t) that goes into the square root, not on another expression of it) */
+    const real etas[] = {(real)1.4, (real)1.33, (real)1.7, (real)2.42, (real)1.1};
+    const vec3 up = {0, 0, 1};
+    for (size_t j = 0; j < sizeof etas / sizeof etas[0]; j++) {
+        const real c_c = real_sqrt(1 - 1 / (etas[j] * etas[j]));
+        for (int k = -512; k <= 512; k++) {
+            const real c = c_c + (real)k * REAL_EPSILON * c_c;
+            const vec3 d = {real_sqrt(1 - c * c), 0, -c};
+            T = vec3_make(-7, -7, -7);
+            cos_t = -7;
+            if (refract(d, up, etas[j], 1, &T, &cos_t) && !(vec3_is_finite(T) && cos_t >= 0))
+                fail_msg("refract(d = (%.17g, 0, %.17g), n = (0, 0, 1), eta_i = %g, eta_t = 1), cos(theta_i) %+d "
+                         "ulps from the critical cosine\n    expected false, or true with T finite and cos_t >= 0\n"
+                         "    got      true, T = (%g, %g, %g), cos_t = %g\n    likely mistake: the total internal "
+                         "reflection test made on another expression than the cos^2(theta_t) = (1 - r^2) + r^2 "
+                         "cos^2(theta_i) whose square root is taken: rounded differently, it lets a negative one "
+                         "through (README, \"Total internal reflection\")",
+                         (double)d.x, (double)d.z, (double)etas[j], k, (double)T.x, (double)T.y, (double)T.z,
+                         (double)cos_t);
+        }
+    }
 }
 
 /* ---- Fresnel -------------------------------------------------------------------------------- */
