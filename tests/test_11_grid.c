@@ -534,7 +534,9 @@ static void expect_march_cells(const grid *g, ray r, const char *what, int cells
  * slacks) enters the widened box: the march errs towards a cell too many.
  * So does one outside by 1.5 reach: the slacks of x and y are reach each
  * (|d_a| = 1), and the gap is within their sum, 2 reach, but beyond either
- * alone (half a reach either way, again far more than the roundings). */
+ * alone (half a reach either way, again far more than the roundings).  The
+ * same half reach past the edge y = hi_y, z = hi_z along (0, -1, 1): x's
+ * slack is 0 there (d_x = 0), and y's and z's are reach each. */
 static void expect_entry_edges(const grid *g)
 {
     const ray on_face = {{g->lo.x - 1, g->hi.y, 0}, {1, 0, 0}};
@@ -542,19 +544,27 @@ static void expect_entry_edges(const grid *g)
     const real reach = box_ray_slack((box){g->lo, g->hi}, (ray){{g->hi.x - 2, g->hi.y + 2, 0}, {1, -1, 0}}, inv_d, slack);
     const ray past_edge = {{g->hi.x - 2, g->hi.y + 2 + reach / 2, 0}, {1, -1, 0}};
     const ray farther = {{g->hi.x - 2, g->hi.y + 2 + reach * (real)1.5, 0}, {1, -1, 0}};
-    for (int k = 0; k < 3; k++) {
-        const ray r = k == 2 ? farther : k ? past_edge : on_face;
-        const char *where = k == 2 ? "passing the box's edge x = hi_x, y = hi_y outside by 1.5 times the reach of "
-                                     "the slack, within the two slacks together"
-                            : k    ? "passing the box's edge x = hi_x, y = hi_y outside by half the reach of the slack"
-                                   : "in the plane of the box's face y = hi_y";
+    const real mid_x = (g->lo.x + g->hi.x) / 2;
+    const real reach_yz =
+        box_ray_slack((box){g->lo, g->hi}, (ray){{mid_x, g->hi.y + 2, g->hi.z - 2}, {0, -1, 1}}, inv_d, slack);
+    const ray past_edge_yz = {{mid_x, g->hi.y + 2 + reach_yz / 2, g->hi.z - 2}, {0, -1, 1}};
+    for (int k = 0; k < 4; k++) {
+        const ray r = k == 3 ? past_edge_yz : k == 2 ? farther : k ? past_edge : on_face;
+        const char *where = k == 3   ? "passing the box's edge y = hi_y, z = hi_z outside by half the reach of the "
+                                       "slack, with d_x = 0"
+                            : k == 2 ? "passing the box's edge x = hi_x, y = hi_y outside by 1.5 times the reach of "
+                                       "the slack, within the two slacks together"
+                            : k      ? "passing the box's edge x = hi_x, y = hi_y outside by half the reach of the slack"
+                                     : "in the plane of the box's face y = hi_y";
         grid_counts counts = {0, 0};
         expect_no_hit(g, r, where, &counts);
         if (counts.cells == 0)
-            fail_msg("grid_intersect_counted(ray from (%.17g, %.17g, %.17g) along (%g, %g, 0), %s)\n    expected at "
-                     "least 1 cell visited\n    got      0\n    likely mistake: %s",
-                     (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, where,
-                     k == 2 ? "enter with the slack on one side only: the entering t is lowered by slack_a AND the "
+            fail_msg("grid_intersect_counted(ray from (%.17g, %.17g, %.17g) along (%g, %g, %g), %s)\n    expected "
+                     "at least 1 cell visited\n    got      0\n    likely mistake: %s",
+                     (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z, where,
+                     k == 3 ? "enter: each axis's crossings widened by that axis's own slack_a (here slack_x is 0, "
+                              "d_x = 0; slack_y and slack_z are the reach), not by another axis's"
+                     : k == 2 ? "enter with the slack on one side only: the entering t is lowered by slack_a AND the "
                               "leaving t raised by slack_a, so that the gap between two axes' crossings is covered by "
                               "both slacks"
                      : k    ? "enter without the slack (or with it taken inwards): each entering t is lowered and each "
