@@ -59,7 +59,7 @@ static size_t matching_once(suspect_vec3 *out, const suspect_vec3 *in, size_t n,
 
 /* The values typical mistakes of interpolate_vec3 give for A_a, A_b, A_c at
  * (beta, gamma), and what to say about each. */
-#define INTERPOLATE_MISTAKES 15
+#define INTERPOLATE_MISTAKES 16
 /* v normalized, or v itself when it is the zero vector (which has no direction). */
 static vec3 normalized_or_zero(vec3 v) { return vec3_length_squared(v) > 0 ? vec3_normalize(v) : v; }
 static void interpolate_mistakes(suspect_vec3 mistakes[INTERPOLATE_MISTAKES], vec3 A_a, vec3 A_b, vec3 A_c, real beta,
@@ -91,6 +91,9 @@ static void interpolate_mistakes(suspect_vec3 mistakes[INTERPOLATE_MISTAKES], ve
                   vec3_scale(normalized_or_zero(A_c), gamma)),
          "each vertex's value normalized before the blend: the attributes are blended as they are (a normal is "
          "normalized after the blend, by vertex_normal)"},
+        {vec3_add(vec3_add(A_a, vec3_scale(vec3_sub(A_b, A_a), beta)), vec3_scale(vec3_sub(A_c, A_a), gamma)),
+         "A_a + beta (A_b - A_a) + gamma (A_c - A_a): the same blend in exact arithmetic, but its differences "
+         "round, so that at a vertex it misses the vertex's own value; weigh each value as it is"},
     };
 #undef MIX
     for (int k = 0; k < INTERPOLATE_MISTAKES; k++)
@@ -140,6 +143,13 @@ static void test_interpolate_vertices_edges(void **state)
     vec3 blend = vec3_make((real)(0.1 * 37.25 + 0.2 * -3.75 + 0.7 * 1e3), (real)(0.1 * -12.5 + 0.2 * 8.5 + 0.7 * -7e2),
                            (real)(0.1 * 53.125 + 0.2 * 0.625 + 0.7 * 2.5e2));
     expect_interpolate(A_a, A_b, A_c, (real)0.2, (real)0.7, blend, TOL(1000));
+    /* The vertices' own values again where their differences round (0.7 - 0.1, 1 - 1e16): the weights 1, 0, 0
+     * give each exactly */
+    const vec3 B_a = {(real)0.7, (real)1e16, (real)-0.3}, B_b = {(real)0.1, 1, (real)0.9},
+               B_c = {(real)-2.3, (real)0.3, (real)7.1};
+    expect_interpolate(B_a, B_b, B_c, 0, 0, B_a, 0);
+    expect_interpolate(B_a, B_b, B_c, 1, 0, B_b, 0);
+    expect_interpolate(B_a, B_b, B_c, 0, 1, B_c, 0);
 }
 
 /* Interpolating the vertex POSITIONS gives back the point itself: chapter
