@@ -12,8 +12,9 @@
 #   - no constructor or destructor (.init_array, .fini_array, .ctors,
 #     .dtors, .preinit_array, .init, .fini sections);
 #   - no assembly (asm, __asm__ after preprocessing, which also rules out
-#     .incbin) in the file as its compile saw it ($CC $CPPFLAGS, all the
-#     compile's flags; as the user COMPILE_AS, when set); nor any text
+#     .incbin) in the file as its compile saw it (with COMPILE_AS, the very
+#     text the object was compiled from, tools/compile-as.sh; else the file
+#     preprocessed again, $CC $CPPFLAGS, all the compile's flags); nor any text
 #     the compiler hands the assembler as it is, which would be assembly all
 #     the same: the attributes that name a section or a symbol (section,
 #     alias, weakref, ifunc, symver, target_clones; a newline in a section's
@@ -111,16 +112,19 @@ instructions() {
         awk -F'\t' '/^ *[0-9a-f]+:\t/ { sub(/ *[#<].*/, "", $2); print $2 }'
 }
 
-# preprocess SOURCE OUT: SOURCE as its compile saw it, with the same flags
-# ($CPPFLAGS: all of the compile's), and as the user who compiled it
-# (COMPILE_AS, tools/compile-as.sh: the same files readable, the same
-# folder), so that no #if (__has_include, __STRICT_ANSI__, _OPENMP) shows
-# this check another file than the compiler.
+# preprocess SOURCE OBJECT OUT: SOURCE as its compile saw it.  Compiled as
+# the user COMPILE_AS (tools/compile-as.sh), the text the object was compiled
+# from, which compile-as.sh keeps beside it (OBJECT's name with .i): the
+# check reads what the compiler read, so that no #if (__has_include,
+# __STRICT_ANSI__, _OPENMP, an output file one run has opened and another not
+# yet) can show it another file.  Otherwise (a student's own `make grade`,
+# not sealed against the student), SOURCE preprocessed again with the same
+# flags ($CPPFLAGS: all of the compile's).
 preprocess() {
     if [ -n "${COMPILE_AS:-}" ]; then
-        tools/compile-as.sh "$COMPILE_AS" "$2" "$1" ${CC:-cc} ${CPPFLAGS:-} -E >/dev/null 2>&1
+        [ -f "${2%.o}.i" ] && cp "${2%.o}.i" "$3"
     else
-        timeout -k 5 60 ${CC:-cc} ${CPPFLAGS:-} -E "$1" -o "$2" >/dev/null 2>&1
+        timeout -k 5 60 ${CC:-cc} ${CPPFLAGS:-} -E "$1" -o "$3" >/dev/null 2>&1
     fi
 }
 
@@ -153,17 +157,19 @@ for file in "$@"; do
     # Assembly, after preprocessing: the identifiers asm, __asm, __asm__ in
     # any line of the file as the compiler saw it (what it includes too: a
     # #line or a system_header pragma would make the file's own lines look
-    # like a header's), outside strings and characters, but for the renaming
-    # of a declaration (the C library's `) __asm__ ("" "name")`, no code);
+    # like a header's), outside strings and characters (both removed in one
+    # pass from left to right, so that a '"' cannot pair with a string's
+    # quote), but for the renaming of a declaration (the C library's
+    # `) __asm__ ("" "name")`, no code);
     # and what hands the assembler a text as it is.  The file compiled, so what it
     # includes is there.
-    if ! preprocess "$src" "$tmp/pre.c"; then
+    if ! preprocess "$src" "$obj" "$tmp/pre.c"; then
         problems="$problems, something the preprocessor cannot read again"
     else
         grep -v '^# [0-9]' "$tmp/pre.c" >"$tmp/lines.c"
         tr '\n' ' ' <"$tmp/lines.c" |
             sed -E 's/([])A-Za-z0-9_][[:space:]]*)(__asm__|__asm|asm)[[:space:]]*\(([[:space:]]*"[A-Za-z0-9_.@]*")+[[:space:]]*\)/\1/g
-                    s/"([^"\\]|\\.)*"//g; s/'\''([^'\''\\]|\\.)*'\''//g' >"$tmp/code"
+                    s/"([^"\\]|\\.)*"|'\''([^'\''\\]|\\.)*'\''//g' >"$tmp/code"
         grep -qE '(^|[^A-Za-z0-9_])(__)?asm(__)?($|[^A-Za-z0-9_])' "$tmp/code" && problems="$problems, assembly (asm)"
         attributes=$(grep -oE '(^|[^A-Za-z0-9_])(__)?(section|alias|weakref|ifunc|symver|target_clones)(__)?[[:space:]]*\(' \
             "$tmp/code" | tr -cd 'a-z_\n' | sed 's/^_*//; s/_*$//' | sort -u | tr '\n' ' ')
