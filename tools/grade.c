@@ -29,8 +29,8 @@
  *
  * Limits: every run is a session of its own (no controlling terminal to
  * type into), sealed (seal.h: no network to ask a server for answers, no
- * memory made executable to run a copy of the compiled reference in) and
- * has its own folder (HOME, TMPDIR; the working folder
+ * memory made executable to run a copy of the compiled reference in, no
+ * IPC object that would outlive it) and has its own folder (HOME, TMPDIR; the working folder
  * with --user), removed after it, at most --memory MB of memory (1024) and
  * files of 64 MB; the whole grading stops starting tests after --budget
  * seconds (3600), and the tests not run fail, said so.
@@ -243,6 +243,7 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
         if (kind == RUN_STUDENT) {
             struct rlimit procs = {256, 256};
             setrlimit(RLIMIT_NPROC, &procs); /* threads count too */
+            scratch_private_ipc();           /* no System V or POSIX IPC (scratch.h) */
             if (setgroups(0, NULL) != 0 || setgid(user_gid) != 0 || setuid(user_uid) != 0 || setuid(0) == 0) {
                 fprintf(stderr, "grade: cannot become the tests' user\n");
                 _exit(127);

@@ -3,9 +3,10 @@
  * Every run of a graded test gets a folder of its own (its working folder,
  * HOME and TMPDIR), removed after it; with a user of its own (--user), the
  * files that user left in the world-writable folders (/tmp, /var/tmp,
- * /dev/shm, /run/lock) go too, so nothing carries from one test to the next or stays
- * after grading.  Removal never follows a link and never leaves the
- * folder's file system.
+ * /dev/shm, /run/lock, /dev/mqueue) go too, and its System V shared memory,
+ * message queues and semaphores, so nothing carries from one test to the
+ * next or stays after grading.  Removal never follows a link and never
+ * leaves the folder's file system, and reaches folders at any depth.
  */
 #ifndef RT_TOOLS_SCRATCH_H
 #define RT_TOOLS_SCRATCH_H
@@ -16,7 +17,16 @@
 int scratch_remove(const char *path);
 
 /* Removes every file and folder owned by uid below /tmp, /var/tmp,
- * /dev/shm and /run/lock (the user's processes must be gone). */
+ * /dev/shm, /run/lock and /dev/mqueue, and uid's System V IPC objects (the
+ * user's processes must be gone). */
 void scratch_remove_owned(uid_t uid);
+
+/* In a test's process, as root, before it becomes the tests' user: an IPC
+ * namespace of its own, in which no shared memory, message queue, semaphore
+ * or POSIX queue can be made (such memory would sit outside RLIMIT_AS, and
+ * what is made dies with the namespace).  -1 where the system allows no new
+ * namespace (a container without CAP_SYS_ADMIN): scratch_remove_owned then
+ * removes them after the run. */
+int scratch_private_ipc(void);
 
 #endif

@@ -70,6 +70,11 @@ int seal(void)
         IF_BITS(SHM_EXEC, 0, 1),
         REFUSE(EACCES),
         ALLOW,
+        IF_EQUAL(SYS_shmget, 3, 0), /* no System V or POSIX IPC object made */
+        IF_EQUAL(SYS_msgget, 2, 0),
+        IF_EQUAL(SYS_semget, 1, 0),
+        IF_EQUAL(SYS_mq_open, 0, 1),
+        REFUSE(EACCES),
         IF_EQUAL(SYS_personality, 0, 4), /* only asked, never set (READ_IMPLIES_EXEC) */
         ARG(0),
         IF_EQUAL(0xffffffff, 0, 1),

@@ -15,6 +15,10 @@
  *     PROT_EXEC still works, as the loader maps the libraries so: a file of
  *     those bytes, or a write through /proc/self/mem, is not refused
  *     (docs/instructor-guide.md, "What the grader guarantees");
+ *   - no System V shared memory, message queue or semaphore and no POSIX
+ *     message queue is made (shmget, msgget, semget, mq_open fail, EACCES):
+ *     no test needs them, such memory sits outside RLIMIT_AS, and they
+ *     would outlive the test (scratch.h removes any all the same);
  *   - a system call of another ABI than the machine's own (32-bit calls on
  *     x86-64) kills the process.
  * Files, threads and pipes work as before.
