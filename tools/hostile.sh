@@ -9,14 +9,18 @@
 # _fail and _cmocka_run_group_tests, a table of the suite's published inputs,
 # the compiled reference re-emitted as assembly, and the same hidden from
 # the check for assembly: after a #line naming a system header, under an #if
-# on a flag of the compile's own, in a section attribute's name; a correct
+# on a flag of the compile's own, in a section attribute's name, between two
+# character constants '"' (whose quotes a removal of strings first would pair
+# with the assembly's), under an #if on the compile's own output file (which
+# a preprocessing of the check's own had opened already); a correct
 # lambert called through a static indirect function; the compiled
 # reference's bytes copied into memory made executable at run time; and one
 # the grader's own
 # design invites: running the reference's suite to write the records), a
 # symlink tree with a
 # newline in a folder's name aimed at the grader's grade.conf, and the
-# resource attacks (memory, files left in HOME, /tmp and /run/lock, bytes that are not
+# resource attacks (memory, files left in HOME, /tmp and /run/lock, folders deeper than PATH_MAX,
+# System V and POSIX IPC objects, bytes that are not
 # UTF-8, a test that never ends), escape sequences for the terminal, a line typed into the terminal the
 # grading runs in (graded in one, for that), answers asked of a server
 # over the network, besides the correct solution, a correct
@@ -78,7 +82,7 @@ make_submission() {
     empty) ;;
     table) awk -v t="$work/table.inc" '$0 == "TABLE" { while ((getline l < t) > 0) print l; next } { print }' \
         "$here/table.c.in" >"$sub/lambert.c" ;;
-    asm_reference | line_asm | ansi_asm | section_asm)
+    asm_reference | line_asm | ansi_asm | section_asm | quote_asm | hasinc_asm)
         (cd "$work" && rm -rf ar && mkdir ar && cd ar && ar x "$reference_lib" lambert.o) &&
             "$here/asm-from-object.sh" "$work/ar/lambert.o" >"$work/asm.c" || return 1
         case $name in
@@ -86,6 +90,17 @@ make_submission() {
         line_asm) { echo '#line 1 "/usr/include/stdio.h"'; cat "$work/asm.c"; } >"$sub/lambert.c" ;;
         ansi_asm) { echo '#ifdef __STRICT_ANSI__'; cat "$work/asm.c"; echo '#endif'; } >"$sub/lambert.c" ;;
         section_asm) awk -f "$here/section-from-asm.awk" "$work/asm.c" >"$sub/lambert.c" ;;
+        quote_asm) { echo '#include "05_lambert/lambert.h"'
+            echo "__attribute__((unused)) static const char open_quote = '\"';"
+            sed '1d; s/^    "lambert:\\n"$/&\n    ".byte 0x90\\n"/' "$work/asm.c"
+            echo "__attribute__((unused)) static const char close_quote = '\"';"; } >"$sub/lambert.c" ;;
+        hasinc_asm) { echo '#include "05_lambert/lambert.h"'
+            echo '#if __has_include("../../out/object.o") /* the check: cc -E has opened its output already */'
+            echo 'color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)'
+            echo '{ (void)k_d, (void)point, (void)n, (void)light; return color_make(0, 0, 0); }'
+            echo '#else'
+            sed '1d; s/^    "lambert:\\n"$/&\n    ".byte 0x90\\n"/' "$work/asm.c"
+            echo '#endif'; } >"$sub/lambert.c" ;;
         esac ;;
     copy)
         (cd "$work" && rm -rf ar && mkdir ar && cd ar && ar x "$reference_lib" lambert.o) &&
@@ -109,7 +124,7 @@ make_submission() {
 # NAME EXPECTED_SCORE: each case and what it must give (the score of 14 points).
 cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
 asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 copy:0 exec_reference:0 symlink:0 memory:0 litter:0
-bad_utf8:0 escape:0 tty:0 oracle:0 hang:0"
+bad_utf8:0 escape:0 tty:0 oracle:0 hang:0 quote_asm:0 hasinc_asm:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -166,8 +181,10 @@ sys.exit(1)' || problem "oracle: its server does not answer"
         [ -n "$got" ] && [ "$got" -le 1024 ] || problem "memory: the test took ${got:-?} MiB (limit 1024)" ;;
     litter)
         grep -q "litter: found" "$json" && problem "litter: a test found files an earlier test left"
-        left=$(find /tmp /var/tmp /dev/shm /run/lock -xdev -user "$user" 2>/dev/null | head -n 5)
-        [ -z "$left" ] || problem "litter: files of $user left after grading: $left" ;;
+        left=$(find /tmp /var/tmp /dev/shm /run/lock /dev/mqueue -xdev -user "$user" 2>/dev/null | head -n 5)
+        [ -z "$left" ] || problem "litter: files of $user left after grading: $left"
+        ipc=$(ipcs -c 2>/dev/null | awk -v u="$user" '$3 == u || $5 == u' | head -n 3)
+        [ -z "$ipc" ] || problem "litter: System V IPC of $user left after grading: $ipc" ;;
     hang)
         grep -q "time budget" "$work/$name.out" || problem "hang: the time budget did not stop the grading"
         [ "$took" -le 90 ] || problem "hang: grading took ${took}s" ;;
