@@ -13,8 +13,10 @@
 #     .dtors, .preinit_array, .init, .fini sections);
 #   - no assembly (asm, __asm__ after preprocessing, which also rules out
 #     .incbin) in the file as its compile saw it (with COMPILE_AS, the very
-#     text the object was compiled from, tools/compile-as.sh; else the file
-#     preprocessed again, $CC $CPPFLAGS, all the compile's flags); nor any text
+#     text the object was compiled from, tools/compile-as.sh, and no #APP in
+#     the assembly the compiler made of it; else the file preprocessed again,
+#     $CC $CPPFLAGS, all the compile's flags), no unterminated character or
+#     string literal (which would hide what follows from the check); nor any text
 #     the compiler hands the assembler as it is, which would be assembly all
 #     the same: the attributes that name a section or a symbol (section,
 #     alias, weakref, ifunc, symver, target_clones; a newline in a section's
@@ -163,14 +165,25 @@ for file in "$@"; do
     # `) __asm__ ("" "name")`, no code);
     # and what hands the assembler a text as it is.  The file compiled, so what it
     # includes is there.
+    # Compiled as COMPILE_AS: an asm statement or block, however the source hides it, is in the
+    # assembly the compiler made (GCC marks each #APP); a C library's renaming is not.
+    if [ -n "${COMPILE_AS:-}" ] && ! { [ -f "${obj%.o}.s" ] && ! grep -q '^[[:space:]]*#APP' "${obj%.o}.s"; }; then
+        problems="$problems, assembly (asm)"
+    fi
     if ! preprocess "$src" "$obj" "$tmp/pre.c"; then
         problems="$problems, something the preprocessor cannot read again"
     else
         grep -v '^# [0-9]' "$tmp/pre.c" >"$tmp/lines.c"
+        # In preprocessed text every literal lies on one line: a quote left on a line once its strings
+        # and characters are removed opens none (a lone ' in a #pragma, which the compiler only warns
+        # of), and would pair with a quote lines away in the joined text below, hiding what lies between.
+        sed -E 's/"([^"\\]|\\.)*"|'\''([^'\''\\]|\\.)*'\''//g' "$tmp/lines.c" | grep -q "['\"]" &&
+            problems="$problems, an unterminated character or string literal (what follows it would be hidden)"
         tr '\n' ' ' <"$tmp/lines.c" |
             sed -E 's/([])A-Za-z0-9_][[:space:]]*)(__asm__|__asm|asm)[[:space:]]*\(([[:space:]]*"[A-Za-z0-9_.@]*")+[[:space:]]*\)/\1/g
                     s/"([^"\\]|\\.)*"|'\''([^'\''\\]|\\.)*'\''//g' >"$tmp/code"
-        grep -qE '(^|[^A-Za-z0-9_])(__)?asm(__)?($|[^A-Za-z0-9_])' "$tmp/code" && problems="$problems, assembly (asm)"
+        [[ $problems == *"assembly (asm)"* ]] || ! grep -qE '(^|[^A-Za-z0-9_])(__)?asm(__)?($|[^A-Za-z0-9_])' \
+            "$tmp/code" || problems="$problems, assembly (asm)"
         attributes=$(grep -oE '(^|[^A-Za-z0-9_])(__)?(section|alias|weakref|ifunc|symver|target_clones)(__)?[[:space:]]*\(' \
             "$tmp/code" | tr -cd 'a-z_\n' | sed 's/^_*//; s/_*$//' | sort -u | tr '\n' ' ')
         [ -n "$attributes" ] &&

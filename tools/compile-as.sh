@@ -8,8 +8,8 @@
 # /tmp that USER may read, the compiler runs there as USER (setpriv), with
 # the same relative paths, so its messages read as usual, and with a time
 # limit (an #include of /dev/zero would never end).  OBJECT, and the text
-# it was compiled from (OBJECT's name with .i), are then copied into place by
-# the caller's user.
+# and the assembly it was made from (OBJECT's name with .i and .s), are then
+# copied into place by the caller's user.
 set -u
 user=${1:?usage: compile-as.sh USER OBJECT SOURCE COMPILER ARGS...}
 object=${2:?} source=${3:?}
@@ -20,15 +20,17 @@ find common chapters tests -name '*.h' -exec cp --parents {} "$tmp/" \; || exit 
 cp --parents "$source" "$tmp/" || exit 1
 mkdir "$tmp/out" && chown "$user" "$tmp/out" || exit 1
 chmod -R a+rX "$tmp" || exit 1
-# The file is preprocessed once, and compiled from that text: check-exercise.sh reads the same text
-# (OBJECT's .i, beside it), so that no #if can show the check another file than the compiler (an
-# __has_include of an output that one run has opened and the other not yet).
+# The file is preprocessed once, compiled from that text into assembly, and assembled: check-exercise.sh
+# reads the same text and the same assembly (OBJECT's .i and .s, beside it), so that no #if can show the
+# check another file than the compiler (an __has_include of an output that one run has opened and the
+# other not yet), and an asm statement shows in the assembly (#APP) however the source hides it.
 as_user() {
     (cd "$tmp" && timeout -k 5 120 setpriv --reuid="$user" --regid="$(id -g "$user")" --clear-groups --reset-env -- \
         "$@")
 }
-as_user "$@" -E "$source" -o out/object.i && as_user "$@" -c out/object.i -o out/object.o
+as_user "$@" -E "$source" -o out/object.i && as_user "$@" -S out/object.i -o out/object.s &&
+    as_user "$@" -c out/object.s -o out/object.o
 status=$?
 [ "$status" = 124 ] && echo "$source: the compiler took more than 120 s and was stopped" >&2
 [ "$status" = 0 ] || exit "$status"
-cp "$tmp/out/object.i" "${object%.o}.i" && cp "$tmp/out/object.o" "$object"
+cp "$tmp/out/object.i" "${object%.o}.i" && cp "$tmp/out/object.s" "${object%.o}.s" && cp "$tmp/out/object.o" "$object"
