@@ -12,7 +12,9 @@
 # on a flag of the compile's own, in a section attribute's name, between two
 # character constants '"' (whose quotes a removal of strings first would pair
 # with the assembly's), under an #if on the compile's own output file (which
-# a preprocessing of the check's own had opened already); a correct
+# a preprocessing of the check's own had opened already), between two lone
+# quotes in pragmas (which the compiler only warns of); an asm statement in a
+# correct lambert, written as the C library renames a declaration; a correct
 # lambert called through a static indirect function; the compiled
 # reference's bytes copied into memory made executable at run time; and one
 # the grader's own
@@ -82,7 +84,7 @@ make_submission() {
     empty) ;;
     table) awk -v t="$work/table.inc" '$0 == "TABLE" { while ((getline l < t) > 0) print l; next } { print }' \
         "$here/table.c.in" >"$sub/lambert.c" ;;
-    asm_reference | line_asm | ansi_asm | section_asm | quote_asm | hasinc_asm)
+    asm_reference | line_asm | ansi_asm | section_asm | quote_asm | hasinc_asm | pragma_quote_asm | pragma_quote_nop)
         (cd "$work" && rm -rf ar && mkdir ar && cd ar && ar x "$reference_lib" lambert.o) &&
             "$here/asm-from-object.sh" "$work/ar/lambert.o" >"$work/asm.c" || return 1
         case $name in
@@ -94,6 +96,14 @@ make_submission() {
             echo "__attribute__((unused)) static const char open_quote = '\"';"
             sed '1d; s/^    "lambert:\\n"$/&\n    ".byte 0x90\\n"/' "$work/asm.c"
             echo "__attribute__((unused)) static const char close_quote = '\"';"; } >"$sub/lambert.c" ;;
+        pragma_quote_asm) { echo '#include "05_lambert/lambert.h"'
+            echo "#pragma hide '"
+            sed '1d' "$work/asm.c"
+            echo "#pragma hide '"; } >"$sub/lambert.c" ;;
+        pragma_quote_nop) { echo '#include "05_lambert/lambert.h"'
+            echo "_Pragma(\"hide '\")"
+            sed '1d; s/^    "lambert:\\n"$/&\n    ".byte 0x90\\n"/' "$work/asm.c"
+            echo "_Pragma(\"hide '\")"; } >"$sub/lambert.c" ;;
         hasinc_asm) { echo '#include "05_lambert/lambert.h"'
             echo '#if __has_include("../../out/object.o") /* the check: cc -E has opened its output already */'
             echo 'color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)'
@@ -102,6 +112,8 @@ make_submission() {
             sed '1d; s/^    "lambert:\\n"$/&\n    ".byte 0x90\\n"/' "$work/asm.c"
             echo '#endif'; } >"$sub/lambert.c" ;;
         esac ;;
+    asm_statement) sed 's/^{$/{\n    if (light->intensity.r < 0) __asm__("cpuid");/' "$repo/solutions/05_lambert/lambert.c" \
+        >"$sub/lambert.c" ;;
     copy)
         (cd "$work" && rm -rf ar && mkdir ar && cd ar && ar x "$reference_lib" lambert.o) &&
             "$here/bytes-from-object.sh" "$work/ar/lambert.o" >"$work/bytes.txt" || return 1
@@ -124,7 +136,8 @@ make_submission() {
 # NAME EXPECTED_SCORE: each case and what it must give (the score of 14 points).
 cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
 asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 copy:0 exec_reference:0 symlink:0 memory:0 litter:0
-bad_utf8:0 escape:0 tty:0 oracle:0 hang:0 quote_asm:0 hasinc_asm:0"
+bad_utf8:0 escape:0 tty:0 oracle:0 hang:0 quote_asm:0 hasinc_asm:0 pragma_quote_asm:0 pragma_quote_nop:0
+asm_statement:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
