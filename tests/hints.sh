@@ -959,6 +959,43 @@ plant "hint: the stop rule at x's boundary" 11_grid grid_march.c \
 plant "hint: the stop rule with x's slack" 11_grid grid_march.c \
     's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[a] - slack[0])|' \
     test_stop_rule "" "the stop rule with another axis's slack"
+# Survivors of a mutation campaign, each now caught: an empty shadow segment taken for blocked; no ambient
+# without lights; r^2 expanded (cancels far away); an epsilon on Cramer's M; a glass ray skipped for a small
+# weight; bilinear's floor through an int; the entry's t0 from one axis; inv_d = 0 tested as d = 0; a fixed
+# epsilon for the entry's and the stop rule's slack; a mirror ray's window that ends at 1e30.
+plant "hint: an empty shadow segment blocks" 06_shadows shadow.c \
+    's|return t_max > 0 \&\& tr->closest_hit|return !(t_max > 0) \|\| tr->closest_hit|' \
+    test_light_on_a_surface "" "holds no surface"
+plant "hint: no ambient without lights" 07_blinn_phong shade_phong.c \
+    's|^    color result = tr->desc->ambient;|    color result = tr->desc->n_lights == 0 ? color_make(0, 0, 0) : tr->desc->ambient;|' \
+    test_ambient_and_lights_behind "" "an early return for no lights"
+plant "hint: the specular r^2 expanded" 07_blinn_phong phong.c \
+    's|real r2 = vec3_length_squared(to_light);|real r2 = vec3_dot(light->position, light->position) - 2 * vec3_dot(light->position, point) + vec3_dot(point, point);|' \
+    test_half_vector "" "which cancels far from"
+plant "hint: an epsilon on M relative to the data" 03_triangle triangle.c \
+    's|if (M == 0 \|\| !isfinite(M))|if (real_abs(M) <= (real)1e-12 * vec3_length(a_b) * vec3_length(a_c) * vec3_length(r.d) \|\| !isfinite(M))|' \
+    test_grazing_rays "" "an epsilon on M"
+plant "hint: a glass ray skipped for a small weight" 09_refraction shade_glass.c \
+    's|if (e.R > 0) /\* R L_reflected \*/|if (e.R > (real)1e-3 \|\| !e.transmits)|' \
+    test_glass_weights "" "a threshold of shade_glass's own"
+plant "hint: bilinear's floor through an int" 10_interpolation texture.c \
+    's|(long long)fx, img->width);|(int)fx, img->width);|; s|(long long)fx + 1, img->width);|(int)fx + 1, img->width);|' \
+    test_bilinear "" "an int conversion of floor\(x\) is undefined"
+plant "hint: the entry's t0 from x's crossing alone" 11_grid grid_march.c \
+    's|\*t0 = real_fmax(\*t0, near);|*t0 = a == 0 ? near : real_fmax(*t0, near);|' \
+    test_march_counts "" "behind the origin or before t_min"
+plant "hint: the entry tests d_a = 0 for inv_d_a = 0" 11_grid grid_march.c \
+    's|if (inv_d\[a\] == 0) {|if (vec3_axis(r.d, a) == 0) {|' \
+    test_dda_cells "" "not d_a == 0"
+plant "hint: the entry with a fixed epsilon for the slack" 11_grid grid_march.c \
+    's|real near = real_fmin(t_lo, t_hi) - slack\[a\], far = real_fmax(t_lo, t_hi) + slack\[a\];|real near = real_fmin(t_lo, t_hi) - (real)1e-9, far = real_fmax(t_lo, t_hi) + (real)1e-9; (void)slack;|' \
+    test_dda_cells "" "enter with a slack of its own"
+plant "hint: the stop rule with a fixed epsilon for the slack" 11_grid grid_march.c \
+    's|if (s.best_t <= m.next\[a\] - slack\[a\])|if (s.best_t <= m.next[a] - (real)1e-9)|' \
+    test_stop_rule "" "the stop rule with a slack of its own"
+plant "hint: the mirror ray's window ends at 1e30" 08_mirrors mirror.c \
+    's|return trace(\&next, mirror, 0, REAL_INFINITY, depth + 1, rays);|return trace(\&next, mirror, 0, (real)1e30, depth + 1, rays);|' \
+    test_mirror_ray_reaches_probe "" "no large number of one's own for infinity"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"

@@ -525,6 +525,31 @@ static void test_grazing_rays(void **state)
             ray r = {vec3_sub(x, vec3_scale(d, 2)), d};
             expect_hit(&tilted, r, both[k], 2, (real)0.3, (real)0.4, TOL / s);
         }
+    /* Grazing by far less, with exact data: flat's triangle moved to z = 0, the ray from (-5.75, 2.5, s) along
+     * (8, 0, -s), s = 2^-20 .. 2^-100 (normal in both builds), meets the plane at t = 1 in (2.25, 2.5, 0), beta =
+     * gamma = 1/4.  Every determinant is a small multiple of s, exact (M = -19 s), so the hit is exact however
+     * small s is: M is tiny only because the ray is nearly parallel, and the system still has one solution. */
+    const triangle low = {{1, 1, 0}, {5, 2, 0}, {2, 6, 0}};
+    for (int e = 20; e <= 100; e += 20) {
+        const real s = (real)ldexp(1, -e);
+        const ray r = {{(real)-5.75, (real)2.5, s}, {8, 0, -s}};
+        const char *in = describe("cramer(%s), window (0, inf), the ray 2^-%d above the plane and as steep",
+                                  describe_input(&low, r), e);
+        triangle_hit h = UNWRITTEN_HIT;
+        assert_true_why(triangle_cramer(&low, r, 0, REAL_INFINITY, &h),
+                        "%s\n    expected true, a hit at t 1, beta 0.25, gamma 0.25 (exact data: M = -19 s)\n"
+                        "    got      false\n    likely mistake: an epsilon on M (absolute, or relative to the "
+                        "lengths of a - b, a - c and d): a ray nearly parallel to the plane makes M small, yet the "
+                        "system has one finite solution; return false only when M == 0 or M is not finite (README, "
+                        "\"The intersection: three equations, three unknowns\")",
+                        in);
+        assert_true_why(h.t == 1 && h.beta == (real)0.25 && h.gamma == (real)0.25,
+                        "%s\n    expected t 1, beta 0.25, gamma 0.25 exactly (every determinant is exact)\n"
+                        "    got      %s\n    likely mistake: %s",
+                        in, describe_got(true, h, false), unwritten(h) ? not_written
+                        : "t = det[a - b, a - c, a - p] / M, beta = det[a - p, a - c, d] / M, gamma = det[a - b, "
+                          "a - p, d] / M");
+    }
 }
 
 /* The window is open: t_min < t < t_max.  The exact setup hits at t = 1 exactly. */

@@ -111,6 +111,32 @@ static void test_light_on_a_surface(void **state)
     scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = -1, .center = c, .radius = 1});
     check_blocked(&desc, vec3_add(c, towards), false, "the light exactly on a sphere, facing the point");
     scene_free(&desc);
+
+    /* A light 1.5e-3 above the floor point, in front of it.  With the fixed policy the segment starts 1e-3 up
+     * and ends 1e-3 before the light: it ends before it starts (t_max = 1 - 1e-3 / 5e-4 = -1), and no surface
+     * lies on an empty segment, so nothing blocks the light; the other policies' offsets are far smaller
+     * (t_max > 0) and the segment above the floor is clear.  With every policy: not blocked. */
+    scene_init(&desc);
+    add_floor(&desc);
+    const vec3 near_light = vec3_add(spot, vec3_make(0, (real)1.5e-3, 0));
+    shading_point sp;
+    shading_view *view = shade_at(&desc, eye, spot, &sp);
+    for (int p = 0; p < 3; p++) {
+        real t_end;
+        (void)spawn_ray_to(&sp, near_light, policies[p], &t_end);
+        uint64_t rays[RAY_KINDS] = {0};
+        const bool blocked = light_blocked(&view->tr, &sp, near_light, policies[p], rays);
+        assert_true_why(!blocked,
+                        "light_blocked(policy %s, a light 1.5e-3 above the floor point, in front of it: spawn_ray_to's "
+                        "segment ends at t_max = %g)\n    expected not blocked\n    got      blocked\n"
+                        "    likely mistake: %s",
+                        eps_policy_names[p], (double)t_end,
+                        t_end > 0 ? "the window must be the segment (0, t_max) that spawn_ray_to gives"
+                                  : "a segment that ends before it starts (t_max <= 0) holds no surface: the light "
+                                    "is not blocked (return false, as for a clear segment)");
+    }
+    shading_release(view);
+    scene_free(&desc);
 }
 
 /* A light behind the surface, as its shading normal sees it, is blocked by

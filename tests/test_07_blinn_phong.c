@@ -91,6 +91,24 @@ static void test_half_vector(void **state)
                      "blinn_phong_specular(k_s.r = 0.9, p = 12.5, I = 10, r = 2.5, course form, n . h = cos(10 "
                      "degrees)): red",
                      "k_s max(0, n . h)^p I / r^2 for a fractional p", sp, sizeof sp / sizeof sp[0]);
+    /* Far from the origin: the point about 4.7e4 away, n = +y, the light at point + (1.5, 2, 0) (r = 2.5) and the
+     * viewer at the mirror of l, (-0.6, 0.8, 0).  Adding 1.5 and 2 to the point's coordinates changes no
+     * exponent, so the light's position is exact and light.pos - point = (1.5, 2, 0), r^2 = 6.25 come out exact
+     * in both builds; h is n up to a rounding, and the term is k_s I / r^2 = 1.44 for every p, within
+     * TOL(1.44) p.  r^2 taken as |L|^2 - 2 L . x + |x|^2 instead subtracts rounded numbers of 2.3e9: an error
+     * of 1e-6 here (1.5e-7 of r^2) in double, as large as r^2 in float. */
+    const vec3 far_point = {(real)15964.471884897, (real)-31769.995687733, (real)31263.587313206}, up = {0, 1, 0};
+    const scene_light far_light = {.position = vec3_add(far_point, vec3_make((real)1.5, 2, 0)),
+                                   .intensity = {10, 10, 10}};
+    const color far_L = blinn_phong_specular(k_s, (real)p, far_point, up, vec3_make((real)-0.6, (real)0.8, 0),
+                                             &far_light, PHONG_COURSE);
+    assert_close_why(specular_of(1, p), far_L.r, TOL(1.44) * p,
+                     "blinn_phong_specular(k_s.r = 0.9, p = 20, I = 10, r = 2.5, course form, the viewer at the mirror "
+                     "of the light, the point (15964.47, -31770.00, 31263.59)): red",
+                     "k_s max(0, n . h)^p I / r^2 with l and r^2 from the difference light.pos - point, which is "
+                     "exact here; r^2 = |light.pos - point|^2 (not |L|^2 - 2 L . x + |x|^2, which cancels far from "
+                     "the origin)",
+                     NULL, 0);
 }
 
 /* ---- the specular term ------------------------------------------------------------------- */
@@ -396,11 +414,20 @@ static void test_ambient_and_lights_behind(void **state)
     (void)state;
     scene desc;
     make_floor_scene(&desc, SHADER_LAMBERTIAN);
-    scene_add_light(&desc, (scene_light){.position = vec3_add(spot, vec3_make(1, -2, 0)), .intensity = {50, 50, 50}});
-    scene_add_light(&desc, (scene_light){.position = vec3_add(spot, vec3_make(-1, -0.5, 2)), .intensity = {9, 9, 9}});
     uint64_t rays[RAY_KINDS] = {0};
     shading_point sp;
+    /* No light in the scene at all: the ambient term alone, exactly, and no shadow ray. */
     color c = shade_spot(&desc, PHONG_LECTURE, rays, &sp);
+    const suspect s0[] = {{0, "no ambient when the scene has no light: an early return for no lights (or a result "
+                              "that starts at 0) skips it; start from result = ambient, then add each light"}};
+    assert_close_why(desc.ambient.r, c.r, 0, describe("shade_phong: ambient (0.02, 0.03, 0.04), no light in the scene"),
+                     "result = ambient, plus each light of the scene (none here)", s0, 1);
+    assert_close(desc.ambient.g, c.g, 0);
+    assert_close(desc.ambient.b, c.b, 0);
+    check_shadow_rays(0, rays[RAY_SHADOW], "shade_phong: no light in the scene", "no light, no shadow ray");
+    scene_add_light(&desc, (scene_light){.position = vec3_add(spot, vec3_make(1, -2, 0)), .intensity = {50, 50, 50}});
+    scene_add_light(&desc, (scene_light){.position = vec3_add(spot, vec3_make(-1, -0.5, 2)), .intensity = {9, 9, 9}});
+    c = shade_spot(&desc, PHONG_LECTURE, rays, &sp);
     /* Nothing is added to the ambient term: it comes back exactly. */
     const suspect sa[] = {{0, "ambient missing: start from result = ambient"},
                           {desc.ambient.r * desc.shaders[0].diffuse_color.r,

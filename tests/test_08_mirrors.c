@@ -242,6 +242,27 @@ static void test_mirror_ray_reaches_probe(void **state)
     assert_close(0.5 * 0.4, L.g, TOL(1));
     assert_close(0.25 * 0.6, L.b, TOL(1));
     scene_free(&desc);
+
+    /* The mirror ray's window is (0, infinity): a probe as far away as a sky, centred 1e32 r away (radius 1e31,
+     * hit near t = 1e32 with this d), is reached as the near one was; a window that ends at a large number of
+     * one's own (1e30 for infinity) loses it, and the eye sees the background. */
+    scene_init(&desc);
+    desc.back_color = color_make((real)0.9, (real)0.9, (real)0.9);
+    add_plane(&desc, add_shader(&desc, SHADER_LAMBERTIAN, color_make(0, 0, 0), k_m), far_point, n, 10);
+    probe_shader =
+        add_shader(&desc, SHADER_LAMBERTIAN, color_make((real)0.2, (real)0.4, (real)0.6), color_make(0, 0, 0));
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_SPHERE, .shader = probe_shader,
+                                             .center = vec3_add(far_point, vec3_scale(r, (real)1e32)),
+                                             .radius = (real)1e31});
+    uint64_t sky_rays[RAY_KINDS] = {0};
+    (void)trace_one(&desc, &knobs, (ray){eye, d}, sky_rays);
+    check_count(1, probe.n, "an eye ray onto a tilted mirror, a probe sphere of radius 1e31 1e32 away in its mirror "
+                            "direction",
+                "rays that reached the probe",
+                "the mirror ray traced over (0, REAL_INFINITY): trace(&next, ray, 0, REAL_INFINITY, depth + 1, rays), "
+                "no large number of one's own for infinity");
+    probe_shader = -1;
+    scene_free(&desc);
     mirror_about_shading_normal();
 }
 

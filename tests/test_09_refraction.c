@@ -835,6 +835,33 @@ static void test_glass_weights(void **state)
                  "    likely mistake: a reflected ray traced with R = 0 (it carries nothing)",
                  (int)none[RAY_REFLECTED], (int)none[RAY_REFRACTED]);
     scene_free(&desc);
+    /* index 1.02: R = ((1.02 - 1) / (1.02 + 1))^2, about 1e-4, small but above 0, and --min-weight 0: both rays
+     * are cast, and L = R B (the transmitted ray stays inside, as for index 1.5).  Which weights are too small
+     * is --min-weight's to say (path_next), not a threshold of shade_glass's own. */
+    scene_init(&desc);
+    desc.back_color = color_make((real)0.25, (real)0.5, (real)0.75);
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_BOX, .shader = add_glass(&desc, (real)1.02), .min_pt = lo,
+                                             .max_pt = hi});
+    probe_shader = -1;
+    knobs = knobs_of(1, 0);
+    uint64_t low[RAY_KINDS] = {0};
+    const color L_low = trace_one(&desc, &knobs, (ray){outside, down}, low);
+    const double eta_low = (double)(real)1.02, R_low = pow((eta_low - 1) / (eta_low + 1), 2);
+    if (low[RAY_REFLECTED] != 1 || low[RAY_REFRACTED] != 1)
+        fail_msg("shade_glass, a ray from outside, head on into glass of index 1.02 (R = %.3g), at --min-weight 0\n"
+                 "    expected 1 reflected and 1 refracted ray\n    got      %d and %d\n"
+                 "    likely mistake: a ray skipped because its weight is small (a threshold of shade_glass's own): "
+                 "every ray whose weight (R or 1 - R) is above 0 is traced, and path_next alone refuses the ones "
+                 "below --min-weight",
+                 R_low, (int)low[RAY_REFLECTED], (int)low[RAY_REFRACTED]);
+    /* L = R B: R from the cosines 1 and cos(theta_t) = 1 up to a rounding, B exact: well within TOL(1) */
+    assert_close_why(R_low * B, L_low.g, TOL(1),
+                     describe("shade_glass, a ray from outside, head on into glass of index 1.02 (R = %.3g, the "
+                              "transmitted ray stays inside), background %g, --min-weight 0: L",
+                              R_low, B),
+                     "L = R L_reflected + (1 - R) L_transmitted for every R above 0 (README, \"The glass shader\")",
+                     NULL, 0);
+    scene_free(&desc);
 }
 
 /* ---- whole images ---------------------------------------------------------------------------- */

@@ -703,6 +703,18 @@ static void test_bilinear(void **state)
             expect_bilinear_is(&repeat, at, numbered_colour(x, y), TOL(4),
                                describe("at the centre of texel (%d, %d), that texel alone", x, y));
         }
+    /* Huge coordinates, as test_nearest_quirk reads them: x = u W is held within +-2^40 (texel_coordinate),
+     * beyond an int's range but not a long long's, so floor(x) goes to texel_index as a long long, never
+     * through an int (an int conversion of 2^40 is undefined; x86 gives INT_MIN, which wraps elsewhere).
+     * Each x and y here is a whole number, so s = t = 0 and the blend is one texel alone, exactly. */
+    const char *const huge = "x = u W and y = (1 - v) H are whole numbers beyond an int's range (within 2^40): s = t "
+                             "= 0, the one texel texel_index gives for floor(x), floor(y) as long longs (an int "
+                             "conversion of floor(x) is undefined there)";
+    /* 5 x 2^33 = 0 mod 5 */
+    expect_bilinear_is(&repeat, (mesh_uv){(real)0x1p33, 1}, numbered_colour(0, 0), TOL(4),
+                       describe("repeated, u = 2^33 (x = 5 x 2^33 = 0 mod 5), v = 1: texel (0, 0); %s", huge));
+    expect_bilinear_is(&tex, (mesh_uv){(real)1e30, (real)-1e30}, numbered_colour(TW - 1, TH - 1), TOL(4),
+                       describe("clamped, u = 1e30, v = -1e30: the last column, the last row; %s", huge));
 }
 
 /* Bilinear on a texture of random texels (so that each mistake gives its

@@ -236,6 +236,21 @@ static void test_resolution(void **state)
      * s = (1 / 8)^(1/3) = 0.5 (to a rounding), round(4) = 4 and round(0.5) = 0 or 1 (either way one cell);
      * s for 0.1 cells, 0.232, would give round(1.86) = 2 */
     expect_resolution((const double[3]){8, 1, 1}, 2, 0.05, 1L << 20, (const int[3]){4, 1, 1});
+    /* A scene shrunk by 1e-300 (tests/extremes/tiny-scale.xml): the product of its extents, 8e-900, underflows
+     * to 0 and lambda N over it is infinite.  Whatever finite s the first try settles for, every count is
+     * round(2e-300 s) held to 1 .. 2^20 and the cap is then met in finitely many shrinks; an s left infinite
+     * holds every axis at 2^20 cells, 2^60 in all, above the cap after every shrink (infinity times 0.9 is
+     * infinity): grid_resolution never returns, and the test ends only by the grader's timeout. */
+    int tiny[3] = {0, 0, 0};
+    grid_resolution((const double[3]){2e-300, 2e-300, 2e-300}, 1000, 8, 1L << 20, tiny);
+    const double tiny_cells = (double)tiny[0] * tiny[1] * tiny[2];
+    assert_true_why(tiny[0] >= 1 && tiny[1] >= 1 && tiny[2] >= 1 && tiny[0] <= 1 << 20 && tiny[1] <= 1 << 20 &&
+                        tiny[2] <= 1 << 20 && tiny_cells <= (double)(1L << 20),
+                    "grid_resolution(extent 2e-300 x 2e-300 x 2e-300, 1000 surfaces, density 8, cap 2^20: the "
+                    "extents' product underflows to 0)\n    expected 1 to 2^20 cells an axis, at most 2^20 in all\n"
+                    "    got      %d x %d x %d\n    likely mistake: s infinite (cells over a volume of 0) is held to "
+                    "a finite bound, as n_a is held to 1 .. 2^20: an infinite s gives no counts",
+                    tiny[0], tiny[1], tiny[2]);
     rng_state = 18;
     surface_list list;
     surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
@@ -299,6 +314,43 @@ static void test_resolution(void **state)
  * only at the grid's end when nothing is hit: a long thin triangle lying
  * along a row of cells, which the ray passes without hitting it, is tested
  * in each of the 10 cells, the corner spheres in the end cells. */
+/* The march starts where the window does: in the row of 10 cells of
+ * test_march_counts, a ray along +x from x = 5.5 (inside the grid, in cell
+ * 5) and a ray from x = -1 with the window (6.5, infinity), which starts at
+ * x = 5.5 too, each visit cells 5 to 9 only, 5 cells.  An entry that takes
+ * *t0 from one axis's crossing alone (x's, the first: *t0 = near_x instead
+ * of max(*t0, near_x)) starts both marches where the ray's line enters the
+ * box, x = lo_x, behind the origin or before t_min: the answer is the same,
+ * but every cell before is visited for nothing. */
+static void expect_march_from_window_start(const grid *g)
+{
+    const long first = (long)((5.5 - (double)g->lo.x) / (double)g->cell.x), cells = g->n[0] - first;
+    const struct {
+        ray r;
+        real t_min;
+        const char *what;
+    } cases[] = {
+        {{{(real)5.5, (real)0.6, (real)0.45}, {1, 0, 0}}, 0, "from x = 5.5, inside the grid, along +x"},
+        {{{-1, (real)0.6, (real)0.45}, {1, 0, 0}}, (real)6.5, "from x = -1 along +x, the window (6.5, infinity)"},
+    };
+    for (int k = 0; k < 2; k++) {
+        grid_counts counts = {0, 0};
+        hit_record hit;
+        const bool found = grid_intersect_counted(g, cases[k].r, cases[k].t_min, REAL_INFINITY, &hit, &counts);
+        if (found || counts.cells != (uint64_t)cells)
+            fail_msg("grid_intersect_counted(ray %s, through a row of %d cells, missing everything: the window "
+                     "starts at x = 5.5, in cell %ld)\n    expected no hit, %ld cells visited (cells %ld to %d)\n"
+                     "    got      %s, %llu cells\n    likely mistake: %s",
+                     cases[k].what, g->n[0], first, cells, first, g->n[0] - 1, found_what(found, &hit),
+                     (unsigned long long)counts.cells,
+                     counts.cells > (uint64_t)cells
+                         ? "enter: the window narrowed with *t0 = max(*t0, near_a) on every axis, the first too: a "
+                           "*t0 taken from one axis's crossing alone starts the march where the ray's line enters "
+                           "the box, behind the origin or before t_min, and visits those cells for nothing"
+                         : "the march ends before the grid's end with no hit in the window (dda_step, the stop rule)");
+    }
+}
+
 static void test_march_counts(void **state)
 {
     (void)state;
@@ -315,6 +367,7 @@ static void test_march_counts(void **state)
     expect_no_hit(&g, r, "through a row of 10 cells", &counts);
     assert_int_equal(10, counts.cells);
     assert_int_equal(10 + 8, counts.tests); /* the sliver in all 10 cells, a sphere at each corner */
+    expect_march_from_window_start(&g);
     grid_free(&g);
     surface_list_free(&list);
 }
@@ -548,9 +601,17 @@ static void expect_entry_edges(const grid *g)
     const real reach_yz =
         box_ray_slack((box){g->lo, g->hi}, (ray){{mid_x, g->hi.y + 2, g->hi.z - 2}, {0, -1, 1}}, inv_d, slack);
     const ray past_edge_yz = {{mid_x, g->hi.y + 2 + reach_yz / 2, g->hi.z - 2}, {0, -1, 1}};
-    for (int k = 0; k < 4; k++) {
-        const ray r = k == 3 ? past_edge_yz : k == 2 ? farther : k ? past_edge : on_face;
-        const char *where = k == 3   ? "passing the box's edge y = hi_y, z = hi_z outside by half the reach of the "
+    /* past_edge from 1.8e6 farther back along the ray (in double; in float the same ray as past_edge): the reach
+     * grows with the origin's distance, to 6.4e-9, above any fixed epsilon an entry might take for the slack */
+    const real back = REAL_EPSILON < (real)1e-10 ? (real)4e-10 / REAL_EPSILON : 0;
+    const ray towards_edge = {{g->hi.x - 2 - back, g->hi.y + 2 + back, 0}, {1, -1, 0}};
+    const real reach_far = box_ray_slack((box){g->lo, g->hi}, towards_edge, inv_d, slack);
+    const ray past_edge_far = {{g->hi.x - 2 - back, g->hi.y + 2 + back + reach_far / 2, 0}, {1, -1, 0}};
+    for (int k = 0; k < 5; k++) {
+        const ray r = k == 4 ? past_edge_far : k == 3 ? past_edge_yz : k == 2 ? farther : k ? past_edge : on_face;
+        const char *where = k == 4   ? "from far away, passing the box's edge x = hi_x, y = hi_y outside by half the "
+                                       "reach of the slack"
+                            : k == 3 ? "passing the box's edge y = hi_y, z = hi_z outside by half the reach of the "
                                        "slack, with d_x = 0"
                             : k == 2 ? "passing the box's edge x = hi_x, y = hi_y outside by 1.5 times the reach of "
                                        "the slack, within the two slacks together"
@@ -562,7 +623,10 @@ static void expect_entry_edges(const grid *g)
             fail_msg("grid_intersect_counted(ray from (%.17g, %.17g, %.17g) along (%g, %g, %g), %s)\n    expected "
                      "at least 1 cell visited\n    got      0\n    likely mistake: %s",
                      (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)r.d.x, (double)r.d.y, (double)r.d.z, where,
-                     k == 3 ? "enter: each axis's crossings widened by that axis's own slack_a (here slack_x is 0, "
+                     k == 4 ? "enter with a slack of its own (a fixed epsilon): the crossings round by more the "
+                              "farther the ray's origin is (box_ray_slack's reach, here 6.4e-9 in double); widen each "
+                              "by its axis's slack_a"
+                     : k == 3 ? "enter: each axis's crossings widened by that axis's own slack_a (here slack_x is 0, "
                               "d_x = 0; slack_y and slack_z are the reach), not by another axis's"
                      : k == 2 ? "enter with the slack on one side only: the entering t is lowered by slack_a AND the "
                               "leaving t raised by slack_a, so that the gap between two axes' crossings is covered by "
@@ -573,6 +637,33 @@ static void expect_entry_edges(const grid *g)
                             : "enter: a ray with d_a = 0 on a face of axis a is inside that slab: lo_a <= p_a <= hi_a, "
                               "the faces included");
     }
+}
+
+/* A ray along x from outside the box, through its middle, whose d_y is the
+ * smallest positive subnormal of the build: 1 / d_y overflows, so
+ * box_ray_slack gives inv_d_y = 0 (and slack_y = 0), and the ray is never
+ * counted as crossing a plane of y.  It visits every cell of its row along
+ * x, n_x of them, as a ray with d_y = 0 does.  An entry that tests d_y == 0
+ * instead of inv_d_y == 0 takes the crossings (lo_y - p_y) inv_d_y = 0 and
+ * (hi_y - p_y) inv_d_y = 0 for y's slab: the window closes at t = 0, before
+ * the ray reaches the box, and it visits no cell. */
+static void expect_entry_tiny_component(const grid *g)
+{
+    const real tiny = real_next_up((real)0);
+    const vec3 p = {g->lo.x - 5, (g->lo.y + g->hi.y) / 2 + (real)0.1, (g->lo.z + g->hi.z) / 2 + (real)0.1};
+    const ray r = {p, {1, tiny, 0}};
+    grid_counts counts = {0, 0};
+    expect_no_hit(g, r, "through the middle of the grid's box along x, d_y the smallest subnormal", &counts);
+    if (counts.cells != (uint64_t)g->n[0])
+        fail_msg("grid_intersect_counted(ray from (%.17g, %.17g, %.17g) along (1, %g, 0), d_y the smallest positive "
+                 "subnormal, through the middle of the grid's box along x)\n    expected %d cells visited (its row "
+                 "along x)\n    got      %llu\n    likely mistake: %s",
+                 (double)r.p.x, (double)r.p.y, (double)r.p.z, (double)tiny, g->n[0], (unsigned long long)counts.cells,
+                 counts.cells == 0 ? "enter: the axis that is never crossed is the one with inv_d_a == 0, as "
+                                     "box_ray_slack gives it (also when d_a is so tiny that 1 / d_a overflows), not "
+                                     "d_a == 0: with inv_d_a = 0 both crossings (lo_a - p_a) inv_d_a and (hi_a - "
+                                     "p_a) inv_d_a are 0 and the window closes at t = 0"
+                                   : "the march along x visits each cell of the row once (dda_step, the stop rule)");
 }
 
 /* The entry: a ray that crosses each slab, but never all three at once,
@@ -611,6 +702,7 @@ static void expect_entry(const grid *g)
                  (double)down.d.z, cells);
     expect_march_cells(g, down, "ray with every component negative", cells);
     expect_entry_edges(g);
+    expect_entry_tiny_component(g);
 }
 
 /* dda_step: the cells a ray visits, counted against the plane crossings:
@@ -888,10 +980,13 @@ static void column_of_cells(surface_list *list)
  * Within the slack the hit may be the rounding of a point beyond the
  * boundary: the march visits cell 4 too, 5 cells; a rule without the slack,
  * or with it added, stops after 4.  Along y, x's slack is 0 (d_x = 0): a
- * rule that takes x's slack for every axis stops after 4 too. */
-static void expect_stop_slack(const grid *g, int a)
+ * rule that takes x's slack for every axis stops after 4 too.  The ray starts
+ * at `from` along the axis: at -1, or far away, where slack_a (which grows
+ * with the origin's distance) is larger than a fixed epsilon that a rule might
+ * take for it. */
+static void expect_stop_slack(const grid *g, int a, real from)
 {
-    const ray r = {on_axis(a, -1, (real)0.5, (real)0.5), on_axis(a, 1, 0, 0)};
+    const ray r = {on_axis(a, from, (real)0.5, (real)0.5), on_axis(a, 1, 0, 0)};
     real inv_d[3], slack[3];
     (void)box_ray_slack((box){g->lo, g->hi}, r, inv_d, slack);
     const real next = (vec3_axis(g->lo, a) + 4 * vec3_axis(g->cell, a) - vec3_axis(r.p, a)) * inv_d[a]; /* crossing() */
@@ -911,17 +1006,20 @@ static void expect_stop_slack(const grid *g, int a)
     bool found = march_in_row(&list, g, a, r, 8, &want, &got, &counts);
     if (!same_hit(true, &want, found, &got) || counts.cells != 5)
         fail_msg(
-            "grid_intersect_counted(ray along +%c through a row of %d cells: a triangle hit at t = %.17g, half the "
-            "slack %.3g before cell 3's far boundary at t = %.17g)\n    expected the triangle at t = %.17g, 5 "
-            "cells visited (cell 4 too)\n    got      %s, %llu cells\n    likely mistake: %s",
-            "xy"[a], g -> n[a], (double)want.t, (double)slack[a], (double)next, (double)want.t, found_what(found, &got),
-            (unsigned long long)counts.cells,
+            "grid_intersect_counted(ray along +%c from %g through a row of %d cells: a triangle hit at t = %.17g, "
+            "half the slack %.3g before cell 3's far boundary at t = %.17g)\n    expected the triangle at t = %.17g, "
+            "5 cells visited (cell 4 too)\n    got      %s, %llu cells\n    likely mistake: %s",
+            "xy"[a], (double)from, g -> n[a], (double)want.t, (double)slack[a], (double)next, (double)want.t,
+            found_what(found, &got), (unsigned long long)counts.cells,
             counts.cells == 4 ? a ? "the stop rule with another axis's slack: the slack is slack_a of the axis a "
                                     "the cell ends by (here y; x's is 0 along y); or without the slack (or with "
                                     "it added): stop only once t_best <= next_a - slack_a"
-                                  : "the stop rule without the slack (or with it added): a hit within the slack "
-                                    "of the boundary may be a point beyond it, rounded; stop only once t_best <= "
-                                    "next_a - slack_a"
+                              : from < -1 ? "the stop rule with a slack of its own (a fixed epsilon) for slack_x: "
+                                            "the rounding of t grows with the ray's origin (box_ray_slack), here "
+                                            "far away; stop only once t_best <= next_a - slack_a"
+                                          : "the stop rule without the slack (or with it added): a hit within the "
+                                            "slack of the boundary may be a point beyond it, rounded; stop only "
+                                            "once t_best <= next_a - slack_a"
                               : "the march ends in the cell that holds the best hit, allowing for the slack: "
                                 "t_best <= next_a - slack_a");
 }
@@ -966,7 +1064,10 @@ static void test_stop_rule(void **state)
                                         "(stop once t_best <= the cell's far boundary)"
                                       : "the march ends before the hit's cell");
     expect_stop_in_this_cell(&g);
-    expect_stop_slack(&g, 0);
+    expect_stop_slack(&g, 0, -1);
+    /* from far away along the row (1.8e6 in double; -1 in float, the case above): slack_x grows with the
+     * origin's distance, to 6.4e-9 here, still far below a cell, and the hit lies half of it before the boundary */
+    expect_stop_slack(&g, 0, -real_fmax(1, (real)4e-10 / REAL_EPSILON));
     /* the same along y, in a column of cells of 10 surfaces (two stand-ins inside) */
     surface_list column;
     column_of_cells(&column);
@@ -974,7 +1075,7 @@ static void test_stop_rule(void **state)
     surface_list_add_sphere(&column, (sphere){{(real)0.5, 6, (real)0.5}, (real)0.001}, 0, 9);
     grid g_column;
     build_grid(&g_column, &column, grid_default_options());
-    expect_stop_slack(&g_column, 1);
+    expect_stop_slack(&g_column, 1, -1);
     grid_free(&g_column);
     surface_list_free(&column);
     /* the window ends at x = 2 (t = 3), before any surface: no hit, and the march ends in the window's last
