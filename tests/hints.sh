@@ -996,6 +996,9 @@ plant "hint: the stop rule with a fixed epsilon for the slack" 11_grid grid_marc
 plant "hint: the mirror ray's window ends at 1e30" 08_mirrors mirror.c \
     's|return trace(\&next, mirror, 0, REAL_INFINITY, depth + 1, rays);|return trace(\&next, mirror, 0, (real)1e30, depth + 1, rays);|' \
     test_mirror_ray_reaches_probe "" "no large number of one's own for infinity"
+plant "hint: the resolution from the extents' own product" 11_grid grid_build.c \
+    's|e\[a\] = extent\[a\] > 0 ? extent\[a\] / largest : 0;|e[a] = extent[a]; (void)largest;|' \
+    test_resolution "" "take them relative to the largest"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"

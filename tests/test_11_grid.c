@@ -223,6 +223,22 @@ static void test_resolution(void **state)
     (void)state;
     /* 8000 cells for a box 8 x 2 x 4 (volume 64): s = 125^(1/3) = 5 cells per unit, 40 x 10 x 20 */
     expect_resolution((const double[3]){8, 2, 4}, 1000, 8, 1L << 20, (const int[3]){40, 10, 20});
+    /* The same box 2^1000 and 2^-990 times as large: its extents relative to the largest are again exactly 1,
+     * 1/4 and 1/2, and so are the counts.  The extents' own product, 2^3003 or 2^-2967, overflows to infinity
+     * (s = 0: one cell an axis) or underflows to 0 (s infinite, held at 1e300: counts set by that bound). */
+    for (int k = 0; k < 2; k++) {
+        const double scale = k ? 0x1p1000 : 0x1p-990, box[3] = {8 * scale, 2 * scale, 4 * scale};
+        int n[3];
+        grid_resolution(box, 1000, 8, 1L << 20, n);
+        if (n[0] != 40 || n[1] != 10 || n[2] != 20)
+            fail_msg("grid_resolution(extent %g x %g x %g, 1000 surfaces, density 8, cap 2^20: the box above, "
+                     "%s)\n    expected 40 x 10 x 20 cells\n    got      %d x %d x %d\n    likely mistake: %s",
+                     box[0], box[1], box[2], k ? "2^1000 times as large" : "2^-990 times as large", n[0], n[1], n[2],
+                     "s from the product of the extents themselves, which overflows to infinity at this scale "
+                     "(s = 0) or underflows to 0 (s infinite): the counts of a box do not depend on its size; take "
+                     "the extents relative to the largest, e_a / e_max (README, \"The grid's box and resolution\", "
+                     "step 1)");
+    }
     /* flat in y: x and z share 1024 cells, s = (1024 / 32)^(1/2) = sqrt 32 = 5.657: round(45.25) = 45 and
      * round(22.63) = 23 */
     expect_resolution((const double[3]){8, 0, 4}, 512, 2, 1L << 20, (const int[3]){45, 1, 23});

@@ -10,20 +10,25 @@ void grid_resolution(const double extent[3], long surfaces, double density, long
     /* EXERCISE resolution: the cells along each axis from the density (README, "The grid's box and
      * resolution"): about density x surfaces cells in all, cubic cells over the box's spanned axes,
      * never more than max_cells; an axis of zero extent gets one cell. */
-    double volume = 1;
+    /* the extents relative to the largest, e_a / e_max: the same counts, and a product that neither
+     * overflows (a scene 1e103 across) nor underflows (one 1e-300 across) */
+    const double largest = fmax(fmax(extent[0], extent[1]), extent[2]);
+    double e[3], volume = 1;
     int spanned = 0;
-    for (int a = 0; a < 3; a++)
+    for (int a = 0; a < 3; a++) {
+        e[a] = extent[a] > 0 ? extent[a] / largest : 0;
         if (extent[a] > 0) {
-            volume *= extent[a];
+            volume *= e[a];
             spanned++;
         }
+    }
     double wanted = fmin(density * (double)surfaces, (double)max_cells);
-    /* s cells per unit of length on every spanned axis: the product of extent_a s is `wanted` */
+    /* s cells per largest extent on every spanned axis: the product of e_a s is `wanted` */
     double s = spanned ? fmin(pow(fmax(wanted, 1) / volume, 1.0 / spanned), 1e300) : 0;
     for (;;) {
         double cells = 1;
         for (int a = 0; a < 3; a++) {
-            double na = extent[a] > 0 ? fmin(fmax(round(extent[a] * s), 1), 1 << 20) : 1;
+            double na = extent[a] > 0 ? fmin(fmax(round(e[a] * s), 1), 1 << 20) : 1;
             n[a] = (int)na;
             cells *= na;
         }
