@@ -323,6 +323,7 @@ grade:
 FLOAT_GRADE_DIR = $(BUILD)-float/grade-$(SOURCE)
 grade-run: $(BUILD)/tools/grade
 	@mkdir -p $(GRADE_DIR) $(FLOAT_GRADE_DIR); set -- ; missing=""; notes=$(GRADE_DIR)/notes.txt; \
+	export GRADE_DEADLINE=$$(( $$(date +%s) + $(GRADE_BUDGET) )); \
 	{ $(if $(GRADE_NOTES),cat $(GRADE_NOTES);) true; } >$$notes; \
 	for c in $(GRADE_CHAPTERS); do \
 	    if ! $(MAKE) --no-print-directory -s $(BUILD)/tests/test_$$c >$(GRADE_DIR)/reference_$$c.log 2>&1; then \
@@ -333,7 +334,7 @@ grade-run: $(BUILD)/tools/grade
 	    rm -f $(GRADE_DIR)/test_$$c $(BUILD)/obj/chapters/$$c/*.o; \
 	    $(MAKE) --no-print-directory -s WERROR= COMPILE_AS=$(GRADE_USER) $(GRADE_DIR)/test_$$c >$(GRADE_DIR)/test_$$c.log 2>&1 || { \
 	        echo "$$c: the files of $(SOURCE)/$$c/ do not compile:"; \
-	        tail -n 20 $(GRADE_DIR)/test_$$c.log | LC_ALL=C tr '\000-\010\013-\037\177' '?'; }; \
+	        tail -n 20 $(GRADE_DIR)/test_$$c.log | $(BUILD)/tools/grade --clean; }; \
 	    $(call grade_check,$(GRADE_DIR)/test_$$c,$(if $(HANDOUT),reference/double/lib$$c.a,$(BUILD)/obj/solutions/$$c),$(BUILD),print); \
 	    float=- float_log=- float_ref=-; \
 	    if [ "$(GRADE_FLOAT)" = 1 ]; then \
@@ -350,8 +351,9 @@ grade-run: $(BUILD)/tools/grade
 	done; \
 	$(foreach c,$(GRADE_CHAPTERS),echo "$(call grade_links,$c)" >>$$notes;) \
 	echo "grading $(SOURCE)/ ($(TIMEOUT) s per test$(if $(filter 1,$(GRADE_FLOAT)),; the float build is reported, not scored))"; \
-	cat $$notes; \
-	$(BUILD)/tools/grade --timeout $(TIMEOUT) --budget $(GRADE_BUDGET) --memory $(GRADE_MEMORY) \
+	$(BUILD)/tools/grade --clean <$$notes; \
+	left=$$(( GRADE_DEADLINE - $$(date +%s) )); [ "$$left" -ge 1 ] || left=1; \
+	$(BUILD)/tools/grade --timeout $(TIMEOUT) --budget $$left --memory $(GRADE_MEMORY) \
 	    --json $(GRADE_JSON) --junit $(GRADE_JUNIT) --notes $$notes \
 	    $(if $(GRADE_USER),--user $(GRADE_USER)) \
 	    $(if $(filter-out chapters,$(SOURCE)),--require-full) "$$@" || exit 1; \
@@ -369,7 +371,7 @@ grade_check = $(if $(filter chapters,$(SOURCE)),if [ -x $1 ]; then \
 	        COMPILE_AS=$(GRADE_USER) \
 	        tools/check-exercise.sh $2 chapters/$$c $3/obj/chapters/$$c $$ex >$1.check || { rm -f $1; \
 	        grep refused $1.check >>$1.log; }; \
-	    $(if $4,LC_ALL=C tr '\000-\010\013-\037\177' '?' <$1.check;) fi,true)
+	    $(if $4,$(BUILD)/tools/grade --clean <$1.check;) fi,true)
 
 # The grader: tools/grade.c, the verdict (judge.c), the scratch folders (scratch.c), the tests' seal (seal.c).
 $(BUILD)/tools/grade: $(addprefix $(BUILD)/obj/tools/,grade.o judge.o scratch.o seal.o)

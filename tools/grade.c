@@ -3,6 +3,7 @@
  *     grade [--timeout SECONDS] [--budget SECONDS] [--memory MB] [--json FILE]
  *           [--junit FILE] [--notes FILE] [--user NAME] [--require-full]
  *           CHAPTER SUITE REFERENCE BUILDLOG FLOAT FLOATLOG FLOATREFERENCE ...
+ *     grade --clean    (standard input to output, for a terminal: see print_clean)
  *
  * Seven words per chapter: the chapter's name; SUITE, the test binary built
  * with the student's files of that chapter (missing when they did not
@@ -52,6 +53,7 @@
  * --require-full also 1 when any point was lost.
  */
 #define _DEFAULT_SOURCE /* setgroups */
+#include <dirent.h>
 #include <errno.h>
 #include <fcntl.h>
 #include <grp.h>
@@ -124,6 +126,16 @@ static void buf_add(buffer *b, const char *data, size_t n)
 
 static void buf_str(buffer *b, const char *s) { buf_add(b, s, strlen(s)); }
 
+/* Adds what a test or the compiler wrote: a NUL byte becomes '?', as
+ * everything after it would be lost to the grader, which reads the text as
+ * a string (its own note of why a test failed, which it adds after). */
+static void buf_add_text(buffer *b, char *data, size_t n)
+{
+    for (char *z = memchr(data, '\0', n); z; z = memchr(z, '\0', n - (size_t)(z - data)))
+        *z = '?';
+    buf_add(b, data, n);
+}
+
 static char *buf_take(buffer *b)
 {
     if (!b->s)
@@ -167,21 +179,67 @@ static void make_seed(char seed[17])
         snprintf(seed + 2 * k, 3, "%02x", bytes[k]);
 }
 
+/* Whether a process of the tests' user is still there (/proc/PID/status:
+ * any of its real, effective, saved or file-system user ids). */
+static int user_processes_left(void)
+{
+    DIR *proc = opendir("/proc");
+    if (!proc)
+        return 0;
+    int found = 0;
+    struct dirent *e;
+    while (!found && (e = readdir(proc)) != NULL) {
+        if (e->d_name[0] < '1' || e->d_name[0] > '9')
+            continue;
+        char path[300], line[256];
+        snprintf(path, sizeof path, "/proc/%s/status", e->d_name);
+        FILE *f = fopen(path, "r");
+        if (!f)
+            continue;
+        while (fgets(line, sizeof line, f)) {
+            long id[4] = {-1, -1, -1, -1};
+            if (strncmp(line, "Uid:", 4) == 0 &&
+                sscanf(line + 4, "%ld %ld %ld %ld", &id[0], &id[1], &id[2], &id[3]) == 4)
+                for (int k = 0; k < 4; k++)
+                    found |= id[k] == (long)user_uid;
+        }
+        fclose(f);
+    }
+    closedir(proc);
+    return found;
+}
+
 /* Kills every process of the tests' user: a child that becomes that user
  * sends SIGKILL to every process it may signal (kill(-1)), which are exactly
- * that user's processes, whatever session or process group they moved to. */
+ * that user's processes, whatever session or process group they moved to.
+ * That child is itself a process of the user, which the others may signal
+ * between its setuid and its kill: it blocks every signal it can, one
+ * stopped (SIGSTOP) is killed, not waited for, and the rounds go on until
+ * no process of the user is left (the test's orphans, which come to the
+ * grader, reaped) or two seconds have passed. */
 static void kill_user_processes(void)
 {
-    for (int round = 0; round < 2; round++) {
+    const double until = now() + 2;
+    do {
         pid_t pid = fork();
         if (pid == 0) {
+            sigset_t all; /* only SIGSTOP and SIGKILL, which cannot be blocked, reach it */
+            sigfillset(&all);
+            sigprocmask(SIG_BLOCK, &all, NULL);
             if (setgid(user_gid) == 0 && setuid(user_uid) == 0)
                 kill(-1, SIGKILL);
             _exit(0);
         }
-        if (pid > 0)
-            waitpid(pid, NULL, 0);
-    }
+        int status;
+        while (pid > 0 && waitpid(pid, &status, WUNTRACED) == pid && WIFSTOPPED(status))
+            kill(pid, SIGKILL); /* stopped by a process of the user: it may have killed nothing */
+        while (waitpid(-1, NULL, WNOHANG) > 0) /* the test's orphans, killed: no zombie counts */
+            ;
+        if (!user_processes_left())
+            return;
+        struct timespec pause = {0, 1000 * 1000};
+        nanosleep(&pause, NULL);
+    } while (now() < until);
 }
 
 /* Waits for the test's processes that were left without a parent and came
@@ -211,7 +269,7 @@ static int drain(int fd, buffer *b, size_t limit)
         size_t keep = b->len < limit ? limit - b->len : 0;
         if ((size_t)n > keep)
             b->truncated = 1;
-        buf_add(b, chunk, (size_t)n < keep ? (size_t)n : keep);
+        buf_add_text(b, chunk, (size_t)n < keep ? (size_t)n : keep);
         return 1;
     }
     return n < 0 && errno == EINTR;
@@ -244,6 +302,7 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
             struct rlimit procs = {256, 256};
             setrlimit(RLIMIT_NPROC, &procs); /* threads count too */
             scratch_private_ipc();           /* no System V or POSIX IPC (scratch.h) */
+            scratch_private_shm();           /* a /dev/shm of its own, of 64 MB */
             if (setgroups(0, NULL) != 0 || setgid(user_gid) != 0 || setuid(user_uid) != 0 || setuid(0) == 0) {
                 fprintf(stderr, "grade: cannot become the tests' user\n");
                 _exit(127);
@@ -413,7 +472,7 @@ static char *read_file(const char *path)
         char chunk[4096];
         size_t n;
         while ((n = fread(chunk, 1, sizeof chunk, f)) > 0 && b.len < OUTPUT_LIMIT)
-            buf_add(&b, chunk, n);
+            buf_add_text(&b, chunk, n);
         fclose(f);
     }
     return buf_take(&b);
@@ -884,6 +943,15 @@ static double number(const char *text, double max)
 
 int main(int argc, char **argv)
 {
+    if (argc == 2 && strcmp(argv[1], "--clean") == 0) { /* what the Makefile shows of a submission's */
+        buffer in = {0};
+        char chunk[4096];
+        size_t n;
+        while ((n = fread(chunk, 1, sizeof chunk, stdin)) > 0)
+            buf_add_text(&in, chunk, n);
+        print_clean(buf_take(&in), in.len);
+        return fflush(stdout) != 0;
+    }
     double timeout = 10, budget = 3600;
     const char *json = NULL, *junit = NULL, *notes = NULL, *user = NULL;
     int require_full = 0, k = 1;

@@ -25,7 +25,13 @@
 # System V and POSIX IPC objects, bytes that are not
 # UTF-8, a test that never ends), escape sequences for the terminal, a line typed into the terminal the
 # grading runs in (graded in one, for that), answers asked of a server
-# over the network, besides the correct solution, a correct
+# over the network; and what outlives or outgrows a test or the compile: a
+# process that stops the grader's clean-up (SIGSTOP to every process of its
+# user), keys in the user's keyrings, memory in /dev/shm and in a tmpfs of a
+# user namespace of its own, a NUL byte that hid the grader's notes, C1
+# terminal controls in a compile error and a file's name, an assembler that
+# never ends, a preprocessor that takes 9 GB, 60000 files in the submission,
+# 100000 global symbols; besides the correct solution, a correct
 # one written otherwise and an empty submission.  Prints one line per
 # submission (score, expected, what was checked) and fails naming every
 # expectation that does not hold (HOSTILE_ONLY="table hang" runs only
@@ -64,7 +70,8 @@ make --no-print-directory -s build/hostile/record_05_lambert >"$work/record.log"
 root=$work/ag
 mkdir -p "$root/source" "$root/submission"
 (cd "$root/source" && unzip -q "$zip") || exit 1
-secret="grader-secret-$(od -An -N8 -tx1 /dev/urandom | tr -d ' \n')"
+run_id=$(od -An -N8 -tx1 /dev/urandom | tr -d ' \n')
+secret="grader-secret-$run_id"
 echo "# $secret" >>"$root/source/grade.conf"
 echo "setting up $zip under $root (setup.sh)"
 if ! (cd "$root/source" && AUTOGRADER_ROOT=$root AUTOGRADER_NO_APT=1 bash setup.sh >"$work/setup.log" 2>&1); then
@@ -129,6 +136,15 @@ make_submission() {
         cp "$here/alternative.c" "$sub/x
 05_lambert/lambert.c"
         ln -s "$root/source/grade.conf" "$sub/05_lambert/lambert.c" ;;
+    c1_escape) # CSI (U+009B) as UTF-8, the bytes C2 9B
+        sed "s/C1 CLEAR/$(printf '\302\2332J')/; s/C1 HOME/$(printf '\302\233H')/; s/C1 HIDE/$(printf '\302\2338m')/" \
+            "$here/c1_escape.c.in" >"$sub/lambert.c"
+        printf 'x\n' >"$sub/$(printf '\302\2332J\302\233H05_lambert 14 of 14\302\2338m').c" ;;
+    many_files) # a correct lambert.c among 60000 other files (a zip of some 6 MB)
+        cp "$here/alternative.c" "$sub/lambert.c"
+        (cd "$sub" && mkdir junk && cd junk && seq -f 'notes-%05g.txt' 1 60000 | xargs touch) ;;
+    compile_memory) cat "$here/compile_memory.c.in" "$here/alternative.c" >"$sub/lambert.c" ;;
+    keyring) sed "s/\"rt-litter\"/\"rt-litter-$run_id\"/" "$here/keyring.c" >"$sub/lambert.c" ;; # a key of an earlier run may stay
     *) cp "$here/$name.c" "$sub/lambert.c" ;;
     esac
 }
@@ -137,7 +153,7 @@ make_submission() {
 cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
 asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 copy:0 exec_reference:0 symlink:0 memory:0 litter:0
 bad_utf8:0 escape:0 tty:0 oracle:0 hang:0 quote_asm:0 hasinc_asm:0 pragma_quote_asm:0 pragma_quote_nop:0
-asm_statement:0"
+asm_statement:0 stop_killer:0 keyring:0 nul:0 c1_escape:0 compile_hang:0 compile_memory:0 many_files:14 many_symbols:0 shm_memory:0 userns_memory:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -187,9 +203,11 @@ sys.exit(1)' || problem "oracle: its server does not answer"
     local_ifunc) grep -q "refused: it holds an indirect function" "$work/$name.out" ||
         problem "local_ifunc: the static indirect function not refused" ;;
     escape) ! grep -q "$(printf '\033')" "$work/$name.out" || problem "escape: an escape sequence reached the terminal" ;;
+    c1_escape) ! LC_ALL=C grep -q "$(printf '\302')[$(printf '\200-\237')]" "$work/$name.out" ||
+        problem "c1_escape: a C1 control (CSI) reached the terminal: $(LC_ALL=C grep -c "$(printf '\302\233')" "$work/$name.out") lines" ;;
     tty) grep -q "after grading the terminal gave: nothing" "$work/$name.out" ||
         problem "tty: a line typed into the grading's terminal: $(grep -a 'terminal gave' "$work/$name.out")" ;;
-    memory)
+    memory | shm_memory | userns_memory)
         got=$(grep -ho 'memory: got [0-9]* MiB' "$json" | awk '{ print $3 }' | sort -n | tail -n 1)
         [ -n "$got" ] && [ "$got" -le 1024 ] || problem "memory: the test took ${got:-?} MiB (limit 1024)" ;;
     litter)
@@ -198,6 +216,27 @@ sys.exit(1)' || problem "oracle: its server does not answer"
         [ -z "$left" ] || problem "litter: files of $user left after grading: $left"
         ipc=$(ipcs -c 2>/dev/null | awk -v u="$user" '$3 == u || $5 == u' | head -n 3)
         [ -z "$ipc" ] || problem "litter: System V IPC of $user left after grading: $ipc" ;;
+    nul) # every test's output shows why it failed, and its float build's verdict
+        python3 -c 'import json, sys
+t = [x for x in json.load(open(sys.argv[1]))["tests"] if x["max_score"]]
+sys.exit(not all("grade: failed" in x["output"] and "float build (REAL=float)" in x["output"] for x in t))' "$json" ||
+            problem "nul: a test's output in results.json lacks the grader's note" ;;
+    keyring)
+        grep -q "litter: found" "$json" && problem "keyring: a test found a key an earlier test left"
+        left="" # the look below calls keyctl by its x86-64 number
+        [ "$(uname -m)" != x86_64 ] || left=$(setpriv --reuid="$user" --regid="$(id -g "$user")" --clear-groups -- env -i PATH=/usr/bin:/bin python3 -c 'import ctypes, sys
+libc = ctypes.CDLL(None, use_errno=True)
+keyctl = 250  # x86_64: KEYCTL_GET_PERSISTENT 22, KEYCTL_SEARCH 10
+for ring in (-4, -5, libc.syscall(keyctl, 22, -1, -4)):
+    if ring != -1 and libc.syscall(keyctl, 10, ring, b"user", sys.argv[1].encode(), 0) > 0:
+        print(ring)' "rt-litter-$run_id" 2>/dev/null)
+        [ -z "$left" ] || problem "keyring: keys of $user left after grading (keyrings $left)" ;;
+    many_symbols) [ "$took" -le 60 ] || problem "many_symbols: grading took ${took}s (a budget of 40 s)"
+        grep -q "refused: it holds a definition of v00000, .*, and 99995 more definitions" "$work/$name.out" ||
+            problem "many_symbols: not refused as 100000 definitions" ;;
+    many_files) [ "$took" -le 60 ] || problem "many_files: grading took ${took}s (a budget of 40 s)" ;;
+    compile_hang) [ "$took" -le 90 ] || problem "compile_hang: grading took ${took}s (a budget of 40 s)" ;;
+    stop_killer) [ "$took" -le 60 ] || problem "stop_killer: grading took ${took}s (a stopped clean-up waited for?)" ;;
     hang)
         grep -q "time budget" "$work/$name.out" || problem "hang: the time budget did not stop the grading"
         [ "$took" -le 90 ] || problem "hang: grading took ${took}s" ;;

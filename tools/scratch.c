@@ -9,6 +9,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/ipc.h>
+#include <sys/mount.h>
 #include <sys/msg.h>
 #include <sys/sem.h>
 #include <sys/shm.h>
@@ -126,5 +127,16 @@ int scratch_private_ipc(void)
     write_file("/proc/sys/kernel/msgmni", "0");
     write_file("/proc/sys/kernel/sem", "0 0 0 0");
     write_file("/proc/sys/fs/mqueue/queues_max", "0");
+    return 0;
+}
+
+int scratch_private_shm(void)
+{
+    if (unshare(CLONE_NEWNS) != 0)
+        return -1;
+    /* nothing mounted here reaches the grader's namespace */
+    if (mount(NULL, "/", NULL, MS_REC | MS_PRIVATE, NULL) != 0 ||
+        mount("rt-shm", "/dev/shm", "tmpfs", MS_NOSUID | MS_NODEV | MS_NOEXEC, "size=64m,mode=1777") != 0)
+        return -1;
     return 0;
 }

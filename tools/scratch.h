@@ -29,4 +29,14 @@ void scratch_remove_owned(uid_t uid);
  * removes them after the run. */
 int scratch_private_ipc(void);
 
+/* In a test's process, as root, before it becomes the tests' user: a mount
+ * namespace of its own, where /dev/shm is a tmpfs of its own of at most 64
+ * MB, not executable: files there are held in memory, outside RLIMIT_AS
+ * (two 1024 MB tests could take the machine's memory so, half of it on an
+ * ordinary /dev/shm), and what is left there dies with the namespace.  -1
+ * where the system allows no new namespace (a container without
+ * CAP_SYS_ADMIN, whose /dev/shm is small: 64 MB in Docker): the /dev/shm
+ * of all, which scratch_remove_owned clears after the run. */
+int scratch_private_shm(void);
+
 #endif

@@ -12,6 +12,7 @@
 
 #include <linux/audit.h>
 #include <linux/filter.h>
+#include <linux/sched.h>
 #include <linux/seccomp.h>
 
 #if defined(__x86_64__)
@@ -75,6 +76,20 @@ int seal(void)
         IF_EQUAL(SYS_semget, 1, 0),
         IF_EQUAL(SYS_mq_open, 0, 1),
         REFUSE(EACCES),
+        IF_EQUAL(SYS_add_key, 2, 0), /* no key in the kernel's keyrings, which outlive every process */
+        IF_EQUAL(SYS_request_key, 1, 0),
+        IF_EQUAL(SYS_keyctl, 0, 1),
+        REFUSE(EACCES),
+#ifdef SYS_clone3
+        IF_EQUAL(SYS_clone3, 0, 1), /* its flags lie in memory, out of the filter's sight: the C library then uses clone */
+        REFUSE(ENOSYS),
+#endif
+        IF_EQUAL(SYS_unshare, 1, 0), /* no user namespace, where a test may mount memory of its own */
+        IF_EQUAL(SYS_clone, 0, 4),
+        ARG(0),
+        IF_BITS(CLONE_NEWUSER, 0, 1),
+        REFUSE(EPERM),
+        ALLOW,
         IF_EQUAL(SYS_personality, 0, 4), /* only asked, never set (READ_IMPLIES_EXEC) */
         ARG(0),
         IF_EQUAL(0xffffffff, 0, 1),

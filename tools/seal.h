@@ -19,6 +19,14 @@
  *     message queue is made (shmget, msgget, semget, mq_open fail, EACCES):
  *     no test needs them, such memory sits outside RLIMIT_AS, and they
  *     would outlive the test (scratch.h removes any all the same);
+ *   - no key is kept in the kernel's keyrings (add_key, request_key, keyctl
+ *     fail, EACCES): the user's keyrings outlive every process of the user,
+ *     even the user's deletion, so a key would carry from one test (or
+ *     grading) to the next and stay behind after grading;
+ *   - no user namespace (unshare and clone with CLONE_NEWUSER fail, EPERM,
+ *     and clone3, whose flags the filter cannot read, ENOSYS: the C library
+ *     then uses clone): in one a test may mount a tmpfs, memory outside
+ *     RLIMIT_AS in a mount no clean-up sees (2 GiB a test were taken so);
  *   - a system call of another ABI than the machine's own (32-bit calls on
  *     x86-64) kills the process.
  * Files, threads and pipes work as before.
