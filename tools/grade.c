@@ -216,8 +216,10 @@ static int user_processes_left(void)
  * between its setuid and its kill: it blocks every signal it can, one
  * stopped (SIGSTOP) is killed, not waited for, and the rounds go on until
  * no process of the user is left (the test's orphans, which come to the
- * grader, reaped) or two seconds have passed. */
-static void kill_user_processes(void)
+ * grader, reaped) or two seconds have passed.  0 when some are left:
+ * then nothing of the user's is removed as root, since a process of the user
+ * could swap a folder for a link to elsewhere while root removes. */
+static int kill_user_processes(void)
 {
     const double until = now() + 2;
     do {
@@ -236,10 +238,11 @@ static void kill_user_processes(void)
         while (waitpid(-1, NULL, WNOHANG) > 0) /* the test's orphans, killed: no zombie counts */
             ;
         if (!user_processes_left())
-            return;
+            return 1;
         struct timespec pause = {0, 1000 * 1000};
         nanosleep(&pause, NULL);
     } while (now() < until);
+    return 0;
 }
 
 /* Waits for the test's processes that were left without a parent and came
@@ -425,8 +428,9 @@ static int run(char *const argv[], double timeout, buffer *out, run_kind kind, b
         waitpid(pid, &status, 0);
     }
     kill(-pid, SIGKILL); /* anything the test left running */
+    int stopped = 1;
     if (student && as_user) {
-        kill_user_processes(); /* also what left the process group */
+        stopped = kill_user_processes(); /* also what left the process group */
         reap_orphans();
     }
     /* Read what is left, without waiting for any stray grandchild (nor
@@ -441,10 +445,12 @@ static int run(char *const argv[], double timeout, buffer *out, run_kind kind, b
             ;
         close(ans[0]);
     }
-    if (kind != RUN_TRUSTED) {
+    if (kind != RUN_TRUSTED && stopped) {
         scratch_remove(folder);
         if (student && as_user)
             scratch_remove_owned(user_uid);
+    } else if (!stopped) {
+        buf_str(out, "\ngrade: processes of the tests' user outlived the clean-up; their files were not removed\n");
     }
     if (out->truncated)
         buf_str(out, "\n[output truncated]\n");
@@ -918,7 +924,10 @@ static void become_ready(const char *user)
     as_user = 1;
     user_uid = pw->pw_uid;
     user_gid = pw->pw_gid;
-    kill_user_processes(); /* nothing of that user runs before the tests */
+    if (!kill_user_processes()) { /* nothing of that user runs before the tests */
+        fprintf(stderr, "grade: processes of %s still run and cannot be stopped\n", user);
+        exit(1);
+    }
     scratch_remove_owned(user_uid);
 }
 
