@@ -143,7 +143,7 @@ make_submission() {
     many_files) # a correct lambert.c among 60000 other files (a zip of some 6 MB)
         cp "$here/alternative.c" "$sub/lambert.c"
         (cd "$sub" && mkdir junk && cd junk && seq -f 'notes-%05g.txt' 1 60000 | xargs touch) ;;
-    compile_memory) cat "$here/compile_memory.c.in" "$here/alternative.c" >"$sub/lambert.c" ;;
+    compile_memory | many_symbols) cat "$here/$name.c.in" "$here/alternative.c" >"$sub/lambert.c" ;;
     keyring) sed "s/\"rt-litter\"/\"rt-litter-$run_id\"/" "$here/keyring.c" >"$sub/lambert.c" ;; # a key of an earlier run may stay
     *) cp "$here/$name.c" "$sub/lambert.c" ;;
     esac
