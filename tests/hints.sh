@@ -765,13 +765,13 @@ plant "hint: the resolution without the number of surfaces" 11_grid grid_build.c
     's|fmin(density \* (double)surfaces,|fmin(density + 0 * (double)surfaces,|' \
     test_resolution "" "the number of surfaces left out"
 plant "hint: the resolution by floor" 11_grid grid_build.c \
-    's|fmax(round(extent\[a\] \* s), 1)|fmax(floor(extent[a] * s), 1)|' \
+    's|fmax(round(e\[a\] \* s), 1)|fmax(floor(e[a] * s), 1)|' \
     test_resolution "" "n_a = floor\(e_a s\)"
 plant "hint: the resolution by ceil" 11_grid grid_build.c \
-    's|fmax(round(extent\[a\] \* s), 1)|fmax(ceil(extent[a] * s), 1)|' \
+    's|fmax(round(e\[a\] \* s), 1)|fmax(ceil(e[a] * s), 1)|' \
     test_resolution "" "n_a = ceil\(e_a s\)"
 plant "hint: a spanned axis rounded to 0 cells" 11_grid grid_build.c \
-    's|fmin(fmax(round(extent\[a\] \* s), 1), 1 << 20)|fmin(round(extent[a] * s), 1 << 20)|' \
+    's|fmin(fmax(round(e\[a\] \* s), 1), 1 << 20)|fmin(round(e[a] * s), 1 << 20)|' \
     test_resolution "" "rounds to 0 still gets one cell"
 plant "hint: a flat axis's zero extent in the volume" 11_grid grid_build.c \
     's|if (extent\[a\] > 0) {|if (extent[a] >= 0) {|' \
@@ -872,13 +872,13 @@ plant "hint: the first try from lambda N above the cap" 11_grid grid_build.c \
     's|double wanted = fmin(density \* (double)surfaces, (double)max_cells);|double wanted = density * (double)surfaces + 0 * (double)max_cells;|' \
     test_resolution "" "s for min\(lambda N, C\) cells"
 plant "hint: the cap checked before rounding" 11_grid grid_build.c \
-    's|cells \*= na;|cells *= extent[a] > 0 ? extent[a] * s : 1;|' \
+    's|cells \*= na;|cells *= extent[a] > 0 ? e[a] * s : 1;|' \
     test_resolution "" "shrink s and round again"
 plant "hint: a flat axis with 0 cells" 11_grid grid_build.c \
-    's|fmin(fmax(round(extent\[a\] \* s), 1), 1 << 20) : 1;|fmin(fmax(round(extent[a] * s), 1), 1 << 20) : 0;|' \
+    's|fmin(fmax(round(e\[a\] \* s), 1), 1 << 20) : 1;|fmin(fmax(round(e[a] * s), 1), 1 << 20) : 0;|' \
     test_resolution "" "a flat axis without cells"
 plant "hint: an axis over 2^20 cells" 11_grid grid_build.c \
-    's|fmin(fmax(round(extent\[a\] \* s), 1), 1 << 20)|fmax(round(extent[a] * s), 1)|' \
+    's|fmin(fmax(round(e\[a\] \* s), 1), 1 << 20)|fmax(round(e[a] * s), 1)|' \
     test_resolution "" "an axis over 2\^20 cells"
 # The cell range: the clamps' bounds, the box's sides, where f counts from and in what unit.
 plant "hint: the first cell clamped to n - 1" 11_grid grid_build.c \
@@ -998,7 +998,7 @@ plant "hint: the mirror ray's window ends at 1e30" 08_mirrors mirror.c \
     test_mirror_ray_reaches_probe "" "no large number of one's own for infinity"
 plant "hint: the resolution from the extents' own product" 11_grid grid_build.c \
     's|e\[a\] = extent\[a\] > 0 ? extent\[a\] / largest : 0;|e[a] = extent[a]; (void)largest;|' \
-    test_resolution "" "take them relative to the largest"
+    test_resolution "" "relative to the largest, e_a / e_max"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"

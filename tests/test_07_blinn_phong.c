@@ -419,9 +419,11 @@ static void test_ambient_and_lights_behind(void **state)
     /* No light in the scene at all: the ambient term alone, exactly, and no shadow ray. */
     color c = shade_spot(&desc, PHONG_LECTURE, rays, &sp);
     const suspect s0[] = {{0, "no ambient when the scene has no light: an early return for no lights (or a result "
-                              "that starts at 0) skips it; start from result = ambient, then add each light"}};
+                              "that starts at 0) skips it; start from result = ambient, then add each light"},
+                          {desc.ambient.r * desc.shaders[0].diffuse_color.r,
+                           "ambient times k_d: the course's ambient is a colour added as it is"}};
     assert_close_why(desc.ambient.r, c.r, 0, describe("shade_phong: ambient (0.02, 0.03, 0.04), no light in the scene"),
-                     "result = ambient, plus each light of the scene (none here)", s0, 1);
+                     "result = ambient, plus each light of the scene (none here)", s0, sizeof s0 / sizeof s0[0]);
     assert_close(desc.ambient.g, c.g, 0);
     assert_close(desc.ambient.b, c.b, 0);
     check_shadow_rays(0, rays[RAY_SHADOW], "shade_phong: no light in the scene", "no light, no shadow ray");
