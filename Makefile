@@ -323,7 +323,7 @@ grade:
 FLOAT_GRADE_DIR = $(BUILD)-float/grade-$(SOURCE)
 grade-run: $(BUILD)/tools/grade
 	@mkdir -p $(GRADE_DIR) $(FLOAT_GRADE_DIR); set -- ; missing=""; notes=$(GRADE_DIR)/notes.txt; \
-	export GRADE_DEADLINE=$$(( $$(date +%s) + $(GRADE_BUDGET) )); \
+	export GRADE_DEADLINE=$$(( $$(date +%s) + $$(printf '%.0f' '$(GRADE_BUDGET)') )) GRADE_MEMORY=$(GRADE_MEMORY); \
 	{ $(if $(GRADE_NOTES),cat $(GRADE_NOTES);) true; } >$$notes; \
 	for c in $(GRADE_CHAPTERS); do \
 	    if ! $(MAKE) --no-print-directory -s $(BUILD)/tests/test_$$c >$(GRADE_DIR)/reference_$$c.log 2>&1; then \

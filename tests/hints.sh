@@ -995,7 +995,7 @@ plant "hint: the stop rule with a fixed epsilon for the slack" 11_grid grid_marc
     test_stop_rule "" "the stop rule with a slack of its own"
 plant "hint: the mirror ray's window ends at 1e30" 08_mirrors mirror.c \
     's|return trace(\&next, mirror, 0, REAL_INFINITY, depth + 1, rays);|return trace(\&next, mirror, 0, (real)1e30, depth + 1, rays);|' \
-    test_mirror_ray_reaches_probe "" "no large number of one's own for infinity"
+    test_mirror_ray_reaches_probe "" "not up to a large number of one's own"
 plant "hint: the resolution from the extents' own product" 11_grid grid_build.c \
     's|e\[a\] = extent\[a\] > 0 ? extent\[a\] / largest : 0;|e[a] = extent[a]; (void)largest;|' \
     test_resolution "" "relative to the largest, e_a / e_max"

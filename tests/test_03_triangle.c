@@ -541,7 +541,7 @@ static void test_grazing_rays(void **state)
                         "    got      false\n    likely mistake: an epsilon on M (absolute, or relative to the "
                         "lengths of a - b, a - c and d): a ray nearly parallel to the plane makes M small, yet the "
                         "system has one finite solution; return false only when M == 0 or M is not finite (README, "
-                        "\"The intersection: three equations, three unknowns\")",
+                        "\"Robustness: what M = 0 means, and what not to do about it\")",
                         in);
         assert_true_why(h.t == 1 && h.beta == (real)0.25 && h.gamma == (real)0.25,
                         "%s\n    expected t 1, beta 0.25, gamma 0.25 exactly (every determinant is exact)\n"

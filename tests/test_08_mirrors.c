@@ -259,8 +259,8 @@ static void test_mirror_ray_reaches_probe(void **state)
     check_count(1, probe.n, "an eye ray onto a tilted mirror, a probe sphere of radius 1e31 1e32 away in its mirror "
                             "direction",
                 "rays that reached the probe",
-                "the mirror ray traced over (0, REAL_INFINITY): trace(&next, ray, 0, REAL_INFINITY, depth + 1, rays), "
-                "no large number of one's own for infinity");
+                "the mirror ray goes as far as an eye ray: its window is (0, infinity), not up to a large number "
+                "of one's own (README, \"Where the mirror ray starts\")");
     probe_shader = -1;
     scene_free(&desc);
     mirror_about_shading_normal();

@@ -226,7 +226,7 @@ static void test_resolution(void **state)
     /* 8000 cells for a box 8 x 2 x 4 (volume 64): s = 125^(1/3) = 5 cells per unit, 40 x 10 x 20 */
     expect_resolution((const double[3]){8, 2, 4}, 1000, 8, 1L << 20, (const int[3]){40, 10, 20});
     /* The same box 2^1000 and 2^-990 times as large: its extents relative to the largest are again exactly 1,
-     * 1/4 and 1/2, and so are the counts.  The extents' own product, 2^3003 or 2^-2967, overflows to infinity
+     * 1/4 and 1/2, and so are the counts.  The extents' own product, 2^3006 or 2^-2964, overflows to infinity
      * (s = 0: one cell an axis) or underflows to 0 (s infinite, held at 1e300: counts set by that bound). */
     for (int k = 0; k < 2; k++) {
         const double scale = k ? 0x1p1000 : 0x1p-990, box[3] = {8 * scale, 2 * scale, 4 * scale};

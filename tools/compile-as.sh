@@ -11,7 +11,7 @@
 # when that is less (GRADE_DEADLINE, seconds since the epoch, set by `make
 # grade`: an #include of /dev/zero would never end, nor a macro of the
 # assembler that calls itself twice, 40 deep), and those of a test's run
-# (tools/grade.c) on memory (1024 MB: an #if on a macro that doubles 27
+# (tools/grade.c) on memory (GRADE_MEMORY, 1024 MB: an #if on a macro that doubles 27
 # times holds 9 GB) and on the size of a file (64 MB: the preprocessed text
 # a file makes).  OBJECT, and the text and the assembly it was made from
 # (OBJECT's name with .i and .s), are then copied into place by the
@@ -39,7 +39,7 @@ end=$((start + limit))
 as_user() {
     local left=$((end - $(date +%s)))
     [ "$left" -gt 0 ] || return 124
-    (cd "$tmp" && ulimit -v $((1024 * 1024)) -f $((64 * 1024)) &&
+    (cd "$tmp" && ulimit -v $((${GRADE_MEMORY:-1024} * 1024)) -f $((64 * 1024)) &&
         timeout -k 5 "$left" setpriv --reuid="$user" --regid="$(id -g "$user")" --clear-groups --reset-env -- "$@")
 }
 as_user "$@" -E "$source" -o out/object.i && as_user "$@" -S out/object.i -o out/object.s &&

@@ -185,7 +185,7 @@ static int user_processes_left(void)
 {
     DIR *proc = opendir("/proc");
     if (!proc)
-        return 0;
+        return 1; /* not known: taken as some left, so that nothing is removed as root */
     int found = 0;
     struct dirent *e;
     while (!found && (e = readdir(proc)) != NULL) {
@@ -894,8 +894,14 @@ static char *sandbox_copy(const char *src, int k)
 /* Removes the sandbox and what the tests left in it. */
 static void remove_sandbox(void)
 {
-    if (*sandbox)
-        scratch_remove(sandbox);
+    if (!*sandbox)
+        return;
+    if (as_user && !kill_user_processes()) { /* its run folders are the user's: none of theirs may live */
+        fprintf(stderr, "grade: processes of the tests' user outlived the clean-up; %s was left, not removed\n",
+                sandbox);
+        return;
+    }
+    scratch_remove(sandbox);
 }
 
 /* The sandbox: a folder of /tmp for the suites' copies and the runs'

@@ -14,8 +14,8 @@
 # through one, anything but a regular file, a name holding a control
 # character (a newline: names are listed one a line) and a file over 1 MB
 # are never taken, each said so; a file is taken only when its real path
-# lies inside the submission.  Only files named *.c are looked at (every
-# exercise file is), at most 1000 of them in the order of their paths: each
+# lies inside the submission.  Only files named *.c and links are looked at
+# (every exercise file is a .c), at most 1000 in the order of their paths: each
 # costs a few processes, and a submission of 100000 files would otherwise
 # take minutes before the grading, outside its time budget.  Prints one line
 # per file (used, renamed, or missing: the skeleton is graded) and the
@@ -50,13 +50,14 @@ shown() { printf '%s' "$1" | tr '\000-\037\177' '?'; }
 # The submission's regular files, by path below it, one a line: names with a
 # control character, links and other kinds, and large files go to the notes.
 c_limit=1000
-files=$(cd "$submission" 2>/dev/null && find . -mindepth 1 -name '*.c' -print0 | sort -z | head -z -n $((c_limit + 1)) |
+files=$(cd "$submission" 2>/dev/null && find . -mindepth 1 \( -name '*.c' -o -type l \) -print0 | sort -z |
+    head -z -n $((c_limit + 1)) |
     { seen=0
     while IFS= read -r -d '' path; do
         path=${path#./}
         seen=$((seen + 1))
         if [ "$seen" -gt "$c_limit" ]; then
-            echo "(more than $c_limit files named *.c: those after the first $c_limit were not looked at)" >>"$notes"
+            echo "(more than $c_limit files named *.c or links: those after the first $c_limit were not looked at)" >>"$notes"
         elif [[ $path == *[[:cntrl:]]* ]]; then
             echo "$(shown "$path") (a name with a control character: never taken)" >>"$notes"
         elif [ -L "$path" ]; then
@@ -74,8 +75,9 @@ files=$(cd "$submission" 2>/dev/null && find . -mindepth 1 -name '*.c' -print0 |
             esac
         fi
     done; })
-# The other files (not *.c), only named: the first 20.
-others=$(cd "$submission" 2>/dev/null && find . -mindepth 1 ! -name '*.c' ! -type d -print0 | sort -z | head -z -n 20 |
+# The other files (not *.c, not links), only named: the first 20.
+others=$(cd "$submission" 2>/dev/null && find . -mindepth 1 ! -name '*.c' ! -type d ! -type l -print0 | sort -z |
+    head -z -n 20 |
     while IFS= read -r -d '' path; do shown "${path#./}"; echo; done)
 
 echo "Files taken from your submission:"

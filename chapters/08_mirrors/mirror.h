@@ -29,7 +29,8 @@ vec3 reflect(vec3 d, vec3 n);
  * ray about the shading normal sp->n, traced one level deeper than `depth`
  * and counted as RAY_REFLECTED; black when path_next (path.h) stops the path
  * with coefficient k_m.  The ray leaves the surface through chapter 06's
- * spawn_ray with the tracer's --shadow-eps policy. */
+ * spawn_ray with the tracer's --shadow-eps policy, and goes as far as an eye
+ * ray: its window is (0, infinity). */
 color mirror_radiance(const tracer *tr, const shading_point *sp, color k_m, int depth, uint64_t *rays);
 
 #endif
