@@ -959,12 +959,8 @@ static double number(const char *text, double max)
 int main(int argc, char **argv)
 {
     if (argc == 2 && strcmp(argv[1], "--clean") == 0) { /* what the Makefile shows of a submission's */
-        buffer in = {0};
-        char chunk[4096];
-        size_t n;
-        while ((n = fread(chunk, 1, sizeof chunk, stdin)) > 0)
-            buf_add_text(&in, chunk, n);
-        print_clean(buf_take(&in), in.len);
+        const char *text = read_file("/dev/stdin");      /* its NUL bytes made '?' */
+        print_clean(text, strlen(text));
         return fflush(stdout) != 0;
     }
     double timeout = 10, budget = 3600;
