@@ -174,6 +174,12 @@ static int read_face(obj_reader *r, const char *s, mesh *m, int *cap_faces)
     return 0;
 }
 
+/* Whether the statement's keyword, its first `length` characters of s, is `word`. */
+static int keyword_is(const char *s, size_t length, const char *word)
+{
+    return strlen(word) == length && strncmp(s, word, length) == 0;
+}
+
 int mesh_load(const char *path, mesh *m, char *err, size_t err_size)
 {
     *m = (mesh){0};
@@ -191,39 +197,44 @@ int mesh_load(const char *path, mesh *m, char *err, size_t err_size)
             break;
         }
         const char *s = line;
+        if (r.line == 1 && strncmp(s, "\xef\xbb\xbf", 3) == 0)
+            s += 3; /* a UTF-8 byte order mark, as some editors write one */
         while (*s == ' ' || *s == '\t')
             s++;
+        /* the statement's keyword, and what follows it */
+        const size_t length = strcspn(s, " \t\r");
+        const char *rest = s + length;
         real x[3];
-        if (strncmp(s, "v ", 2) == 0 || strncmp(s, "v\t", 2) == 0) {
-            status = read_numbers(&r, s + 2, x, 3, 1);
+        if (keyword_is(s, length, "v")) {
+            status = read_numbers(&r, rest, x, 3, 1);
             if (status == 0)
                 status = make_room(&r, (void **)&m->positions, &cap_positions, m->n_positions, sizeof *m->positions,
                                    "vertex positions");
             if (status == 0)
                 m->positions[m->n_positions++] = vec3_make(x[0], x[1], x[2]);
-        } else if (strncmp(s, "vn ", 3) == 0) {
-            status = read_numbers(&r, s + 3, x, 3, 0);
+        } else if (keyword_is(s, length, "vn")) {
+            status = read_numbers(&r, rest, x, 3, 0);
             if (status == 0)
                 status = make_room(&r, (void **)&m->normals, &cap_normals, m->n_normals, sizeof *m->normals,
                                    "normals");
             if (status == 0)
                 m->normals[m->n_normals++] = vec3_make(x[0], x[1], x[2]);
-        } else if (strncmp(s, "vt ", 3) == 0) {
-            status = read_numbers(&r, s + 3, x, 2, 1);
+        } else if (keyword_is(s, length, "vt")) {
+            status = read_numbers(&r, rest, x, 2, 1);
             if (status == 0)
                 status = make_room(&r, (void **)&m->uvs, &cap_uvs, m->n_uvs, sizeof *m->uvs,
                                    "texture coordinates");
             if (status == 0)
                 m->uvs[m->n_uvs++] = (mesh_uv){x[0], x[1]};
-        } else if (strncmp(s, "f ", 2) == 0) {
-            status = read_face(&r, s + 2, m, &cap_faces);
-        } else if (*s == '#' || *s == '\n' || *s == '\r' || *s == '\0' || strncmp(s, "o ", 2) == 0 ||
-                   strncmp(s, "g ", 2) == 0 || strncmp(s, "s ", 2) == 0 || strncmp(s, "usemtl", 6) == 0 ||
-                   strncmp(s, "mtllib", 6) == 0) {
-            /* comments and grouping: nothing to model */
+        } else if (keyword_is(s, length, "f")) {
+            status = read_face(&r, rest, m, &cap_faces);
+        } else if (*s == '#' || length == 0 || keyword_is(s, length, "o") || keyword_is(s, length, "g") ||
+                   keyword_is(s, length, "s") || keyword_is(s, length, "usemtl") || keyword_is(s, length, "mtllib") ||
+                   keyword_is(s, length, "l") || keyword_is(s, length, "p")) {
+            /* comments, grouping, materials, and lines and points (no area for a ray to hit): nothing to model */
         } else {
             char word[32];
-            snprintf(word, sizeof word, "%.*s", (int)strcspn(s, " \t\r\n"), s);
+            snprintf(word, sizeof word, "%.*s", (int)(length < 31 ? length : 31), s);
             status = fail(&r, "unknown statement: ", word);
         }
     }

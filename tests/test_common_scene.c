@@ -496,6 +496,35 @@ static void test_obj_relative_indices_and_slashes(void **state)
     mesh_free(&m);
 }
 
+/* What exporters write around the faces: a UTF-8 byte order mark, tabs
+ * after the keywords, CRLF line ends, a bare `g` and `s off`, lines and
+ * points (no area: nothing for a ray to hit).  The two faces are read as
+ * written, nothing else. */
+static void test_obj_as_exporters_write_it(void **state)
+{
+    (void)state;
+    write_file("exported.obj", "\xef\xbb\xbf# exported\r\nmtllib a.mtl\r\no thing\r\ng\r\ns off\r\n"
+                               "v\t0.5 0 0\r\nv 1 0 0\r\nv 0 1 0\r\nv 0 0 1\r\nvt\t0.25 0.75\r\n"
+                               "usemtl m\r\nf\t1/1 2/1 3/1\r\nl 1 2\r\np 4\r\n\r\nf 4 3 2\r\n");
+    mesh m;
+    char err[512], path[256];
+    snprintf(path, sizeof path, "%s/exported.obj", folder);
+    if (mesh_load(path, &m, err, sizeof err) != 0)
+        fail_msg("%s", err);
+    assert_int_equal(4, m.n_positions);
+    assert_int_equal(2, m.n_faces);
+    assert_true(m.positions[0].x == 0.5);
+    assert_true(m.uvs[0].u == 0.25 && m.uvs[0].v == 0.75);
+    assert_int_equal(3, m.faces[1].v[0]);
+    assert_int_equal(1, m.faces[1].v[2]);
+    mesh_free(&m);
+    /* a byte order mark is taken at the start of the file only */
+    write_file("late-mark.obj", "v 0 0 0\n\xef\xbb\xbfv 1 0 0\n");
+    snprintf(path, sizeof path, "%s/late-mark.obj", folder);
+    assert_int_equal(-1, mesh_load(path, &m, err, sizeof err));
+    assert_non_null(strstr(err, "late-mark.obj:2: unknown statement"));
+}
+
 /* Every scene of the course parses, with spot checks of what it holds. */
 static void test_cornell_corpus_parses(void **state)
 {
@@ -579,6 +608,7 @@ static const graded_test tests[] = {
     GRADED(test_reference_errors, 0),
     GRADED(test_file_errors, 0),
     GRADED(test_obj_relative_indices_and_slashes, 0),
+    GRADED(test_obj_as_exporters_write_it, 0),
     GRADED(test_paths_that_are_not_regular_files, 0),
     GRADED(test_texture_images_are_decoded_in_full, 0),
     GRADED(test_limits_of_one_line_face_and_file, 0),
