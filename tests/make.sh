@@ -153,6 +153,17 @@ knob_message() {
         printf 'exit status %s and:\n%s\nnot 2 and:\n%s\n' "$status" "$out" "$want"
         return 1
     fi
+    # a number outside the range its help states (at most 256 bounces, a weight from 0) is refused the same way
+    local value
+    for value in depth=257 depth=-1 min-weight=-0.5; do
+        out=$("$build/11_grid/render" "--$value" -o "$tmp/knob.png" 2>&1)
+        status=$?
+        if [ "$status" != 2 ] || ! printf '%s\n' "$out" | grep -q "^$build/11_grid/render: --${value%%=*}: .* (see --help)$" ||
+            [ -e "$tmp/knob.png" ]; then
+            printf -- '--%s: exit status %s and:\n%s\n' "$value" "$status" "$out"
+            return 1
+        fi
+    done
     "$build/07_blinn_phong/render" --help | grep -q -- "--output FILE .*(default: 07_blinn_phong.png in the current folder)" ||
         { echo "--help does not say where the image goes without -o"; return 1; }
 }
