@@ -76,14 +76,6 @@ static color sample(const void *prepared, real u, real v, uint64_t *rays)
 
 static void *prepare(const void *context, const scene *desc, char *err, size_t err_size)
 {
-    if (cracks_steps < 0 || cracks_steps > 1 << 16) {
-        snprintf(err, err_size, "--cracks=%d: must be from 0 (off) to 65536", cracks_steps);
-        return NULL;
-    }
-    if (degenerate_cases < 0 || degenerate_cases > 100000000) {
-        snprintf(err, err_size, "--degenerate=%d: must be from 0 (off) to 100000000", degenerate_cases);
-        return NULL;
-    }
     triangle_stage *s = triangle_stage_prepare(context, desc, err, err_size);
     if (s && cracks_steps > 0)
         count_cracks(s->test);
@@ -91,6 +83,9 @@ static void *prepare(const void *context, const scene *desc, char *err, size_t e
         count_degenerate(s->test);
     return s;
 }
+
+/* the knobs' ranges: 0 is off */
+static const char *const cracks_range[] = {"0", "65536", NULL}, *const degenerate_range[] = {"0", "100000000", NULL};
 
 int main(int argc, char **argv)
 {
@@ -101,9 +96,9 @@ int main(int argc, char **argv)
     const knob knobs[] = {
         r.knobs[0], /* the lesson's --triangle */
         {"show", KNOB_CHOICE, &show, show_choices, "what to colour each pixel by"},
-        {"cracks", KNOB_INT, &cracks_steps, NULL,
+        {"cracks", KNOB_INT, &cracks_steps, cracks_range,
          "first count the rays at an icosahedron's edges, in steps of 1/V, that slip through (0: off)"},
-        {"degenerate", KNOB_INT, &degenerate_cases, NULL,
+        {"degenerate", KNOB_INT, &degenerate_cases, degenerate_range,
          "first count false hits at V degenerate triangles and V in-plane rays, and lost hits (0: off)"},
     };
     r.name = LAB_NAME;
