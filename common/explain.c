@@ -23,9 +23,11 @@ const char *explain_color(char *buf, size_t size, color c)
     return explain_vec(buf, size, vec3_make(c.r, c.g, c.b));
 }
 
-/* A new node of `type` under the current one, its line from `format`; -1 when out of memory. */
+/* A new node of `type` under the current one, its line from `format`; -1 when out of memory or full. */
 static int add(explainer *e, node_type type, const char *format, ...)
 {
+    if (!e->failed && e->n >= EXPLAIN_MAX_NODES)
+        e->failed = e->full = true;
     if (e->failed || grow((void **)&e->nodes, &e->capacity, e->n + 1, sizeof *e->nodes) != 0) {
         e->failed = true;
         return -1;

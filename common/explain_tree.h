@@ -12,6 +12,12 @@
 
 typedef enum { NODE_LINE, NODE_RAY, NODE_TEST, NODE_CELL, NODE_SAMPLE, NODE_ROOT } node_type;
 
+/* The most nodes a tree holds (about 50 MB, and as many lines): a pixel of
+ * glass in glass at --min-weight=0 doubles its rays at every depth, and 65536
+ * samples make as many subtrees.  Beyond it the reports are dropped and the
+ * explanation says where it stops. */
+#define EXPLAIN_MAX_NODES 100000
+
 /* Misses listed under one ray (or cell); the rest are counted. */
 #define EXPLAIN_MISSES_SHOWN 6
 
@@ -46,7 +52,8 @@ struct explainer {
     char spawn[200];  /* how the next secondary ray left its surface (spawn_ray), for its line */
     int surface, source, face; /* the surface the next test is of (explain_surface); -1: unknown */
     const scene *desc;
-    bool failed;      /* out of memory: the tree is incomplete */
+    bool failed;      /* out of memory, or full (EXPLAIN_MAX_NODES): the tree is incomplete */
+    bool full;        /* it stopped at EXPLAIN_MAX_NODES */
 };
 
 /* An empty recorder for the scene desc, whose root line is `root`. */

@@ -15,6 +15,7 @@
 #include <stb_image.h>
 
 #include "display.h"
+#include "explain_tree.h"
 #include "suite.h"
 
 #define WIDTH 40
@@ -204,10 +205,57 @@ static void test_outside(void **state)
     free(said);
 }
 
+/* Glass in glass at --min-weight=0: every ray that meets glass casts two,
+ * so the tree doubles at each depth (2^16 rays here).  The explanation
+ * stops at EXPLAIN_MAX_NODES entries and says so, and still ends with the
+ * pixel's value and its bytes, the image's own. */
+static void test_tree_too_large(void **state)
+{
+    (void)state;
+    char scene[256], text[256], json[256], png[256], command[2048];
+    snprintf(scene, sizeof scene, "%s/glass-in-glass.xml", scratch);
+    snprintf(text, sizeof text, "%s/glass-in-glass.txt", scratch);
+    snprintf(json, sizeof json, "%s/glass-in-glass.json", scratch);
+    snprintf(png, sizeof png, "%s/glass-in-glass.png", scratch);
+    FILE *f = fopen(scene, "w");
+    assert_non_null(f);
+    fputs("<scene><image>3 3</image><camera type=\"PerspectiveCamera\"><viewPoint>0.01 0.02 4</viewPoint>"
+          "<viewWidth>0.3</viewWidth><viewHeight>0.3</viewHeight></camera><backColor>0.5 0.5 0.5</backColor>"
+          "<surface type=\"Sphere\"><shader type=\"Glass\"/></surface>"
+          "<surface type=\"Sphere\"><shader type=\"Glass\"/><radius>0.6</radius></surface>"
+          "<surface type=\"Box\"><shader type=\"Glass\"/><minPt>-2 -2 -1.5</minPt><maxPt>2 2 -1.2</maxPt></surface>"
+          "<surface type=\"Box\"><shader type=\"Glass\"/><minPt>-2 -2 1.2</minPt><maxPt>2 2 1.5</maxPt></surface>"
+          "</scene>\n",
+          f);
+    assert_int_equal(0, fclose(f));
+    snprintf(command, sizeof command,
+             "%s09_refraction/render -q -j1 --min-weight=0 --depth=16 -o '%s' --explain 1,1 --explain-json '%s' '%s' >'%s'",
+             build, png, json, scene, text);
+    assert_int_equal(0, run(command));
+    size_t size;
+    char *said = slurp(text, &size);
+    assert_non_null(said);
+    long lines = 0;
+    for (const char *c = said; *c; c++)
+        lines += *c == '\n';
+    /* each entry prints its line, a ray one more with its outcome */
+    if (lines < EXPLAIN_MAX_NODES || lines > 2L * EXPLAIN_MAX_NODES + 10)
+        fail_msg("the explanation of glass in glass has %ld lines: expected from %d (one per entry) to %d", lines,
+                 EXPLAIN_MAX_NODES, 2 * EXPLAIN_MAX_NODES + 10);
+    assert_non_null(strstr(said, "(the explanation stops here: it holds at most 100000 rays, tests and terms"));
+    assert_non_null(strstr(said, ": the same\n"));
+    free(said);
+    char *tree = slurp(json, &size);
+    assert_non_null(tree);
+    assert_non_null(strstr(tree, "\"complete\": false"));
+    free(tree);
+}
+
 static const graded_test tests[] = {
     GRADED(test_every_renderer, 1),
     GRADED(test_samples, 1),
     GRADED(test_outside, 1),
+    GRADED(test_tree_too_large, 1),
 };
 
 int main(int argc, char **argv)
