@@ -192,6 +192,9 @@ plant "hint: the normal not normalized" 02_sphere sphere.c \
 plant "hint: the normal NaN at the centre" 02_sphere sphere.c \
     's|return length > 0 ? vec3_scale(m, 1 / length) : m;|return vec3_scale(m, 1 / length);|' \
     test_normal_unit_far_from_origin "" "divided by \|x - c\| = 0"
+plant "hint: the normal's guard a fixed epsilon" 02_sphere sphere.c \
+    's|return length > 0 ? vec3_scale(m, 1 / length) : m;|return length > REAL_EPSILON ? vec3_scale(m, 1 / length) : m;|' \
+    test_normal_unit_far_from_origin "" "a fixed epsilon takes every point of a small"
 plant "hint: the sphere's t == t_min accepted" 02_sphere sphere.c \
     's|if (near > t_min \&\& near < t_max)|if (near >= t_min \&\& near < t_max)|; s|if (far > t_min \&\& far < t_max)|if (far >= t_min \&\& far < t_max)|' \
     test_nearest_root "" "accepted t == t_min: the window \(t_min, t_max\) is open"
@@ -274,6 +277,9 @@ plant "hint: found set back to false by a miss" 04_many_shapes closest_hit.c \
 plant "hint: the later of two surfaces at the same t" 04_many_shapes closest_hit.c \
     's|r, t_min, t_best, \&candidate|r, t_min, nextafter(t_best, REAL_INFINITY), \&candidate|' \
     test_coincident_surfaces_first_wins "" "the first in the list keeps it"
+plant "hint: t_best rounded through a float" 04_many_shapes closest_hit.c \
+    's|t_best = candidate.t;|t_best = (float)candidate.t;|' \
+    test_coincident_surfaces_first_wins "" "not rounded through a float"
 # l = light.pos - point, not divided by r, with the right 1/r^2: the numbers
 # of dividing by r instead of r^2.  Both must be named.
 plant "hint: l not normalized (the numbers of 1/r)" 05_lambert lambert.c \
@@ -452,6 +458,9 @@ plant "hint: the mirror ray traced with tr" 08_mirrors mirror.c \
 plant "hint: the mirror ray from the point itself" 08_mirrors mirror.c \
     's|ray mirror = spawn_ray(sp, reflect(sp->r.d, sp->n), tracer_eps(tr));|ray mirror = {sp->hit.point, reflect(sp->r.d, sp->n)};|' \
     test_mirror_ray_policy_from_knobs "" "started at the point itself"
+plant "hint: L_m clamped to 1" 08_mirrors mirror.c \
+    's|return trace(\&next, mirror, 0, REAL_INFINITY, depth + 1, rays);|color c = trace(\&next, mirror, 0, REAL_INFINITY, depth + 1, rays); return color_make(real_fmin(c.r, 1), real_fmin(c.g, 1), real_fmin(c.b, 1));|' \
+    test_mirror_ray_reaches_probe "" "L_m clamped to 1 before k_m"
 # Chapter 09: refract's rounding and r; Fresnel's squares; Schlick's terms; the glass rays.
 plant "hint: cos^2(theta_t) not grouped for r = 1" 09_refraction refract.c \
     's|(1 - r \* r) + r \* r \* (cos_i \* cos_i)|1 - r * r * (1 - cos_i * cos_i)|' \
@@ -543,6 +552,9 @@ plant "hint: the reflected glass ray only past the critical angle" 09_refraction
 plant "hint: one glass ray only" 09_refraction shade_glass.c \
     's|if (e.transmits \&\& e.R < 1) /\* + (1 - R) L_transmitted \*/|else if (e.transmits \&\& e.R < 1)|' \
     test_glass_weights "" "a ray not traced though its weight"
+plant "hint: the glass radiance clamped to 1" 09_refraction shade_glass.c \
+    's|^    return L;|    return color_make(real_fmin(L.r, 1), real_fmin(L.g, 1), real_fmin(L.b, 1));|' \
+    test_glass_weights "" "L clamped to 1: a radiance is not clamped"
 # Chapter 10: a wrap that leaves C's negative remainder is named as the wrap in
 # the lookups, not as their rounding; the lookups' own mistakes are named.
 plant "hint: a repeat wrap without the fix for a negative %, in nearest" 10_interpolation texture.c \
@@ -764,6 +776,9 @@ plant "hint: the resolution without the density" 11_grid grid_build.c \
 plant "hint: the resolution without the number of surfaces" 11_grid grid_build.c \
     's|fmin(density \* (double)surfaces,|fmin(density + 0 * (double)surfaces,|' \
     test_resolution "" "the number of surfaces left out"
+plant "hint: the density cut to an integer" 11_grid grid_build.c \
+    's|fmin(density \* (double)surfaces,|fmin((double)(long)density * (double)surfaces,|' \
+    test_resolution "" "the density cut to an integer"
 plant "hint: the resolution by floor" 11_grid grid_build.c \
     's|fmax(round(e\[a\] \* s), 1)|fmax(floor(e[a] * s), 1)|' \
     test_resolution "" "n_a = floor\(e_a s\)"

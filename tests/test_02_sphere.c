@@ -712,7 +712,11 @@ static void test_normal_unit_far_from_origin(void **state)
     (void)state;
     const sphere spheres[] = {{{(real)300.5, (real)-700.25, (real)500.125}, (real)0.5},
                               {{(real)-2e4, (real)3e4, (real)1e4}, (real)1e3},
-                              {{0, 0, 0}, (real)1e-3}};
+                              {{0, 0, 0}, (real)1e-3},
+                              /* 2^-56 across, under a fixed epsilon such as REAL_EPSILON (squares still
+                               * normal numbers in float) */
+                              {{(real)ldexp(3, -57), (real)ldexp(-5, -58), (real)ldexp(1, -56)},
+                               (real)ldexp(1, -56)}};
     for (size_t k = 0; k < N(spheres); k++) {
         const sphere *s = &spheres[k];
         /* x = c is no hit point (those are R from c), but the division by
@@ -740,7 +744,10 @@ static void test_normal_unit_far_from_origin(void **state)
                                                 "exactly R; divide by the computed length |x - c|"},
                 {vec3_neg(vec3_normalize(m_)), "the normal points inwards: n = (x - c) / |x - c|, not c - x"},
                 {vec3_normalize(x), "the centre forgotten: n = (x - c) / |x - c|, not x / |x|"},
-                {m_, "not normalized: n = (x - c) / |x - c|"},
+                {m_, s->radius < 1e-10 ? "not normalized on a sphere this small: the guard against |x - c| = 0 "
+                                         "is a test against 0, a fixed epsilon takes every point of a small "
+                                         "sphere for its centre (README, \"Exercises\", normal)"
+                                       : "not normalized: n = (x - c) / |x - c|"},
             };
             /* x - c is exact to within eps |c|; its direction then within 4 eps */
             double tol = 4 * REAL_EPSILON * (1 + vec3_max_abs(s->center) / s->radius);

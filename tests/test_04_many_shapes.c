@@ -302,6 +302,22 @@ static void test_coincident_surfaces_first_wins(void **state)
             surface_list_free(&list);
         }
     }
+    /* The same tie where t = 10 - R is no float: t_best must keep the hit's t to the last digit.  Rounded
+     * to a float (about half of these R round up), t_best ends past the tie and the copy, met at the very
+     * same t, comes in under it.  Both copies' t is the same computation, so the tie is exact in any build;
+     * t itself is within 16 eps of 10 - R (the sphere's roots: chapter 02). */
+    for (int k = 1; k < 20; k++) {
+        const real R = (real)0.05 * (real)k;
+        surface_list list;
+        surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+        surface_list_add_sphere(&list, (sphere){{0, 0, 0}, R}, 10, 0);
+        surface_list_add_sphere(&list, (sphere){{0, 0, 0}, R}, 11, 1);
+        const char *why = "two surfaces at the same t: the first in the list keeps it; t_best carries that t to "
+                          "every later surface's window with all its digits: is it kept in a real, not rounded "
+                          "through a float? (README, \"The closest hit\")";
+        expect_closest(&list, down_z, 0, REAL_INFINITY, 0, 10 - R, TOL(16), why);
+        surface_list_free(&list);
+    }
 }
 
 /* ---- the hit record ------------------------------------------------------------- */

@@ -241,6 +241,22 @@ static void test_mirror_ray_reaches_probe(void **state)
                      "k_m times the probe's colour 0.2 (black diffuse, no lights)", sl, 2);
     assert_close(0.5 * 0.4, L.g, TOL(1));
     assert_close(0.25 * 0.6, L.b, TOL(1));
+    /* A radiance has no upper bound (a bright light, a low exposure): only the display clamps.  A probe of
+     * colour (2.5, 1.25, 6) seen in the mirror gives k_m times it, (2, 0.625, 1.5), each one product of
+     * values below 6 from the data: TOL(6). */
+    desc.shaders[probe_shader].diffuse_color = color_make((real)2.5, (real)1.25, 6);
+    uint64_t bright_rays[RAY_KINDS] = {0};
+    L = trace_one(&desc, &knobs, (ray){eye, d}, bright_rays);
+    const char *bright = "an eye ray onto a tilted mirror (k_m = (0.8, 0.5, 0.25)), a probe of colour (2.5, 1.25, 6) "
+                         "in its mirror direction";
+    const char *unbounded = "L_m is whatever radiance the mirror ray brings back, above 1 too: it is not clamped "
+                            "on the way (only the display clamps, after the exposure); the glazed term is k_m L_m "
+                            "(README, \"Calling trace again\")";
+    const suspect sb[] = {{0.8, "L_m clamped to 1 before k_m: the radiance is not clamped on the way, only the "
+                                "display clamps (README, \"Calling trace again\")"}};
+    assert_close_why(0.8 * 2.5, L.r, TOL(6), describe("%s: the radiance the eye sees, red", bright), unbounded, sb, 1);
+    assert_close_why(0.25 * 6, L.b, TOL(6), describe("%s: the radiance the eye sees, blue", bright), unbounded,
+                     NULL, 0);
     scene_free(&desc);
 
     /* The mirror ray's window is (0, infinity): a probe as far away as a sky, centred 1e32 r away (radius 1e31,

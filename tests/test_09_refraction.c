@@ -796,6 +796,26 @@ static void test_glass_weights(void **state)
                      "    likely mistake: a ray not traced though its weight (R or 1 - R) is above 0",
                      cases[k].where, (int)rays[RAY_REFLECTED], (int)rays[RAY_REFRACTED]);
     }
+    /* A radiance has no upper bound: behind the glass a background of (2.5, 5, 7.5), B = 5 in green, gives
+     * from outside L = R B = 0.2 and from inside L = (1 - R) B = 4.8, each R or 1 - R times B after a few
+     * roundings of values of size 5: TOL(5).  Clamped to 1 on the way, the ray from inside brings 1 or 0.96. */
+    desc.back_color = color_make((real)2.5, 5, (real)7.5);
+    for (int k = 0; k < 2; k++) {
+        glass_knobs knobs = knobs_of(1, 0);
+        uint64_t rays[RAY_KINDS] = {0};
+        color L = trace_one(&desc, &knobs, (ray){cases[k].from, cases[k].d}, rays);
+        const suspect suspects[] = {{1, "L clamped to 1: a radiance is not clamped on the way, only the display "
+                                        "clamps (README, \"The glass shader\")"},
+                                    {(1 - R) * 1, "L_transmitted clamped to 1 before its weight: a radiance is not "
+                                                  "clamped on the way, only the display clamps (README, \"The "
+                                                  "glass shader\")"}};
+        assert_close_why(cases[k].expected / B * 5, L.g, TOL(5),
+                         describe("shade_glass, %s, background 5: L", cases[k].where),
+                         "L = R L_reflected + (1 - R) L_transmitted, whatever their size (README, \"The glass "
+                         "shader\")",
+                         suspects, sizeof suspects / sizeof suspects[0]);
+    }
+    desc.back_color = color_make((real)0.25, (real)0.5, (real)0.75);
     /* past the critical angle (60 degrees from inside): the reflected ray only */
     glass_knobs knobs = knobs_of(1, 0);
     uint64_t rays[RAY_KINDS] = {0};

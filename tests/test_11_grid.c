@@ -136,6 +136,10 @@ static void expect_resolution(const double extent[3], long surfaces, double dens
                                                     "over the volume, s = (lambda N / (e_x e_y e_z))^(1/k)"},
         {lambda_n, 0, S_RIGHT, round, true, "lambda N below 1 taken as it is: the first try is s for max(lambda N, 1) "
                                             "cells, at least one (README, \"The grid's box and resolution\", step 1)"},
+        {fmax(trunc(density) * (double)surfaces, 1), 0, S_RIGHT, round, true,
+         "the density cut to an integer: lambda is any real above 0, lambda N cells (README, \"Knobs\")"},
+        {fmax(round(density) * (double)surfaces, 1), 0, S_RIGHT, round, true,
+         "the density rounded to an integer: lambda is any real above 0, lambda N cells (README, \"Knobs\")"},
     };
     const char *why = "s = (min(lambda N, cap) / product of the spanned extents)^(1/k) with k spanned axes, n_a = "
                       "max(round(e_a s), 1), a flat axis 1";
@@ -225,6 +229,9 @@ static void test_resolution(void **state)
     (void)state;
     /* 8000 cells for a box 8 x 2 x 4 (volume 64): s = 125^(1/3) = 5 cells per unit, 40 x 10 x 20 */
     expect_resolution((const double[3]){8, 2, 4}, 1000, 8, 1L << 20, (const int[3]){40, 10, 20});
+    /* A density need not be an integer: 2.5 per surface, 2500 cells, s = 20000^(1/3) = 27.14, n = round of
+     * 27.14, 6.79 and 13.57 (2 or 3 per surface would give 25 x 6 x 13 or 29 x 7 x 14) */
+    expect_resolution((const double[3]){8, 2, 4}, 1000, 2.5, 1L << 20, (const int[3]){27, 7, 14});
     /* The same box 2^1000 and 2^-990 times as large: its extents relative to the largest are again exactly 1,
      * 1/4 and 1/2, and so are the counts.  The extents' own product, 2^3006 or 2^-2964, overflows to infinity
      * (s = 0: one cell an axis) or underflows to 0 (s infinite, held at 1e300: counts set by that bound). */
