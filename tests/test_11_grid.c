@@ -229,8 +229,8 @@ static void test_resolution(void **state)
     (void)state;
     /* 8000 cells for a box 8 x 2 x 4 (volume 64): s = 125^(1/3) = 5 cells per unit, 40 x 10 x 20 */
     expect_resolution((const double[3]){8, 2, 4}, 1000, 8, 1L << 20, (const int[3]){40, 10, 20});
-    /* A density need not be an integer: 2.5 per surface, 2500 cells, s = 20000^(1/3) = 27.14, n = round of
-     * 27.14, 6.79 and 13.57 (2 or 3 per surface would give 25 x 6 x 13 or 29 x 7 x 14) */
+    /* A density need not be an integer: 2.5 per surface, 2500 cells, s = (2500 / 64)^(1/3) = 3.393 cells per
+     * unit, n = round of 27.14, 6.79 and 13.57 (2 or 3 per surface would give 25 x 6 x 13 or 29 x 7 x 14) */
     expect_resolution((const double[3]){8, 2, 4}, 1000, 2.5, 1L << 20, (const int[3]){27, 7, 14});
     /* The same box 2^1000 and 2^-990 times as large: its extents relative to the largest are again exactly 1,
      * 1/4 and 1/2, and so are the counts.  The extents' own product, 2^3006 or 2^-2964, overflows to infinity
