@@ -292,6 +292,10 @@ plant "hint: L_d without the light's intensity" 05_lambert lambert.c \
 plant "hint: r^2 taken as the length" 05_lambert lambert.c \
     's|vec3_length_squared(to_light)|vec3_length(to_light)|' \
     test_irradiance_facing "" "r\^2 taken as the length"
+# A threshold of its own on n . l (against acne, say): a band of black along every terminator.
+plant "hint: n . l cut off below 1e-3" 05_lambert lambert.c \
+    's|real cos_theta = real_fmax(0, vec3_dot(n, l));|real cos_theta = vec3_dot(n, l) < 1e-3 ? 0 : vec3_dot(n, l);|' \
+    test_cosine_law "" "none at a small n \. l"
 # l from the light to the point, and the cosine not clamped: each test that reads them names them.
 plant "hint: l points away from the light (the light behind)" 05_lambert lambert.c \
     's|vec3 l = vec3_scale(to_light, 1 / real_sqrt(r2));|vec3 l = vec3_scale(to_light, -1 / real_sqrt(r2));|' \

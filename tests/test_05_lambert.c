@@ -75,13 +75,17 @@ static void test_cosine_law(void **state)
     vec3 n = unit_normal();
     color k_d = {0.25, 0.25, 0.25};
     const double pi = acos(-1.0);
-    const double degrees[] = {0, 30, 60, 75, 89, 90.5, 120, 180};
+    /* 89.99 degrees: n . l = 1.7e-4, small but above 0, and so is L_d (a cutoff such as n . l < 1e-3 is no
+     * part of max(0, n . l): it darkens a band along every terminator) */
+    const double degrees[] = {0, 30, 60, 75, 89, 89.99, 90.5, 120, 180};
     for (size_t k = 0; k < sizeof degrees / sizeof degrees[0]; k++) {
         double theta = degrees[k] * pi / 180;
         scene_light light = {.position = vec3_add(point, vec3_scale(at_angle(n, theta), 3)), .intensity = {9, 9, 9}};
         double expected = 0.25 * 9 / 9 * fmax(0, cos(theta));
         color L = lambert(k_d, point, n, &light);
         const suspect sc[] = {
+            {cos(theta) > 0 && cos(theta) < 1e-3 ? 0 : NAN, /* (NAN: no suspect at the other angles) */
+             "none at a small n . l: max(0, n . l) is 0 only at and beyond 90 degrees, with no threshold of its own"},
             {0.25 * cos(theta), "negative: clamp the cosine, max(0, n . l): a light behind the surface gives nothing"},
             {0.25, "no cosine: the irradiance falls with cos(theta) = n . l as the surface tilts away"},
             {0.25 * 9 / 3 * fmax(0, cos(theta)), "divided by r, not r^2, or l not normalized"},
