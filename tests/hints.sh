@@ -277,6 +277,9 @@ plant "hint: found set back to false by a miss" 04_many_shapes closest_hit.c \
 plant "hint: the later of two surfaces at the same t" 04_many_shapes closest_hit.c \
     's|r, t_min, t_best, \&candidate|r, t_min, nextafter(t_best, REAL_INFINITY), \&candidate|' \
     test_coincident_surfaces_first_wins "" "the first in the list keeps it"
+plant "hint: an epsilon of the loop's own on t_best" 04_many_shapes closest_hit.c \
+    's|r, t_min, t_best, \&candidate|r, t_min, t_best - REAL_EPSILON, \&candidate|' \
+    test_closest_at_any_scale "" "a length of the loop's own"
 plant "hint: t_best rounded through a float" 04_many_shapes closest_hit.c \
     's|t_best = candidate.t;|t_best = (float)candidate.t;|' \
     test_coincident_surfaces_first_wins "" "not rounded through a float"

@@ -225,6 +225,60 @@ static void test_closest_hit_in_any_order(void **state)
     }
 }
 
+/* The same four shapes and ray at 2^-60 and 2^50 times their size (powers
+ * of two: every coordinate and every t is the same number scaled, exactly),
+ * listed from the farthest to the nearest, so that each surface is closer
+ * than the one before: at 2^-60 a surface 2^-60 closer must win.  The loop
+ * holds no length of its own; an epsilon in it (t_best - 1e-9, say) is a
+ * length, too large for a small scene and too small for a large one.  The
+ * list is asked at its own size first, where such a loop still passes.  In
+ * float the scales are 2^-30 and 2^30: Cramer's determinants, products of
+ * three coordinates, would be 2^-180 or 2^150, beyond the floats. */
+static void test_closest_at_any_scale(void **state)
+{
+    (void)state;
+    const bool single = sizeof(real) < sizeof(double);
+    const int exponents[] = {0, single ? -30 : -60, single ? 30 : 50};
+    const real t_min[] = {0, (real)8.5, (real)9.2}, t[] = {8, 9, (real)9.5};
+    const int want[] = {3, 2, 1}; /* front, ball, inner: the list's last, third and second */
+    for (size_t e = 0; e < sizeof exponents / sizeof exponents[0]; e++) {
+        const real s = (real)ldexp(1, exponents[e]);
+        for (int f = 0; f < 2; f++) {
+            for (int g = 0; g < 2; g++) {
+                surface_list list;
+                surface_list_init(&list, formulas[f], tests_of_triangles[g]);
+                surface_list_add_sphere(&list, (sphere){{0, 0, -3 * s}, (real)1.5 * s}, BACK, BACK);
+                surface_list_add_triangle(
+                    &list, (triangle){{-s, -s, (real)0.5 * s}, {s, -s, (real)0.5 * s}, {0, s, (real)0.5 * s}}, INNER,
+                    INNER);
+                surface_list_add_sphere(&list, (sphere){{0, 0, 0}, s}, BALL, BALL);
+                surface_list_add_triangle(&list, (triangle){{-s, -s, 2 * s}, {s, -s, 2 * s}, {0, s, 2 * s}}, FRONT,
+                                          FRONT);
+                const ray r = {{0, 0, 10 * s}, {0, 0, -1}};
+                for (int k = 0; k < 3; k++) {
+                    /* t as the first test's, each 2^e times as large: the tolerance too */
+                    if (exponents[e] == 0) {
+                        expect_closest(&list, r, t_min[k] * s, REAL_INFINITY, want[k], t[k] * s, TOL(16) * s,
+                                       "list order 3201 of 0 front triangle, 1 ball, 2 inner triangle, 3 back ball");
+                        continue;
+                    }
+                    hit_record hit = {.t = -7, .surface = -7};
+                    const bool found = surfaces_intersect(&list, r, t_min[k] * s, REAL_INFINITY, &hit);
+                    if (!found || hit.surface != want[k] || real_abs(hit.t - t[k] * s) > TOL(16) * s)
+                        fail_msg("the four shapes at 2^%d times their size, the farthest first, window (%g, inf)\n"
+                                 "    expected surface %d at t %g\n    got      %s surface %d at t %g\n"
+                                 "    likely mistake: a length of the loop's own, such as an epsilon on t_best: the "
+                                 "same list at its own size gave the closest hit; every later surface that is "
+                                 "closer, however little, takes t_best (README, \"The closest hit\")",
+                                 exponents[e], (double)(t_min[k] * s), want[k], (double)(t[k] * s),
+                                 found ? "a hit on" : "no hit;", hit.surface, (double)hit.t);
+                }
+                surface_list_free(&list);
+            }
+        }
+    }
+}
+
 /* The window (t_min, t_max) is open at both ends and bounds every surface. */
 static void test_t_window(void **state)
 {
@@ -842,6 +896,7 @@ static void test_two_boxes_reference(void **state)
 static const graded_test tests[] = {
     GRADED(test_closest_hit_in_any_order, 5),
     GRADED(test_t_window, 3),
+    GRADED(test_closest_at_any_scale, 1),
     GRADED(test_empty_and_single, 1),
     GRADED(test_coincident_surfaces_first_wins, 2),
     GRADED(test_hit_record_fields, 3),
