@@ -48,8 +48,9 @@ void explain_write_text(const explainer *e, FILE *out)
     if (e->n > 0)
         text_node(e, 0, 0, out);
     if (e->full)
-        fprintf(out, "(the explanation stops here: it holds at most %d rays, tests and terms, and what came after them is "
-                     "left out; a smaller --depth, a larger --min-weight or fewer --samples give a whole tree)\n",
+        fprintf(out,
+                "(the explanation stops here: it holds at most %d rays, tests and terms, and what came after them "
+                "is left out; a smaller --depth, a larger --min-weight or fewer --samples give a whole tree)\n",
                 EXPLAIN_MAX_NODES);
     else if (e->failed)
         fprintf(out, "(out of memory: the explanation is incomplete)\n");

@@ -158,8 +158,8 @@ knob_message() {
     for value in depth=257 depth=-1 min-weight=-0.5; do
         out=$("$build/11_grid/render" "--$value" -o "$tmp/knob.png" 2>&1)
         status=$?
-        if [ "$status" != 2 ] || ! printf '%s\n' "$out" | grep -q "^$build/11_grid/render: --${value%%=*}: .* (see --help)$" ||
-            [ -e "$tmp/knob.png" ]; then
+        local want="^$build/11_grid/render: --${value%%=*}: .* (see --help)$"
+        if [ "$status" != 2 ] || ! printf '%s\n' "$out" | grep -q "$want" || [ -e "$tmp/knob.png" ]; then
             printf -- '--%s: exit status %s and:\n%s\n' "$value" "$status" "$out"
             return 1
         fi

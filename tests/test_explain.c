@@ -229,7 +229,8 @@ static void test_tree_too_large(void **state)
           f);
     assert_int_equal(0, fclose(f));
     snprintf(command, sizeof command,
-             "%s09_refraction/render -q -j1 --min-weight=0 --depth=16 -o '%s' --explain 1,1 --explain-json '%s' '%s' >'%s'",
+             "%s09_refraction/render -q -j1 --min-weight=0 --depth=16 -o '%s' --explain 1,1 --explain-json '%s' "
+             "'%s' >'%s'",
              build, png, json, scene, text);
     assert_int_equal(0, run(command));
     size_t size;
