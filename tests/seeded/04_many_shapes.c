@@ -25,6 +25,7 @@ static void seeded_closest(unsigned long *rng)
 }
 
 SEEDED_CHECKS(SEEDED(test_closest_hit_in_any_order, seeded_closest), SEEDED(test_t_window, seeded_closest),
+              SEEDED(test_closest_at_any_scale, seeded_closest),
               SEEDED(test_empty_and_single, seeded_closest),
               SEEDED(test_coincident_surfaces_first_wins, seeded_closest),
               SEEDED(test_hit_record_fields, seeded_closest), SEEDED(test_box_in_scene, seeded_closest),
