@@ -31,7 +31,9 @@
  * Limits: every run is a session of its own (no controlling terminal to
  * type into), sealed (seal.h: no network to ask a server for answers, no
  * memory made executable to run a copy of the compiled reference in, no
- * IPC object that would outlive it) and has its own folder (HOME, TMPDIR; the working folder
+ * IPC object that would outlive it, no file held in memory, and with --user
+ * no process of its own: each would have a memory limit of its own) and
+ * has its own folder (HOME, TMPDIR; the working folder
  * with --user), removed after it, at most --memory MB of memory (1024) and
  * files of 64 MB; the whole grading stops starting tests after --budget
  * seconds (3600), and the tests not run fail, said so.
@@ -311,7 +313,7 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
                 _exit(127);
             }
         }
-        if (seal() != 0) { /* no network, no code made at run time (seal.h) */
+        if (seal(kind == RUN_STUDENT) != 0) { /* no network, no code made at run time, one process (seal.h) */
             fprintf(stderr, "grade: cannot seal the test (seccomp)\n");
             _exit(127);
         }
@@ -320,7 +322,7 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
     } else { /* a student's own machine: the environment as it is, HOME and TMPDIR of the run's own */
         putenv(home);
         putenv(tmpdir);
-        seal(); /* where it can: nothing there is sealed against the student */
+        seal(0); /* where it can: nothing there is sealed against the student (chapter 04's test runs rm) */
         execv(argv[0], argv);
     }
 }
