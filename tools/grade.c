@@ -336,6 +336,10 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
         if (kind == RUN_STUDENT) {
             struct rlimit procs = {256, 256};
             setrlimit(RLIMIT_NPROC, &procs); /* threads count too */
+            /* What waits in a socket's or pipe's buffer is the kernel's memory, outside RLIMIT_AS, some
+             * 200 KiB a local socket: 2 GiB were held so under 20000 descriptors, 28 MiB at most under 256. */
+            struct rlimit files = {256, 256};
+            setrlimit(RLIMIT_NOFILE, &files);
             scratch_private_ipc();           /* no System V or POSIX IPC (scratch.h) */
             scratch_private_shm();           /* a /dev/shm of its own, of 64 MB */
             if (setgroups(0, NULL) != 0 || setgid(user_gid) != 0 || setuid(user_uid) != 0 || setuid(0) == 0) {
