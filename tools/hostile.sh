@@ -33,7 +33,7 @@
 # never ends, a preprocessor that takes 9 GB, 60000 files in the submission,
 # 100000 global symbols, .gnu.lto_ sections whose options make root's link
 # write a file where they say, memory in child processes and in memory files
-# (memfd), a test's lines that read as the grader's notes and hid them (no
+# (memfd) and in local sockets' buffers, a test's lines that read as the grader's notes and hid them (no
 # newline at the end, a right-to-left override); besides the correct solution, a correct
 # one written otherwise and an empty submission.  Prints one line per
 # submission (score, expected, what was checked) and fails naming every
@@ -162,7 +162,7 @@ cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:
 asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 copy:0 exec_reference:0 symlink:0 memory:0 litter:0
 bad_utf8:0 escape:0 tty:0 oracle:0 hang:0 quote_asm:0 hasinc_asm:0 pragma_quote_asm:0 pragma_quote_nop:0
 asm_statement:0 stop_killer:0 keyring:0 nul:0 c1_escape:0 compile_hang:0 compile_memory:0 many_files:14 many_symbols:0 shm_memory:0 userns_memory:0
-lto_root:0 fork_memory:0 memfd_memory:0 report_spoof:0"
+lto_root:0 fork_memory:0 memfd_memory:0 report_spoof:0 socket_memory:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -216,7 +216,7 @@ sys.exit(1)' || problem "oracle: its server does not answer"
         problem "c1_escape: a C1 control (CSI) reached the terminal: $(LC_ALL=C grep -c "$(printf '\302\233')" "$work/$name.out") lines" ;;
     tty) grep -q "after grading the terminal gave: nothing" "$work/$name.out" ||
         problem "tty: a line typed into the grading's terminal: $(grep -a 'terminal gave' "$work/$name.out")" ;;
-    memory | shm_memory | userns_memory | fork_memory | memfd_memory)
+    memory | shm_memory | userns_memory | fork_memory | memfd_memory | socket_memory)
         got=$(grep -ho 'memory: got [0-9]* MiB' "$json" | awk '{ print $3 }' | sort -n | tail -n 1)
         [ -n "$got" ] && [ "$got" -le 1024 ] || problem "memory: the test took ${got:-?} MiB (limit 1024)" ;;
     litter)
