@@ -301,10 +301,13 @@ REFERENCE_WORDS := $(if $(HANDOUT),the compiled reference libraries reference/do
 grade_from_reference = $(strip $(foreach c,$(if $(filter chapters,$(SOURCE)),$(filter-out $1,$(call upto,$1)),$(call upto,$1)),$(if $(EXERCISES_$c),$(call num,$c))))
 grade_links = $1: $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addprefix chapters/$1/,$(EXERCISES_$1)),no exercise files of its own)$(if $(call grade_from_reference,$1),$(comma) with ))$(if $(call grade_from_reference,$1),chapter$(if $(word 2,$(call grade_from_reference,$1)),s) $(call grade_from_reference,$1) from the reference ($(REFERENCE_WORDS)))
 
+# A graded suite is linked before its student's objects are checked (tools/check-exercise.sh), and
+# without -fno-lto the linker would compile, as root, any .gnu.lto_ sections an object holds (a
+# top-level asm makes them) with the options they name: -Xassembler --MD=FILE wrote FILE anywhere.
 define grade_rules
 $(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call seeded,$1)) $(call grade_stages,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(QLINK)$$(call link,$$^) -lcmocka -o $$@
+	$$(QLINK)$$(call link,$$^) -fno-lto -lcmocka -o $$@
 endef
 $(foreach c,$(CHAPTER_TESTS:test_%=%),$(eval $(call grade_rules,$c)))
 

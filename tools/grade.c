@@ -31,7 +31,9 @@
  * Limits: every run is a session of its own (no controlling terminal to
  * type into), sealed (seal.h: no network to ask a server for answers, no
  * memory made executable to run a copy of the compiled reference in, no
- * IPC object that would outlive it) and has its own folder (HOME, TMPDIR; the working folder
+ * IPC object that would outlive it, no file held in memory, and with --user
+ * no process but its own, each of which would have a memory limit of its own) and
+ * has its own folder (HOME, TMPDIR; the working folder
  * with --user), removed after it, at most --memory MB of memory (1024) and
  * files of 64 MB; the whole grading stops starting tests after --budget
  * seconds (3600), and the tests not run fail, said so.
@@ -278,6 +280,36 @@ static int drain(int fd, buffer *b, size_t limit)
     return n < 0 && errno == EINTR;
 }
 
+/* The lines a test printed, from b->s + from on, made to read as its own:
+ * one that begins as the grader's notes do ("grade: ", "float build") gets
+ * "the test printed: " before it, and the last ends in a newline, so that
+ * the grader's note that follows starts a line of its own.  Otherwise a test
+ * could print "grade: passed" and end its output without a newline, and the
+ * terminal then showed its line as the grader's and left out the grader's
+ * own, glued to the test's fifth line (print_reason). */
+static void own_lines(buffer *b, size_t from)
+{
+    static const char *const reserved[] = {"grade: ", "float build (REAL=float)", NULL};
+    if (b->len <= from)
+        return;
+    buffer mine = {0};
+    buf_add(&mine, b->s, from);
+    for (size_t at = from; at < b->len;) {
+        const char *end = memchr(b->s + at, '\n', b->len - at);
+        size_t n = end ? (size_t)(end - (b->s + at)) + 1 : b->len - at;
+        for (int k = 0; reserved[k]; k++)
+            if (strncmp(b->s + at, reserved[k], strlen(reserved[k])) == 0)
+                buf_str(&mine, "the test printed: ");
+        buf_add(&mine, b->s + at, n);
+        at += n;
+    }
+    if (mine.s[mine.len - 1] != '\n')
+        buf_str(&mine, "\n");
+    mine.truncated = b->truncated;
+    free(b->s);
+    *b = mine;
+}
+
 /* What a run is: the reference's --list (trusted, as it is); a test of the
  * reference's suite (no student code: limits and a folder of its own, and
  * with --user the emptied environment, but not that user, whose processes
@@ -304,6 +336,10 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
         if (kind == RUN_STUDENT) {
             struct rlimit procs = {256, 256};
             setrlimit(RLIMIT_NPROC, &procs); /* threads count too */
+            /* What waits in a socket's or pipe's buffer is the kernel's memory, outside RLIMIT_AS, some
+             * 200 KiB a local socket: 2 GiB were held so under 20000 descriptors, 28 MiB at most under 256. */
+            struct rlimit files = {256, 256};
+            setrlimit(RLIMIT_NOFILE, &files);
             scratch_private_ipc();           /* no System V or POSIX IPC (scratch.h) */
             scratch_private_shm();           /* a /dev/shm of its own, of 64 MB */
             if (setgroups(0, NULL) != 0 || setgid(user_gid) != 0 || setuid(user_uid) != 0 || setuid(0) == 0) {
@@ -311,7 +347,7 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
                 _exit(127);
             }
         }
-        if (seal() != 0) { /* no network, no code made at run time (seal.h) */
+        if (seal(kind == RUN_STUDENT) != 0) { /* no network, no code made at run time, one process (seal.h) */
             fprintf(stderr, "grade: cannot seal the test (seccomp)\n");
             _exit(127);
         }
@@ -320,7 +356,7 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
     } else { /* a student's own machine: the environment as it is, HOME and TMPDIR of the run's own */
         putenv(home);
         putenv(tmpdir);
-        seal(); /* where it can: nothing there is sealed against the student */
+        seal(0); /* where it can: nothing there is sealed against the student (chapter 04's test runs rm) */
         execv(argv[0], argv);
     }
 }
@@ -337,6 +373,7 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
  * output). */
 static int run(char *const argv[], double timeout, buffer *out, run_kind kind, buffer *answers)
 {
+    const size_t start = out->len; /* the test's output starts here */
     int fds[2], ans[2] = {-1, -1};
     char folder[128] = "";
     const int student = kind == RUN_STUDENT;
@@ -439,6 +476,8 @@ static int run(char *const argv[], double timeout, buffer *out, run_kind kind, b
     for (int k = 0; k < 4096 && open_out && drain(fds[0], out, OUTPUT_LIMIT); k++)
         ;
     close(fds[0]);
+    if (student)
+        own_lines(out, start);
     if (answers) {
         fcntl(ans[0], F_SETFL, O_NONBLOCK);
         for (int k = 0; k < 8192 && open_ans && drain(ans[0], answers, ANSWERS_LIMIT); k++)
@@ -486,18 +525,33 @@ static char *read_file(const char *path)
 
 static int utf8_length(const unsigned char *p);
 
+/* Whether the UTF-8 sequence at p, of len bytes, sets the direction of text
+ * (U+061C, U+200E, U+200F, U+202A to U+202E, U+2066 to U+2069): an override
+ * turns the rest of its line around on screen, in a terminal that follows
+ * them and in a browser, so that a test's line, or the compiler's quote of a
+ * submitted line, would show other words than it holds. */
+static int bidi_control(const unsigned char *p, int len)
+{
+    if (len == 2)
+        return p[0] == 0xD8 && p[1] == 0x9C;
+    return len == 3 && p[0] == 0xE2 &&
+           ((p[1] == 0x80 && (p[2] == 0x8E || p[2] == 0x8F || (p[2] >= 0xAA && p[2] <= 0xAE))) ||
+            (p[1] == 0x81 && p[2] >= 0xA6 && p[2] <= 0xA9));
+}
+
 /* Prints at most n bytes of s, a text of the test's or the compiler's, for a
  * terminal: a control character but tab and newline, a C1 control (U+0080
- * to U+009F, which terminals obey too) and a byte that is not well-formed
- * UTF-8 each as '?', so that no escape sequence of a submission's reaches
- * the terminal (to clear it, or hide the score table that follows). */
+ * to U+009F, which terminals obey too), a control of the text's direction
+ * (bidi_control) and a byte that is not well-formed UTF-8 each as '?', so
+ * that no escape sequence of a submission's reaches the terminal (to clear
+ * it, or hide the score table that follows). */
 static void print_clean(const char *s, size_t n)
 {
     const unsigned char *p = (const unsigned char *)s, *end = p + n;
     while (p < end && *p) {
         int len = utf8_length(p);
         if (len == 0 || (len == 1 && ((*p < 0x20 && *p != '\t' && *p != '\n') || *p == 0x7F)) ||
-            (p[0] == 0xC2 && p[1] <= 0x9F) || p + len > end) {
+            (p[0] == 0xC2 && p[1] <= 0x9F) || bidi_control(p, len) || p + len > end) {
             putchar('?');
             p += len ? len : 1;
         } else {
@@ -742,7 +796,8 @@ static int utf8_length(const unsigned char *p)
 
 /* Writes s as the body of a JSON string (or XML text when xml): control
  * characters escaped (XML: replaced), and every byte that is not part of
- * well-formed UTF-8 replaced by U+FFFD, so the file is always valid UTF-8. */
+ * well-formed UTF-8 replaced by U+FFFD, so the file is always valid UTF-8;
+ * a control of the text's direction (bidi_control) is replaced too. */
 static void put_escaped(FILE *f, const char *s, int xml)
 {
     const unsigned char *p = (const unsigned char *)s;
@@ -755,7 +810,10 @@ static void put_escaped(FILE *f, const char *s, int xml)
             continue;
         }
         if (n > 1) {
-            fwrite(p, 1, (size_t)n, f);
+            if (bidi_control(p, n))
+                fputs("\xEF\xBF\xBD", f); /* U+FFFD: the direction of text is not the test's to set */
+            else
+                fwrite(p, 1, (size_t)n, f);
             p += n;
             continue;
         }

@@ -31,7 +31,10 @@
 # user namespace of its own, a NUL byte that hid the grader's notes, C1
 # terminal controls in a compile error and a file's name, an assembler that
 # never ends, a preprocessor that takes 9 GB, 60000 files in the submission,
-# 100000 global symbols; besides the correct solution, a correct
+# 100000 global symbols, .gnu.lto_ sections whose options make root's link
+# write a file where they say, memory in child processes and in memory files
+# (memfd) and in local sockets' buffers, a test's lines that read as the grader's notes and hid them (no
+# newline at the end, a right-to-left override); besides the correct solution, a correct
 # one written otherwise and an empty submission.  Prints one line per
 # submission (score, expected, what was checked) and fails naming every
 # expectation that does not hold (HOSTILE_ONLY="table hang" runs only
@@ -145,6 +148,11 @@ make_submission() {
         (cd "$sub" && mkdir junk && cd junk && seq -f 'notes-%05g.txt' 1 60000 | xargs touch) ;;
     compile_memory | many_symbols) cat "$here/$name.c.in" "$here/alternative.c" >"$sub/lambert.c" ;;
     keyring) sed "s/\"rt-litter\"/\"rt-litter-$run_id\"/" "$here/keyring.c" >"$sub/lambert.c" ;; # a key of an earlier run may stay
+    lto_root) # a correct lambert compiled with -flto on the student's machine, its options writing a file anywhere
+        (cd "$repo" && gcc -O2 -flto -I common -I chapters -c "$here/alternative.c" -o "$work/lto.o" \
+            -Xassembler --MD="$root/source/written-by-the-link") &&
+            "$here/lto-from-object.sh" "$work/lto.o" >"$sub/lambert.c" &&
+            rm -f "$root/source/written-by-the-link" ;; # (written by that compile too, on the student's machine)
     *) cp "$here/$name.c" "$sub/lambert.c" ;;
     esac
 }
@@ -153,7 +161,8 @@ make_submission() {
 cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:0 define_run_group:0 table:0
 asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 copy:0 exec_reference:0 symlink:0 memory:0 litter:0
 bad_utf8:0 escape:0 tty:0 oracle:0 hang:0 quote_asm:0 hasinc_asm:0 pragma_quote_asm:0 pragma_quote_nop:0
-asm_statement:0 stop_killer:0 keyring:0 nul:0 c1_escape:0 compile_hang:0 compile_memory:0 many_files:14 many_symbols:0 shm_memory:0 userns_memory:0"
+asm_statement:0 stop_killer:0 keyring:0 nul:0 c1_escape:0 compile_hang:0 compile_memory:0 many_files:14 many_symbols:0 shm_memory:0 userns_memory:0
+lto_root:0 fork_memory:0 memfd_memory:0 report_spoof:0 socket_memory:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -207,7 +216,7 @@ sys.exit(1)' || problem "oracle: its server does not answer"
         problem "c1_escape: a C1 control (CSI) reached the terminal: $(LC_ALL=C grep -c "$(printf '\302\233')" "$work/$name.out") lines" ;;
     tty) grep -q "after grading the terminal gave: nothing" "$work/$name.out" ||
         problem "tty: a line typed into the grading's terminal: $(grep -a 'terminal gave' "$work/$name.out")" ;;
-    memory | shm_memory | userns_memory)
+    memory | shm_memory | userns_memory | fork_memory | memfd_memory | socket_memory)
         got=$(grep -ho 'memory: got [0-9]* MiB' "$json" | awk '{ print $3 }' | sort -n | tail -n 1)
         [ -n "$got" ] && [ "$got" -le 1024 ] || problem "memory: the test took ${got:-?} MiB (limit 1024)" ;;
     litter)
@@ -231,6 +240,16 @@ for ring in (-4, -5, libc.syscall(keyctl, 22, -1, -4)):
     if ring != -1 and libc.syscall(keyctl, 10, ring, b"user", sys.argv[1].encode(), 0) > 0:
         print(ring)' "rt-litter-$run_id" 2>/dev/null)
         [ -z "$left" ] || problem "keyring: keys of $user left after grading (keyrings $left)" ;;
+    lto_root) [ ! -e "$root/source/written-by-the-link" ] ||
+        problem "lto_root: the link wrote, as root, where the submission chose: $(head -c 80 "$root/source/written-by-the-link")" ;;
+    report_spoof) # every failed test's reason ends in the grader's note, on a line of its own; no bidi control shown
+        failed=$(grep -c '^  FAIL  test_' "$work/$name.out")
+        notes=$(grep -c '^        grade: failed' "$work/$name.out")
+        [ "$notes" = "$failed" ] || problem "report_spoof: the grader's note shown for $notes of $failed failed tests"
+        ! grep -q '^        grade: passed' "$work/$name.out" ||
+            problem "report_spoof: the test's 'grade: passed' shown as the grader's"
+        ! grep -q "$(printf '\342\200\256')" "$work/$name.out" "$json" ||
+            problem "report_spoof: a bidi control in the report" ;;
     many_symbols) [ "$took" -le 60 ] || problem "many_symbols: grading took ${took}s (a budget of 40 s)"
         grep -q "refused: it holds a definition of v00000, .*, and 99995 more definitions" "$work/$name.out" ||
             problem "many_symbols: not refused as 100000 definitions" ;;

@@ -36,9 +36,11 @@
 #define REFUSE(error) RETURN(SECCOMP_RET_ERRNO | (error))
 #define ALLOW RETURN(SECCOMP_RET_ALLOW)
 
-int seal(void)
+int seal(int one_process)
 {
 #ifdef NATIVE_ABI
+    /* a process that is not a thread of the test's (fork, vfork, posix_spawn: clone without CLONE_THREAD) */
+    const unsigned new_process = one_process ? SECCOMP_RET_ERRNO | EAGAIN : SECCOMP_RET_ALLOW;
     struct sock_filter code[] = {
         BPF_STMT(BPF_LD | BPF_W | BPF_ABS, offsetof(struct seccomp_data, arch)),
         IF_EQUAL(NATIVE_ABI, 1, 0),
@@ -50,6 +52,8 @@ int seal(void)
 #endif
         IF_EQUAL(SYS_io_uring_setup, 0, 1),
         REFUSE(ENOSYS),
+        IF_EQUAL(SYS_memfd_create, 0, 1), /* a file held in memory, outside RLIMIT_AS */
+        REFUSE(EACCES),
         IF_EQUAL(SYS_socket, 0, 4), /* any family but AF_UNIX */
         ARG(0),
         IF_EQUAL(AF_UNIX, 0, 1),
@@ -86,12 +90,23 @@ int seal(void)
         REFUSE(EACCES),
         IF_EQUAL(SYS_clone3, 0, 1), /* its flags lie in memory, out of the filter's sight: the C library then uses clone */
         REFUSE(ENOSYS),
-        IF_EQUAL(SYS_unshare, 1, 0), /* no user namespace, where a test may mount memory of its own */
-        IF_EQUAL(SYS_clone, 0, 4),
+        IF_EQUAL(SYS_unshare, 0, 4), /* no user namespace, where a test may mount memory of its own */
         ARG(0),
         IF_BITS(CLONE_NEWUSER, 0, 1),
         REFUSE(EPERM),
         ALLOW,
+        IF_EQUAL(SYS_clone, 0, 6), /* the same; and with one_process, threads only */
+        ARG(0),
+        IF_BITS(CLONE_NEWUSER, 0, 1),
+        REFUSE(EPERM),
+        IF_BITS(CLONE_THREAD, 0, 1),
+        ALLOW,
+        RETURN(new_process),
+#ifdef SYS_fork /* x86-64's fork and vfork (aarch64 has only clone) */
+        IF_EQUAL(SYS_fork, 1, 0),
+        IF_EQUAL(SYS_vfork, 0, 1),
+        RETURN(new_process),
+#endif
         IF_EQUAL(SYS_personality, 0, 4), /* only asked, never set (READ_IMPLIES_EXEC) */
         ARG(0),
         IF_EQUAL(0xffffffff, 0, 1),
@@ -104,6 +119,7 @@ int seal(void)
         return -1;
     return 0;
 #else
+    (void)one_process;
     return -1;
 #endif
 }

@@ -27,6 +27,14 @@
  *     and clone3, whose flags the filter cannot read, ENOSYS: the C library
  *     then uses clone): in one a test may mount a tmpfs, memory outside
  *     RLIMIT_AS in a mount no clean-up sees (2 GiB a test were taken so);
+ *   - no file held in memory without a folder (memfd_create fails, EACCES):
+ *     its pages sit outside RLIMIT_AS as long as a descriptor holds it, and
+ *     a test may open hundreds (2 GiB a test were taken so);
+ *   - with one_process, no process but the test's own: fork, vfork and clone
+ *     without CLONE_THREAD (posix_spawn, system) fail, EAGAIN, as at a limit
+ *     on processes.  RLIMIT_AS is a process's: each child has one of its
+ *     own, so that a test of three children took 2 GiB under a limit of 1;
+ *     threads share their process's;
  *   - a system call of another ABI than the machine's own (32-bit calls on
  *     x86-64) kills the process.
  * Files, threads and pipes work as before.
@@ -36,6 +44,6 @@
 
 /* 0, or -1 when the filter cannot be installed (a kernel without seccomp,
  * a machine other than x86-64 and aarch64). */
-int seal(void);
+int seal(int one_process);
 
 #endif
