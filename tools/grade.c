@@ -356,7 +356,7 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
     } else { /* a student's own machine: the environment as it is, HOME and TMPDIR of the run's own */
         putenv(home);
         putenv(tmpdir);
-        seal(0); /* where it can: nothing there is sealed against the student (chapter 04's test runs rm) */
+        seal(0); /* where it can: nothing there is sealed against the student, whose own machine it is */
         execv(argv[0], argv);
     }
 }
