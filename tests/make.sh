@@ -174,6 +174,13 @@ check "make prints one line per program, V=1 every command" quiet_build
 check "a suite prints one line, its output goes to a log" quiet_suites
 check "a renderer before chapter 11 warns of a big mesh" big_mesh_warning
 check "a bad knob names the program and --help" knob_message
+# The grader lets a student's test start no process (fork, system, popen:
+# docs/instructor-guide.md): no graded suite, nor what it links of tests/, may.
+no_processes() {
+    ! grep -nE '\<(system|popen|fork|vfork|posix_spawnp?|exec[lv]p?e?)[[:space:]]*\(' \
+        tests/test_[0-9][0-9]_*.c tests/suite.c tests/answers.c tests/image_compare.c tests/seeded/*.c tests/*.h
+}
+check "no graded suite starts a process" no_processes
 # A student's copy (make handout) describes only what it has, refuses the
 # targets it cannot run with one line, and leaves out the instructor's texts.
 student_copy() {
