@@ -567,6 +567,20 @@ static void test_roots_at_any_scale(void **state)
                              found ? describe("%a and %a", (double)t0, (double)t1) : "false (no roots)");
             }
         }
+    /* The radius the largest length: a sphere of radius 2^top around the ray's start, which is at the origin,
+     * d = (0, 0, 1): the roots are -2^top and 2^top exactly, R^2 is beyond the reals unless R is scaled too */
+    const sphere big = {vec3_make(0, 0, 0), (real)ldexp(1, top)};
+    const ray from_centre = {vec3_make(0, 0, 0), vec3_make(0, 0, 1)};
+    for (int f = 0; f < 2; f++) {
+        real t0 = 0, t1 = 0;
+        const bool found = sphere_roots(&big, from_centre, f ? SPHERE_TEXTBOOK : SPHERE_ROBUST, &t0, &t1);
+        if (!found || real_fmin(t0, t1) != -big.radius || real_fmax(t0, t1) != big.radius)
+            fail_msg("sphere_roots(centre (0, 0, 0), radius 2^%d, p (0, 0, 0), d (0, 0, 1), %s)\n    expected roots "
+                     "%a and %a\n    got      %s\n    likely mistake: sphere_roots is given; the scale of the "
+                     "lengths is that of p, c and R together, the radius too",
+                     top, f ? "textbook" : "robust", (double)-big.radius, (double)big.radius,
+                     found ? describe("%a and %a", (double)t0, (double)t1) : "false (no roots)");
+    }
 }
 
 /* ---- the nearest root in the open window ------------------------------------ */
