@@ -661,12 +661,19 @@ static void test_normal(void **state)
     /* The tilted triangle: (b - a) x (c - a) = (3, -3, -1) x (-3, -2, 2) = (-8, -3, -15). */
     vec3 expected = vec3_scale(vec3_make(-8, -3, -15), 1 / real_sqrt(8 * 8 + 3 * 3 + 15 * 15));
     assert_vec3_close(expected, triangle_normal(&tilted), 4 * REAL_EPSILON);
-    /* Legs of 1e15 and 1e-15: |n|^2 would overflow or underflow in float without care. */
-    const real scales[] = {(real)1e15, (real)1e-15};
-    for (int k = 0; k < 2; k++) {
+    /* Legs of 1e15 and 1e-15: |n|^2 would overflow or underflow in float without care; legs of 1e100 and
+     * 1e-100 make (b - a) x (c - a) about 1e200 and 1e-200, finite doubles whose squares, in |n|, are not. */
+    const bool single = sizeof(real) < sizeof(double);
+    const real scales[] = {(real)1e15, (real)1e-15, single ? (real)1e15 : (real)1e100,
+                           single ? (real)1e-15 : (real)1e-100};
+    for (int k = 0; k < 4; k++) {
         real f = scales[k];
         triangle s = {vec3_scale(tilted.a, f), vec3_scale(tilted.b, f), vec3_scale(tilted.c, f)};
-        assert_vec3_close(expected, triangle_normal(&s), TOL);
+        assert_vec3_why(expected, triangle_normal(&s), TOL,
+                        describe("triangle_normal of the tilted triangle scaled by %g", (double)f),
+                        "triangle_normal is given: (b - a) x (c - a) scaled by its largest component before it "
+                        "is normalized, so that |n| neither overflows nor underflows",
+                        NULL, 0);
     }
 }
 
