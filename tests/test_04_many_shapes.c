@@ -219,6 +219,16 @@ static void test_closest_hit_in_any_order(void **state)
                     assert_int_equal(expected[e].shape, hit.shader);
                 }
                 expect_closest(&list, down_z, 15, REAL_INFINITY, -1, 0, 0, "t_min passed on to every surface?");
+                /* d twice as long: every t halves (a power of two: exactly), the front triangle at t 4, the
+                 * ball at 4.5, though the front triangle is 8 away */
+                int front = 0;
+                while (order[front] != FRONT)
+                    front++;
+                const ray down_z_twice = {{0, 0, 10}, {0, 0, -2}};
+                expect_closest(&list, down_z_twice, 0, REAL_INFINITY, front, 4, TOL(16),
+                               describe("list order %d%d%d%d, d of length 2: is t_best the hit's t, the ray's "
+                                        "parameter, not its distance from p?",
+                                        order[0], order[1], order[2], order[3]));
                 surface_list_free(&list);
             }
         }
@@ -416,6 +426,17 @@ static void test_hit_record_fields(void **state)
     assert_vec3_close(vec3_make(0, 1, 0), hit.normal, TOL(1));
     assert_close(0, hit.beta, 0);
     assert_close(0, hit.gamma, 0);
+    /* Off the sphere's centre line, from (3.3, 4, 0) down -y: x - c = (0.3, 0.4, 0), |x - c| = 0.5, t 3.6,
+     * normal (0.6, 0.8, 0).  0.3 and 3.3 are not exact: the point carries a few roundings of size 4, the
+     * normal those divided by the radius 0.5, within TOL(16). */
+    const ray off_centre = {{(real)3.3, 4, 0}, {0, -1, 0}};
+    expect_a_hit(&list, off_centre, 0, REAL_INFINITY, 0, "a hit on surface 0, the sphere, at t 3.6", NO_HIT_HINT,
+                 &hit);
+    assert_vec3_why(vec3_make((real)0.6, (real)0.8, 0), hit.normal, TOL(16),
+                    "the sphere centre (3, 0, 0), radius 0.5, ray p (3.3, 4, 0), d (0, -1, 0): hit.normal",
+                    "the sphere's unit normal at the hit point x = p + t d, pointing out of the sphere (README, \"The "
+                    "hit record\")",
+                    NULL, 0);
     surface_list_free(&list);
 }
 
@@ -498,6 +519,11 @@ static void test_box_in_scene(void **state)
                 assert_int_equal(1, hit.source);
                 assert_close(4, hit.t, TOL(4));
                 assert_vec3_close(outward, hit.normal, TOL(1));
+                assert_true_why(hit.face == want - 1,
+                                "a hit on the box's triangle %d (surface %d of the list)\n    expected hit.face %d\n"
+                                "    got      %d\n    likely mistake: the hit record's face says which piece of its "
+                                "source was hit, a Box's triangle (README, \"The hit record\")",
+                                want - 1, want, want - 1, hit.face);
             }
         }
     }
