@@ -232,6 +232,12 @@ static void test_back_of_triangle_lit(void **state)
     assert_vec3_close(vec3_make(0, 0, 1), last.hit.normal, TOL(1)); /* geometric: untouched */
     assert_vec3_close(vec3_make(0, 0, -1), last.n, TOL(1));         /* shading: towards the viewer */
     assert_vec3_close(vec3_make(0, 0, -1), last.v, 0);              /* v = -normalize(d) */
+    /* The same ray with d four times as long (a power of two: the same hit, v exactly the same) */
+    trace_scene(&desc, (ray){from_behind.p, {0, 0, 4}});
+    assert_vec3_why(vec3_make(0, 0, -1), last.v, 0, "the shading point's v for a ray with d = (0, 0, 4)",
+                    "v = -normalize(ray.direction), a unit vector whatever the length of d (README, \"Shading a "
+                    "hit\")",
+                    NULL, 0);
     scene_free(&desc);
 }
 
@@ -293,6 +299,15 @@ static void test_trace_uses_the_query(void **state)
     assert_int_equal(2, fake.calls);
     for (int k = 0; k < RAY_KINDS; k++) /* trace counts nothing itself; Lambert casts nothing */
         assert_int_equal(0, rays[k]);
+    /* A second light, twice as close and four times as bright (16 times the first's L): the stage shades
+     * by the first light alone, the lecture's one light */
+    scene_add_light(&desc, (scene_light){.position = {0, 5, 0}, .intensity = {400, 400, 400}});
+    lit = trace(&tr, down, 0, REAL_INFINITY, 0, rays);
+    assert_close_why(1, lit.g, TOL(1),
+                     "the fake hit at the origin, n (0, 1, 0), lights 100 at (0, 10, 0) and 400 at (0, 5, 0)",
+                     "the stage's shade function takes the scene's first light as the lecture's one light "
+                     "(README, \"The stage's shade function\")",
+                     NULL, 0);
     scene_free(&desc);
 }
 
