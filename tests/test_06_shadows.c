@@ -297,6 +297,29 @@ static void test_shadow_rays_only_when_needed(void **state)
     assert_int_equal(1, rays[RAY_SHADOW]);
     assert_close(0.25 * 9 * 3 / pow(11, 1.5), c.r, TOL(1) * 30); /* the point is ~24 from the origin */
     shading_release(view);
+
+    /* a second light, 2 above the point, 4 strong: the stage still shades by the first light alone */
+    scene_add_light(&desc, (scene_light){.position = vec3_add(spot, vec3_make(0, 2, 0)), .intensity = {4, 4, 4}});
+    view = shade_at(&desc, eye, spot, &sp);
+    c = shade_shadows(&view->tr, &sp, 0, rays);
+    assert_close_why(0.25 * 9 * 3 / pow(11, 1.5), c.r, TOL(1) * 30,
+                     "the floor point below the eye, lights 9 at the point + (1, 3, 1) and 4 at the point + (0, 2, 0)",
+                     "the stage shades by the scene's first light, as chapter 05 (README, \"The stage's shade "
+                     "function\")",
+                     NULL, 0);
+    shading_release(view);
+
+    /* the floor seen from below, the first light below it too (the point + (1, -3, 1)): the shading normal
+     * is -y, towards the viewer, and the light is in front of it: 0.25 * 9 * (3/sqrt(11)) / 11 again */
+    desc.lights[0].position = vec3_add(spot, vec3_make(1, -3, 1));
+    view = shade_at(&desc, vec3_add(spot, vec3_make(1, -7, 4)), spot, &sp);
+    c = shade_shadows(&view->tr, &sp, 0, rays);
+    assert_close_why(0.25 * 9 * 3 / pow(11, 1.5), c.r, TOL(1) * 30,
+                     "the floor (geometric normal +y) seen from below, the light 9 at the point + (1, -3, 1)",
+                     "the Lambert term with the shading normal sp->n, turned towards the viewer, the one "
+                     "light_blocked tested (README, \"The stage's shade function\")",
+                     NULL, 0);
+    shading_release(view);
     scene_free(&desc);
 }
 
@@ -346,6 +369,19 @@ static void test_spawn_ray_to_far_end(void **state)
         real expected = p == 0 ? 0 : p == 1 ? (real)1e-3 : EPS_BOUND_ULPS * REAL_EPSILON * 10;
         assert_close(expected, stop, TOL(16) + expected / 1000);
     }
+    /* A light far from the origin, 1000 from a point near it: a surface through the light is computed as
+     * far off as the light's own coordinates allow, so the bound's segment stops 32 REAL_EPSILON times its
+     * largest coordinate (800) before it.  t_max near 1 is rounded by REAL_EPSILON / 4 at most, 250
+     * REAL_EPSILON of stop at |d| = 1000: 256 REAL_EPSILON, a hundredth of the stop. */
+    const vec3 far_light = {10, 600, 800};
+    ray r = spawn_ray_to(&sp, far_light, EPS_BOUND, &t_max);
+    real stop = (1 - t_max) * vec3_length(r.d);
+    assert_close_why(EPS_BOUND_ULPS * REAL_EPSILON * 800, stop, 256 * REAL_EPSILON,
+                     "spawn_ray_to from the point (10, 0, 0) to the light (10, 600, 800), policy bound: how far "
+                     "the segment stops before the light",
+                     "spawn_ray_to is given: its back-off is the bound of the larger coordinates, the target's or "
+                     "the ray's start (README, \"One way out for every secondary ray\")",
+                     NULL, 0);
 }
 
 /* ---- acne and leaks ------------------------------------------------------------------------- */
