@@ -257,6 +257,16 @@ static void test_mirror_ray_reaches_probe(void **state)
     assert_close_why(0.8 * 2.5, L.r, TOL(6), describe("%s: the radiance the eye sees, red", bright), unbounded, sb, 1);
     assert_close_why(0.25 * 6, L.b, TOL(6), describe("%s: the radiance the eye sees, blue", bright), unbounded,
                      NULL, 0);
+    /* A mirror of blue alone, k_m = (0, 0, 0.5): red and green reflect nothing, blue does, 0.5 * 6 = 3 */
+    desc.shaders[desc.surfaces[0].shader].mirror_coefficient = color_make(0, 0, (real)0.5);
+    uint64_t blue_rays[RAY_KINDS] = {0};
+    L = trace_one(&desc, &knobs, (ray){eye, d}, blue_rays);
+    assert_close_why(0.5 * 6, L.b, TOL(6),
+                     "an eye ray onto a tilted mirror of blue alone (k_m = (0, 0, 0.5)), a probe of colour "
+                     "(2.5, 1.25, 6) in its mirror direction: the radiance the eye sees, blue",
+                     "a shader is a mirror when any channel of k_m is above 0, and a path goes on while the largest "
+                     "channel of its weight is (README, \"The glazed surface\" and \"Calling trace again\")",
+                     NULL, 0);
     scene_free(&desc);
 
     /* The mirror ray's window is (0, infinity): a probe as far away as a sky, centred 1e32 r away (radius 1e31,
