@@ -898,12 +898,16 @@ static color trace_10(const scene *desc, ray r, uint64_t *rays)
 /* One triangle far from the origin with three different vertex normals, lit
  * by one light without shadows in the way: the radiance at a point inside is
  * k_d max(0, n . l) I / r^2 with n the INTERPOLATED normal at the hit's
- * (beta, gamma), not the flat one; RGBNormals shows (n + 1) / 2 of it. */
+ * (beta, gamma), not the flat one; RGBNormals shows (n + 1) / 2 of it.  Seen
+ * and lit from below, the Lambertian triangle shades with -n, turned to the
+ * viewer's side. */
 static void test_smooth_shading(void **state)
 {
     (void)state;
     vec3 offset = {-37.25, 12.5, 53.125};
-    for (int rgb = 0; rgb < 2; rgb++) {
+    for (int run = 0; run < 3; run++) {
+        const int rgb = run == 1;
+        const real side = run == 2 ? -1 : 1; /* the viewer and the light above (+z) or below the triangle */
         scene desc;
         scene_init(&desc);
         mesh m = {.n_positions = 3, .n_normals = 3, .n_faces = 1};
@@ -924,15 +928,17 @@ static void test_smooth_shading(void **state)
         s.diffuse_color = color_make((real)0.3, (real)0.2, (real)0.1);
         int sk = scene_add_shader(&desc, s);
         scene_add_surface(&desc, (scene_surface){.kind = SURFACE_MESH, .shader = sk, .mesh = mk});
-        scene_light light = {.position = vec3_add(offset, vec3_make(1, 1, 6)), .intensity = {20, 20, 20}};
+        scene_light light = {.position = vec3_add(offset, vec3_make(1, 1, 6 * side)), .intensity = {20, 20, 20}};
         scene_add_light(&desc, light);
         real beta = (real)0.3, gamma = (real)0.45, alpha = 1 - beta - gamma;
         vec3 p = vec3_add(vec3_add(vec3_scale(a, alpha), vec3_scale(b, beta)), vec3_scale(c, gamma));
-        vec3 eye = vec3_add(p, vec3_make((real)0.4, (real)-0.3, 5));
+        vec3 eye = vec3_add(p, vec3_make((real)0.4, (real)-0.3, 5 * side));
         uint64_t rays[RAY_KINDS] = {0};
         color L = trace_10(&desc, (ray){eye, vec3_sub(p, eye)}, rays);
         vec3 n = vec3_normalize(vec3_add(vec3_add(vec3_scale(m.normals[0], alpha), vec3_scale(m.normals[1], beta)),
                                          vec3_scale(m.normals[2], gamma)));
+        const vec3 n_raw = n; /* RGBNormals shows the interpolated normal as it is */
+        n = vec3_scale(n, side);  /* Lambert: on the viewer's side of the face */
         /* The hit's beta and gamma are computed from coordinates of size |p| ~ 66
          * over edges of size ~3: ~100 roundings relative; n and the cosine
          * inherit that; a margin of 20. */
@@ -944,19 +950,23 @@ static void test_smooth_shading(void **state)
         suspect_vec3 normals[INTERPOLATE_MISTAKES];
         normal_mistakes(normals, m.normals, beta, gamma);
         const char *input = describe("chapter 10's stage: a triangle with corner normals %s, the eye ray to the point "
-                                     "at (beta, gamma), %s",
+                                     "at (beta, gamma)%s, %s",
                                      interpolate_input(m.normals[0], m.normals[1], m.normals[2], beta, gamma),
+                                     side < 0 ? " from below, the light below too" : "",
                                      rgb ? "RGBNormals: (n + 1) / 2" : "Lambertian: k_d I max(0, n . l) / r^2");
-        const char *hint = "the shading normal is vertex_normal's (given): interpolate_vec3 of the corner normals, "
-                           "normalized; interpolate_vec3 must give (1 - beta - gamma) n_a + beta n_b + gamma n_c";
+        const char *hint = side < 0 ? "the shading normal is vertex_normal's, turned to the side of the normal that "
+                                      "faces the viewer, sp->n (README, \"Interpolated normals\")"
+                                    : "the shading normal is vertex_normal's (given): interpolate_vec3 of the corner "
+                                      "normals, normalized; interpolate_vec3 must give (1 - beta - gamma) n_a + beta "
+                                      "n_b + gamma n_c";
         if (rgb) {
             suspect_vec3 shown[INTERPOLATE_MISTAKES];
             for (int k = 0; k < INTERPOLATE_MISTAKES; k++) {
                 vec3 n_k = shading_normal(normals[k].value, n_g);
                 shown[k] = (suspect_vec3){vec3_scale(vec3_add(n_k, vec3_make(1, 1, 1)), (real)0.5), normals[k].mistake};
             }
-            assert_vec3_why(vec3_scale(vec3_add(n, vec3_make(1, 1, 1)), (real)0.5), vec3_make(L.r, L.g, L.b), tol, input,
-                            hint, shown, INTERPOLATE_MISTAKES);
+            assert_vec3_why(vec3_scale(vec3_add(n_raw, vec3_make(1, 1, 1)), (real)0.5), vec3_make(L.r, L.g, L.b), tol,
+                            input, hint, shown, INTERPOLATE_MISTAKES);
         } else {
             vec3 to_light = vec3_sub(light.position, p);
             real r2 = vec3_length_squared(to_light);
@@ -977,6 +987,42 @@ static void test_smooth_shading(void **state)
         }
         scene_free(&desc);
     }
+
+    /* A matte triangle in a plane z = const whose corner normals are all N = (1, 0, 0.3) / |(1, 0, 0.3)|, seen
+     * at a grazing angle, v = (-1, 0, 0.2) / |(-1, 0, 0.2)|: the mirror direction about N, 2 (N . v) N - v,
+     * points below the face, but a matte point casts no mirror ray and keeps N; the light 3 straight above
+     * the point: L = k_d I (N . l) / r^2 = 0.5 * 9 * 0.3 / |(1, 0, 0.3)| / 9.  N is interpolated from equal
+     * normals, the point is ~66 from the origin: a few hundred roundings at most, 1e3 REAL_EPSILON. */
+    scene desc;
+    scene_init(&desc);
+    mesh m = {.n_positions = 3, .n_normals = 1, .n_faces = 1};
+    m.positions = malloc(sizeof *m.positions * 3);
+    m.normals = malloc(sizeof *m.normals);
+    m.faces = malloc(sizeof *m.faces);
+    assert_non_null(m.positions);
+    assert_non_null(m.normals);
+    assert_non_null(m.faces);
+    m.positions[0] = offset, m.positions[1] = vec3_add(offset, vec3_make(4, 0, 0));
+    m.positions[2] = vec3_add(offset, vec3_make(0, 4, 0));
+    m.normals[0] = vec3_normalize(vec3_make(1, 0, (real)0.3));
+    m.faces[0] = (mesh_face){{0, 1, 2}, {-1, -1, -1}, {0, 0, 0}};
+    int mk = scene_add_mesh(&desc, m);
+    scene_shader matte = scene_default_shader(SHADER_LAMBERTIAN);
+    matte.diffuse_color = color_make((real)0.5, (real)0.5, (real)0.5);
+    const int sk = scene_add_shader(&desc, matte);
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_MESH, .shader = sk, .mesh = mk});
+    const vec3 p = vec3_add(offset, vec3_make((real)1.2, (real)0.8, 0));
+    scene_add_light(&desc, (scene_light){.position = vec3_add(p, vec3_make(0, 0, 3)), .intensity = {9, 9, 9}});
+    uint64_t rays[RAY_KINDS] = {0};
+    const color L = trace_10(&desc, (ray){vec3_add(p, vec3_make(-5, 0, 1)), vec3_make(5, 0, -1)}, rays);
+    assert_close_why(0.5 * 0.3 / sqrt(1.09), L.r, 1e3 * REAL_EPSILON,
+                     "a matte smooth triangle, every corner normal (1, 0, 0.3) normalized, seen at a grazing angle "
+                     "whose mirror direction about that normal is below the face, the light straight above",
+                     "only a point that casts mirror rays (a mirror coefficient, or glass) has its normal turned "
+                     "to keep the mirror direction above the face; a matte point keeps n_s (README, \"A mirror "
+                     "direction below the surface\")",
+                     NULL, 0);
+    scene_free(&desc);
 }
 
 /* A textured Lambertian sphere: the diffuse colour is the texel at the
@@ -1017,6 +1063,45 @@ static void test_textured_sphere(void **state)
                     "long)(u W + 1/2), row (long long)((1 - v) H + 1/2) (test_nearest names its mistakes)",
                     NULL, 0);
     assert_false(texel[0] == texel[1] && texel[1] == texel[2]); /* a coloured texel, not magenta, not grey */
+    scene_free(&desc);
+
+    /* A textured mesh triangle in a plane z = const (normal +z), corners a, b = a + (4, 0, 0), c = a + (0, 4, 0)
+     * with texture coordinates (0.1, 0.1), (0.9, 0.1), (0.1, 0.9), hit at beta 0.55, gamma 0.2: (u, v) =
+     * (0.1 + 0.8 beta, 0.1 + 0.8 gamma) = (0.54, 0.26), texel column (long long)(0.54 16 + 1/2) = 9, row
+     * (long long)(0.74 8 + 1/2) = 6; beta and gamma swapped would read (0.26, 0.54), texel (4, 4).  The hit's
+     * (beta, gamma) carry roundings of coordinates ~60 over edges of 4, far below the 0.1 of a texel's edge. */
+    scene_init(&desc);
+    assert_int_equal(0, globe_texture(&img, 16, 8, 2));
+    s.texture = scene_add_texture(&desc, (scene_texture){.kind = TEXTURE_REPEAT, .image = img});
+    sk = scene_add_shader(&desc, s);
+    mesh m = {.n_positions = 3, .n_uvs = 3, .n_faces = 1};
+    m.positions = malloc(sizeof *m.positions * 3);
+    m.uvs = malloc(sizeof *m.uvs * 3);
+    m.faces = malloc(sizeof *m.faces);
+    assert_non_null(m.positions);
+    assert_non_null(m.uvs);
+    assert_non_null(m.faces);
+    m.positions[0] = center, m.positions[1] = vec3_add(center, vec3_make(4, 0, 0));
+    m.positions[2] = vec3_add(center, vec3_make(0, 4, 0));
+    m.uvs[0] = (mesh_uv){(real)0.1, (real)0.1}, m.uvs[1] = (mesh_uv){(real)0.9, (real)0.1};
+    m.uvs[2] = (mesh_uv){(real)0.1, (real)0.9};
+    m.faces[0] = (mesh_face){{0, 1, 2}, {0, 1, 2}, {-1, -1, -1}};
+    scene_add_surface(&desc, (scene_surface){.kind = SURFACE_MESH, .shader = sk, .mesh = scene_add_mesh(&desc, m)});
+    p = vec3_add(center, vec3_make((real)(4 * 0.55), (real)(4 * 0.2), 0));
+    scene_add_light(&desc, (scene_light){.position = vec3_add(p, vec3_make(0, 0, 3)), .intensity = {9, 9, 9}});
+    eye = vec3_add(p, vec3_make((real)0.5, (real)0.25, 10));
+    L = trace_10(&desc, (ray){eye, vec3_sub(p, eye)}, rays);
+    texel = desc.textures[0].image.rgb + (6 * 16 + 9) * 3;
+    const unsigned char *swapped = desc.textures[0].image.rgb + (4 * 16 + 4) * 3;
+    assert_false(texel[0] == swapped[0] && texel[1] == swapped[1] && texel[2] == swapped[2]);
+    /* the light straight above the point: cos = 1, r = 3, I / r^2 = 1 */
+    assert_vec3_why(vec3_make((real)(texel[0] / 255.0), (real)(texel[1] / 255.0), (real)(texel[2] / 255.0)),
+                    vec3_make(L.r, L.g, L.b), 1e3 * REAL_EPSILON,
+                    "a textured mesh triangle, corner texture coordinates (0.1, 0.1), (0.9, 0.1), (0.1, 0.9), lit "
+                    "straight above the point at beta 0.55, gamma 0.2: texel (9, 6) of 16 x 8",
+                    "the point's (u, v) is interpolate_uv of its face's corner coordinates (vt) with the hit's "
+                    "beta and gamma, in the order of the face's corners (README, \"The shade function\")",
+                    NULL, 0);
     scene_free(&desc);
 }
 
