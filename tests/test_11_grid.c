@@ -482,6 +482,11 @@ static void expect_range(const grid *g, vec3 lo, vec3 hi, const int *want_first,
             {right_first, clamp_cell(floor((double)f_hi_hi), -1, n - 1),
              "f_hi counted from the grid's high corner: f_lo and f_hi both count from lo_a, f_hi = (box_hi_a - lo_a) "
              "/ cell_a"},
+            {a ? clamp_cell(ceil(F) - 1, 0, g->n[0]) : NAN, right_last,
+             "first clamped to the x axis's count of cells: each axis a to its own, 0 .. n_a"},
+            {a ? clamp_cell(ceil(F) - 1, 0, g->n[0]) : NAN, a ? clamp_cell(floor(L), -1, g->n[0] - 1) : NAN,
+             "clamped to the x axis's count of cells: each axis a to its own, first to 0 .. n_a, last to -1 .. "
+             "n_a - 1"},
         };
         /* beyond an int's range the likely mistake is the conversion, whatever else the result looks like */
         const bool beyond_int = fabs(F) > 2147483647.0 || fabs(L) > 2147483647.0;
@@ -550,6 +555,18 @@ static void test_cell_range(void **state)
         vec3 lo = vec3_make(real_fmin(a.x, b.x), real_fmin(a.y, b.y), real_fmin(a.z, b.z));
         vec3 hi = vec3_make(real_fmax(a.x, b.x), real_fmax(a.y, b.y), real_fmax(a.z, b.z));
         expect_range(&h, lo, hi, NULL, NULL);
+    }
+    /* The same boxes in a grid with more cells along y and z than along x (7, 11, 13): each axis is clamped
+     * to its own count of cells, a box's first cell along z reaches 12. */
+    rng_state = 19;
+    grid h2 = {.lo = h.lo, .n = {7, 11, 13}};
+    h2.cell = vec3_make((real)0.93, (real)0.64, (real)0.27);
+    for (int k = 0; k < 2000; k++) {
+        const vec3 box_lo = {-5, 1, 9}, box_hi = {2, 8, 12};
+        vec3 a = uniform_vec(box_lo, box_hi), b = uniform_vec(box_lo, box_hi);
+        vec3 lo = vec3_make(real_fmin(a.x, b.x), real_fmin(a.y, b.y), real_fmin(a.z, b.z));
+        vec3 hi = vec3_make(real_fmax(a.x, b.x), real_fmax(a.y, b.y), real_fmax(a.z, b.z));
+        expect_range(&h2, lo, hi, NULL, NULL);
     }
 }
 
