@@ -16,21 +16,26 @@ failed=0
 
 # plant NAME CHAPTER FILE SED TEST MUST_NOT PATTERN...: STUDENT=1 with the
 # other chapters from the reference when FILE is "skeleton" (the untouched
-# exercise), else FILE of solutions/CHAPTER edited by SED.
+# exercise), else FILE of solutions/CHAPTER edited by SED; a FILE with a
+# slash is that path, a file the chapter hands out complete (chapters/...).
 plant() {
     local name=$1 chapter=$2 file=$3 script=$4 test=$5 must_not=$6
     shift 6
-    local build=build-planted make_args=() out
+    local build=build-planted make_args=() out src
+    case $file in
+    */*) src=$file ;;
+    *) src=solutions/$chapter/$file ;;
+    esac
     if [ "$file" = skeleton ]; then
         local others
         others=$(cd "$dir/chapters" && ls -d [0-9][0-9]_* | grep -v "^$chapter" | cut -c1-2 | tr '\n' ' ')
         make_args=(STUDENT=1 "REFERENCE=$others" BUILD=$build-skeleton)
         build=$build-skeleton
     else
-        cp "solutions/$chapter/$file" "$dir/solutions/$chapter/$file"
-        sed -i "$script" "$dir/solutions/$chapter/$file"
-        if cmp -s "solutions/$chapter/$file" "$dir/solutions/$chapter/$file"; then
-            echo "  FAIL    $name: the sed script changed nothing in solutions/$chapter/$file"
+        cp "$src" "$dir/$src"
+        sed -i "$script" "$dir/$src"
+        if cmp -s "$src" "$dir/$src"; then
+            echo "  FAIL    $name: the sed script changed nothing in $src"
             failed=$((failed + 1))
             return
         fi
@@ -58,7 +63,7 @@ plant() {
             echo "  ok      $name"
         fi
     fi
-    [ "$file" = skeleton ] || cp "solutions/$chapter/$file" "$dir/solutions/$chapter/$file"
+    [ "$file" = skeleton ] || cp "$src" "$dir/$src"
 }
 
 # Chapter 01: the image's width and height, each in its place.
@@ -1021,6 +1026,55 @@ plant "hint: the mirror ray's window ends at 1e30" 08_mirrors mirror.c \
 plant "hint: the resolution from the extents' own product" 11_grid grid_build.c \
     's|e\[a\] = extent\[a\] > 0 ? extent\[a\] / largest : 0;|e[a] = extent[a]; (void)largest;|' \
     test_resolution "" "relative to the largest, e_a / e_max"
+# Scale, dimensions and the right one of two vectors; the handed-out code paths a student edits anyway.
+plant "hint: sphere_roots' scale without the radius" 02_sphere sphere.c \
+    's|vec3_make(vec3_max_abs(r.p), vec3_max_abs(s->center), s->radius)|vec3_make(vec3_max_abs(r.p), vec3_max_abs(s->center), 0)|' \
+    test_roots_at_any_scale "" "the scale of the lengths is that of p, c and R together"
+plant "hint: triangle_normal by 1 / sqrt(n . n)" 03_triangle triangle.c \
+    's|return vec3_normalize(vec3_scale(n, 1 / largest));|return vec3_scale(n, 1 / real_sqrt(vec3_dot(n, n)));|' \
+    test_normal "" "neither overflows nor underflows"
+plant "hint: t_best a distance, not t" 04_many_shapes closest_hit.c \
+    's|t_best = candidate.t;|t_best = vec3_length(vec3_sub(candidate.point, r.p));|' \
+    test_closest_hit_in_any_order "" "not its distance from p"
+plant "hint: the sphere's normal at the ray's start" 04_many_shapes chapters/04_many_shapes/surface.c \
+    's|\*hit = surface_hit_record(s, r, t, n, 0, 0);|*hit = surface_hit_record(s, r, t, vec3_normalize(vec3_sub(r.p, s->sphere.center)), 0, 0);|' \
+    test_hit_record_fields "" "pointing out of the sphere"
+plant "hint: the shape's face not recorded" 04_many_shapes chapters/04_many_shapes/surface.c \
+    's|((surface_list \*)list)->items\[i\].face = s->face;|(void)0;|' \
+    test_box_in_scene "" "a Box's triangle"
+plant "hint: v = -d, not normalized" 05_lambert chapters/05_lambert/tracer.c \
+    's|sp.v = vec3_neg(vec3_normalize(r.d));|sp.v = vec3_neg(r.d);|' \
+    test_back_of_triangle_lit "" "whatever the length of d"
+plant "hint: chapter 05's stage by the last light" 05_lambert chapters/05_lambert/shade_lambert.c \
+    's|sp->n, &tr->desc->lights\[0\]);|sp->n, \&tr->desc->lights[tr->desc->n_lights - 1]);|' \
+    test_trace_uses_the_query "" "the scene's first light as the lecture's one light"
+plant "hint: the bound's back-off without the target" 06_shadows chapters/06_shadows/spawn.c \
+    's|real_fmax(vec3_max_abs(target), vec3_max_abs(r.p));|vec3_max_abs(r.p);|' \
+    test_spawn_ray_to_far_end "" "the target's or the ray's start"
+plant "hint: chapter 06's Lambert with the geometric normal" 06_shadows chapters/06_shadows/shade_shadows.c \
+    's|sp->hit.point, sp->n, light);|sp->hit.point, sp->hit.normal, light);|' \
+    test_shadow_rays_only_when_needed "" "the shading normal sp->n"
+plant "hint: chapter 06's stage by the last light" 06_shadows chapters/06_shadows/shade_shadows.c \
+    's|const scene_light \*light = &tr->desc->lights\[0\];|const scene_light *light = \&tr->desc->lights[tr->desc->n_lights - 1];|' \
+    test_shadow_rays_only_when_needed "" "the scene's first light"
+plant "hint: the path's largest weight without blue" 08_mirrors chapters/08_mirrors/path.c \
+    's|real_fmax(w.g, w.b)|real_fmax(w.g, w.g)|' \
+    test_mirror_ray_reaches_probe "" "the largest channel of its weight"
+plant "hint: a mirror only when k_m's red is" 08_mirrors chapters/08_mirrors/shade_glazed.c \
+    's|(k_m.r == 0 \&\& k_m.g == 0 \&\& k_m.b == 0)|(k_m.r == 0)|' \
+    test_mirror_ray_reaches_probe "" "any channel of k_m"
+plant "hint: the shading normal turned by the geometric normal" 10_interpolation chapters/10_interpolation/shade_interp.c \
+    's|ip.sp.n = shading_normal(ip.n_raw, sp->n);|ip.sp.n = shading_normal(ip.n_raw, sp->hit.normal);|' \
+    test_smooth_shading "" "faces the viewer, sp->n"
+plant "hint: the mesh's (u, v) with gamma and beta swapped" 10_interpolation chapters/10_interpolation/shade_interp.c \
+    's|m->uvs\[f->vt\[2\]\], hit->beta, hit->gamma)|m->uvs[f->vt[2]], hit->gamma, hit->beta)|' \
+    test_textured_sphere "" "in the order of the face's corners"
+plant "hint: a matte point's normal flipped for a mirror ray" 10_interpolation chapters/10_interpolation/shade_interp.c \
+    's|if (ip.smooth \&\& mirrors \&\& knobs->below == BELOW_FLIP)|if (ip.smooth \&\& (mirrors \|\| 1) \&\& knobs->below == BELOW_FLIP)|' \
+    test_smooth_shading "" "a matte point keeps n_s"
+plant "hint: first clamped to n_x on every axis" 11_grid grid_build.c \
+    's|first\[a\] = real_to_index(real_ceil(f_lo) - 1, 0, g->n\[a\]);|first[a] = real_to_index(real_ceil(f_lo) - 1, 0, g->n[0]);|' \
+    test_cell_range "" "the x axis's count of cells"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"
