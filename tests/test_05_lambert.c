@@ -197,9 +197,11 @@ static void test_normal_towards_viewer(void **state)
  * function is given the geometric normal as it was and the shading normal
  * turned towards the viewer. */
 static _Thread_local shading_point last;
+static _Thread_local int last_depth;
 static color record_shade(const tracer *tr, const shading_point *sp, int depth, uint64_t *rays)
 {
     last = *sp;
+    last_depth = depth;
     return shade_lambert(tr, sp, depth, rays);
 }
 
@@ -302,7 +304,16 @@ static void test_trace_uses_the_query(void **state)
     /* A second light, twice as close and four times as bright (16 times the first's L): the stage shades
      * by the first light alone, the lecture's one light */
     scene_add_light(&desc, (scene_light){.position = {0, 5, 0}, .intensity = {400, 400, 400}});
-    lit = trace(&tr, down, 0, REAL_INFINITY, 0, rays);
+    /* the shade function is given trace's depth as it is: chapter 08's recursion counts on it */
+    tr.shade = record_shade;
+    last_depth = -1;
+    lit = trace(&tr, down, 0, REAL_INFINITY, 3, rays);
+    assert_true_why(last_depth == 3,
+                    "trace(ray, 0, inf, depth 3) on the fake hit\n    expected the shade function called with depth "
+                    "3\n    got      depth %d\n    likely mistake: trace hands the shade function the depth it was "
+                    "given; the next level adds one where it traces again (README, \"How the later chapters plug "
+                    "in\")",
+                    last_depth);
     assert_close_why(1, lit.g, TOL(1),
                      "the fake hit at the origin, n (0, 1, 0), lights 100 at (0, 10, 0) and 400 at (0, 5, 0)",
                      "the stage's shade function takes the scene's first light as the lecture's one light "
