@@ -1102,6 +1102,16 @@ static void test_textured_sphere(void **state)
                     "the point's (u, v) is interpolate_uv of its face's corner coordinates (vt) with the hit's "
                     "beta and gamma, in the order of the face's corners (README, \"The shade function\")",
                     NULL, 0);
+    /* The face with texture coordinates at its first corner only (an OBJ face "f 1/1 2 3"): no (u, v) at
+     * the point, the shader's own diffuse colour (1, 0, 1) */
+    desc.meshes[0].faces[0].vt[1] = desc.meshes[0].faces[0].vt[2] = -1;
+    L = trace_10(&desc, (ray){eye, vec3_sub(p, eye)}, rays);
+    assert_vec3_why(vec3_make(1, 0, 1), vec3_make(L.r, L.g, L.b), 1e3 * REAL_EPSILON,
+                    "the same triangle, its face with texture coordinates at the first corner only, lit straight "
+                    "above the point",
+                    "a face has (u, v) only when every one of its corners has texture coordinates (vt >= 0); "
+                    "without, the point keeps the shader's diffuse colour (README, \"The shade function\")",
+                    NULL, 0);
     scene_free(&desc);
 }
 
