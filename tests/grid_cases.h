@@ -507,6 +507,23 @@ static void test_empty_and_single(void **state)
     assert_true(same_hit(true, &expected, true, &hit));
     assert_false(GRID_INTERSECT(&g, r, 0, 9, &hit)); /* the window ends before the sphere */
     GRID_FREE(&g);
+    /* Beside it a sphere whose box is beyond the reals (centre z 0.75 REAL_MAX, radius REAL_MAX / 2: its top,
+     * 1.25 REAL_MAX, overflows): no cell holds it, every ray tests it.  Up +z from (0.3, 0.2, 2) the ray meets
+     * it at t about 0.25 REAL_MAX, where the linear scan does. */
+    surface_list_add_sphere(&list, (sphere){{0, 0, (real)(0.75 * REAL_MAX)}, (real)(REAL_MAX / 2)}, 1, 1);
+    build_grid(&g, &list, GRID_DEFAULTS());
+    const ray up = {{(real)0.3, (real)0.2, 2}, {0, 0, 1}};
+    const bool found_list = surfaces_intersect(&list, up, 0, REAL_INFINITY, &expected);
+    assert_true(found_list && expected.surface == 1);
+    hit = (hit_record){.t = 42};
+    const bool found_grid = GRID_INTERSECT(&g, up, 0, REAL_INFINITY, &hit);
+    if (!same_hit(found_list, &expected, found_grid, &hit))
+        fail_msg("a unit sphere and a sphere whose box overflows (centre (0, 0, 0.75 REAL_MAX), radius REAL_MAX / 2), "
+                 "the ray p (0.3, 0.2, 2), d (0, 0, 1)\n    expected surface 1 at t %.17g\n    got      %s surface %d "
+                 "at t %.17g\n    likely mistake: a surface without finite bounds is in no cell: it is listed "
+                 "after the cells, and every ray tests it (README, \"The grid\")",
+                 (double)expected.t, found_grid ? "a hit on" : "no hit;", hit.surface, (double)hit.t);
+    GRID_FREE(&g);
     surface_list_free(&list);
 }
 
