@@ -1075,6 +1075,15 @@ plant "hint: a matte point's normal flipped for a mirror ray" 10_interpolation c
 plant "hint: first clamped to n_x on every axis" 11_grid grid_build.c \
     's|first\[a\] = real_to_index(real_ceil(f_lo) - 1, 0, g->n\[a\]);|first[a] = real_to_index(real_ceil(f_lo) - 1, 0, g->n[0]);|' \
     test_cell_range "" "the x axis's count of cells"
+plant "hint: the shade function given depth + 1" 05_lambert chapters/05_lambert/tracer.c \
+    's|color L = tr->shade(tr, &sp, depth, rays);|color L = tr->shade(tr, \&sp, depth + 1, rays);|' \
+    test_trace_uses_the_query "" "the depth it was given"
+plant "hint: a face's (u, v) from its first corner's vt alone" 10_interpolation chapters/10_interpolation/shade_interp.c \
+    's|ip.has_uv = f->vt\[0\] >= 0 \&\& f->vt\[1\] >= 0 \&\& f->vt\[2\] >= 0;|ip.has_uv = f->vt[0] >= 0;|' \
+    test_textured_sphere "" "every one of its corners has texture coordinates"
+plant "hint: the surfaces without finite bounds never tested" 11_grid grid_march.c \
+    's|e < g->start\[g->n_cells + 1\]; e++) /\* the surfaces without bounds \*/|e < g->start[g->n_cells]; e++)|' \
+    test_empty_and_single "" "every ray tests it"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"
