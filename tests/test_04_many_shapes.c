@@ -494,6 +494,13 @@ static void test_box_in_scene(void **state)
     char err[256];
     assert_int_equal(0, surface_list_from_scene(&list, &desc, err, sizeof err));
     assert_int_equal(1 + 12, list.n);
+    assert_true_why(list.items[0].kind == SHAPE_SPHERE && list.items[0].source == 0 && list.items[0].shader == -1,
+                    "the scene's sphere, its surface 0 with no shader (-1), as list entry 0\n    expected a sphere "
+                    "with source 0 and shader -1\n    got      %s with source %d and shader %d\n    likely mistake: "
+                    "source indexes the scene's surfaces, shader its shaders: each in its own place (README, \"The "
+                    "hit record\")",
+                    list.items[0].kind == SHAPE_SPHERE ? "a sphere" : "a triangle", list.items[0].source,
+                    list.items[0].shader);
     for (int k = 1; k < list.n; k++) {
         assert_int_equal(SHAPE_TRIANGLE, list.items[k].kind);
         assert_int_equal(1, list.items[k].source);
