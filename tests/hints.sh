@@ -1084,6 +1084,9 @@ plant "hint: a face's (u, v) from its first corner's vt alone" 10_interpolation 
 plant "hint: the surfaces without finite bounds never tested" 11_grid grid_march.c \
     's|e < g->start\[g->n_cells + 1\]; e++) /\* the surfaces without bounds \*/|e < g->start[g->n_cells]; e++)|' \
     test_empty_and_single "" "every ray tests it"
+plant "hint: a scene's sphere with its shader and source swapped" 04_many_shapes chapters/04_many_shapes/surface.c \
+    's|(sphere){s->center, s->radius}, s->shader, s->source)|(sphere){s->center, s->radius}, s->source, s->shader)|' \
+    test_box_in_scene "" "each in its own place"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"
