@@ -511,6 +511,19 @@ static void expect_range(const grid *g, vec3 lo, vec3 hi, const int *want_first,
     }
 }
 
+/* 2000 random boxes between (-5, 1, 9) and (2, 8, 12), the same ones for every grid, each against expect_range. */
+static void expect_random_ranges(const grid *g)
+{
+    rng_state = 19;
+    for (int k = 0; k < 2000; k++) {
+        const vec3 box_lo = {-5, 1, 9}, box_hi = {2, 8, 12};
+        vec3 a = uniform_vec(box_lo, box_hi), b = uniform_vec(box_lo, box_hi);
+        vec3 lo = vec3_make(real_fmin(a.x, b.x), real_fmin(a.y, b.y), real_fmin(a.z, b.z));
+        vec3 hi = vec3_make(real_fmax(a.x, b.x), real_fmax(a.y, b.y), real_fmax(a.z, b.z));
+        expect_range(g, lo, hi, NULL, NULL);
+    }
+}
+
 /* cell_range: boxes inside, on cell boundaries (both sides count), reaching
  * outside (clamped) and wholly outside (empty). */
 static void test_cell_range(void **state)
@@ -546,28 +559,14 @@ static void test_cell_range(void **state)
         expect_range(&g, outside[c][0], outside[c][1], NULL, NULL);
     /* Random boxes in a grid of inexact sizes: cell i is in the range exactly
      * when [i, i + 1] meets [f_lo, f_hi], the box in units of cells. */
-    rng_state = 19;
     grid h = {.lo = {(real)-3.7, (real)1.9, (real)10.1}, .n = {13, 7, 11}};
     h.cell = vec3_make((real)0.31, (real)0.77, (real)0.093);
-    for (int k = 0; k < 2000; k++) {
-        const vec3 box_lo = {-5, 1, 9}, box_hi = {2, 8, 12};
-        vec3 a = uniform_vec(box_lo, box_hi), b = uniform_vec(box_lo, box_hi);
-        vec3 lo = vec3_make(real_fmin(a.x, b.x), real_fmin(a.y, b.y), real_fmin(a.z, b.z));
-        vec3 hi = vec3_make(real_fmax(a.x, b.x), real_fmax(a.y, b.y), real_fmax(a.z, b.z));
-        expect_range(&h, lo, hi, NULL, NULL);
-    }
+    expect_random_ranges(&h);
     /* The same boxes in a grid with more cells along y and z than along x (7, 11, 13): each axis is clamped
      * to its own count of cells, a box's first cell along z reaches 12. */
-    rng_state = 19;
     grid h2 = {.lo = h.lo, .n = {7, 11, 13}};
     h2.cell = vec3_make((real)0.93, (real)0.64, (real)0.27);
-    for (int k = 0; k < 2000; k++) {
-        const vec3 box_lo = {-5, 1, 9}, box_hi = {2, 8, 12};
-        vec3 a = uniform_vec(box_lo, box_hi), b = uniform_vec(box_lo, box_hi);
-        vec3 lo = vec3_make(real_fmin(a.x, b.x), real_fmin(a.y, b.y), real_fmin(a.z, b.z));
-        vec3 hi = vec3_make(real_fmax(a.x, b.x), real_fmax(a.y, b.y), real_fmax(a.z, b.z));
-        expect_range(&h2, lo, hi, NULL, NULL);
-    }
+    expect_random_ranges(&h2);
 }
 
 /* The cells a ray through g's box visits when nothing is hit: one more than
