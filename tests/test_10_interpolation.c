@@ -895,6 +895,25 @@ static color trace_10(const scene *desc, ray r, uint64_t *rays)
     return c;
 }
 
+/* A mesh of one triangle (a, b, c) with room for n_normals normals and n_uvs
+ * texture coordinates, which the caller fills in with the face's vn and vt
+ * (-1 until then); the scene it is added to frees it. */
+static mesh one_triangle_mesh(vec3 a, vec3 b, vec3 c, int n_normals, int n_uvs)
+{
+    mesh m = {.n_positions = 3, .n_normals = n_normals, .n_uvs = n_uvs, .n_faces = 1};
+    m.positions = malloc(sizeof *m.positions * 3);
+    m.normals = n_normals ? malloc(sizeof *m.normals * (size_t)n_normals) : NULL;
+    m.uvs = n_uvs ? malloc(sizeof *m.uvs * (size_t)n_uvs) : NULL;
+    m.faces = malloc(sizeof *m.faces);
+    assert_non_null(m.positions);
+    assert_true(!n_normals || m.normals);
+    assert_true(!n_uvs || m.uvs);
+    assert_non_null(m.faces);
+    m.positions[0] = a, m.positions[1] = b, m.positions[2] = c;
+    m.faces[0] = (mesh_face){{0, 1, 2}, {-1, -1, -1}, {-1, -1, -1}};
+    return m;
+}
+
 /* One triangle far from the origin with three different vertex normals, lit
  * by one light without shadows in the way: the radiance at a point inside is
  * k_d max(0, n . l) I / r^2 with n the INTERPOLATED normal at the hit's
@@ -910,19 +929,12 @@ static void test_smooth_shading(void **state)
         const real side = run == 2 ? -1 : 1; /* the viewer and the light above (+z) or below the triangle */
         scene desc;
         scene_init(&desc);
-        mesh m = {.n_positions = 3, .n_normals = 3, .n_faces = 1};
-        m.positions = malloc(sizeof *m.positions * 3);
-        m.normals = malloc(sizeof *m.normals * 3);
-        m.faces = malloc(sizeof *m.faces);
-        assert_non_null(m.positions);
-        assert_non_null(m.normals);
-        assert_non_null(m.faces);
         vec3 a = vec3_add(offset, vec3_make(0, 0, 0)), b = vec3_add(offset, vec3_make(3, 0.5, 0)),
              c = vec3_add(offset, vec3_make(0.5, 3, 0.25));
-        m.positions[0] = a, m.positions[1] = b, m.positions[2] = c;
+        mesh m = one_triangle_mesh(a, b, c, 3, 0);
         m.normals[0] = vec3_normalize(vec3_make(-0.5, -0.4, 1)), m.normals[1] = vec3_normalize(vec3_make(0.6, 0, 1));
         m.normals[2] = vec3_normalize(vec3_make(0, 0.7, 1));
-        m.faces[0] = (mesh_face){{0, 1, 2}, {-1, -1, -1}, {0, 1, 2}};
+        m.faces[0].vn[0] = 0, m.faces[0].vn[1] = 1, m.faces[0].vn[2] = 2;
         int mk = scene_add_mesh(&desc, m);
         scene_shader s = scene_default_shader(rgb ? SHADER_RGB_NORMALS : SHADER_LAMBERTIAN);
         s.diffuse_color = color_make((real)0.3, (real)0.2, (real)0.1);
@@ -995,17 +1007,10 @@ static void test_smooth_shading(void **state)
      * normals, the point is ~66 from the origin: a few hundred roundings at most, 1e3 REAL_EPSILON. */
     scene desc;
     scene_init(&desc);
-    mesh m = {.n_positions = 3, .n_normals = 1, .n_faces = 1};
-    m.positions = malloc(sizeof *m.positions * 3);
-    m.normals = malloc(sizeof *m.normals);
-    m.faces = malloc(sizeof *m.faces);
-    assert_non_null(m.positions);
-    assert_non_null(m.normals);
-    assert_non_null(m.faces);
-    m.positions[0] = offset, m.positions[1] = vec3_add(offset, vec3_make(4, 0, 0));
-    m.positions[2] = vec3_add(offset, vec3_make(0, 4, 0));
+    mesh m = one_triangle_mesh(offset, vec3_add(offset, vec3_make(4, 0, 0)), vec3_add(offset, vec3_make(0, 4, 0)),
+                               1, 0);
     m.normals[0] = vec3_normalize(vec3_make(1, 0, (real)0.3));
-    m.faces[0] = (mesh_face){{0, 1, 2}, {-1, -1, -1}, {0, 0, 0}};
+    m.faces[0].vn[0] = m.faces[0].vn[1] = m.faces[0].vn[2] = 0;
     int mk = scene_add_mesh(&desc, m);
     scene_shader matte = scene_default_shader(SHADER_LAMBERTIAN);
     matte.diffuse_color = color_make((real)0.5, (real)0.5, (real)0.5);
@@ -1074,18 +1079,11 @@ static void test_textured_sphere(void **state)
     assert_int_equal(0, globe_texture(&img, 16, 8, 2));
     s.texture = scene_add_texture(&desc, (scene_texture){.kind = TEXTURE_REPEAT, .image = img});
     sk = scene_add_shader(&desc, s);
-    mesh m = {.n_positions = 3, .n_uvs = 3, .n_faces = 1};
-    m.positions = malloc(sizeof *m.positions * 3);
-    m.uvs = malloc(sizeof *m.uvs * 3);
-    m.faces = malloc(sizeof *m.faces);
-    assert_non_null(m.positions);
-    assert_non_null(m.uvs);
-    assert_non_null(m.faces);
-    m.positions[0] = center, m.positions[1] = vec3_add(center, vec3_make(4, 0, 0));
-    m.positions[2] = vec3_add(center, vec3_make(0, 4, 0));
+    mesh m = one_triangle_mesh(center, vec3_add(center, vec3_make(4, 0, 0)), vec3_add(center, vec3_make(0, 4, 0)),
+                               0, 3);
     m.uvs[0] = (mesh_uv){(real)0.1, (real)0.1}, m.uvs[1] = (mesh_uv){(real)0.9, (real)0.1};
     m.uvs[2] = (mesh_uv){(real)0.1, (real)0.9};
-    m.faces[0] = (mesh_face){{0, 1, 2}, {0, 1, 2}, {-1, -1, -1}};
+    m.faces[0].vt[0] = 0, m.faces[0].vt[1] = 1, m.faces[0].vt[2] = 2;
     scene_add_surface(&desc, (scene_surface){.kind = SURFACE_MESH, .shader = sk, .mesh = scene_add_mesh(&desc, m)});
     p = vec3_add(center, vec3_make((real)(4 * 0.55), (real)(4 * 0.2), 0));
     scene_add_light(&desc, (scene_light){.position = vec3_add(p, vec3_make(0, 0, 3)), .intensity = {9, 9, 9}});
