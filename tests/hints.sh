@@ -1063,6 +1063,15 @@ plant "hint: the path's largest weight without blue" 08_mirrors chapters/08_mirr
 plant "hint: a mirror only when k_m's red is" 08_mirrors chapters/08_mirrors/shade_glazed.c \
     's|(k_m.r == 0 \&\& k_m.g == 0 \&\& k_m.b == 0)|(k_m.r == 0)|' \
     test_mirror_ray_reaches_probe "" "any channel of k_m"
+plant "hint: the path's weight by its channels' mean" 08_mirrors chapters/08_mirrors/path.c \
+    's|real largest = real_fmax(w.r, real_fmax(w.g, w.b));|real largest = (w.r + w.g + w.b) / 3;|' \
+    test_mirror_ray_reaches_probe "" "not the channels' mean"
+plant "hint: no light gives the background" 05_lambert chapters/05_lambert/shade_lambert.c \
+    's|return color_make(0, 0, 0);|return tr->desc->back_color;|' \
+    test_back_of_triangle_lit "" "not the background colour"
+plant "hint: the first cell moved forwards" 11_grid grid_march.c \
+    's|x -= (real)m.step\[a\] \* back;|x += (real)m.step[a] * back;|' \
+    test_dda_cells "" "moved forwards"
 plant "hint: the shading normal turned by the geometric normal" 10_interpolation chapters/10_interpolation/shade_interp.c \
     's|ip.sp.n = shading_normal(ip.n_raw, sp->n);|ip.sp.n = shading_normal(ip.n_raw, sp->hit.normal);|' \
     test_smooth_shading "" "faces the viewer, sp->n"

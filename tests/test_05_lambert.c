@@ -240,6 +240,18 @@ static void test_back_of_triangle_lit(void **state)
                     "v = -normalize(ray.direction), a unit vector whatever the length of d (README, \"Shading a "
                     "hit\")",
                     NULL, 0);
+    /* The same hit in a scene without lights, before a grey background: a matte surface with no light to
+     * reflect is black, not the background (shade_lambert.c, n_lights == 0). */
+    desc.back_color = color_make((real)0.5, (real)0.5, (real)0.5);
+    const int n_lights = desc.n_lights;
+    desc.n_lights = 0;
+    L = trace_scene(&desc, from_behind);
+    desc.n_lights = n_lights;
+    assert_vec3_why(vec3_make(0, 0, 0), vec3_make(L.r, L.g, L.b), 0,
+                    "the triangle hit from behind in a scene without lights, background (0.5, 0.5, 0.5)",
+                    "with no light a matte surface reflects nothing: black, not the background colour (README, "
+                    "\"The stage's shade function\": n_lights == 0 gives black)",
+                    NULL, 0);
     scene_free(&desc);
 }
 

@@ -267,6 +267,18 @@ static void test_mirror_ray_reaches_probe(void **state)
                      "a shader is a mirror when any channel of k_m is above 0, and a path goes on while the largest "
                      "channel of its weight is (README, \"The glazed surface\" and \"Calling trace again\")",
                      NULL, 0);
+    /* The same mirror under --min-weight 0.2: the path's weight (0, 0, 0.5) has its largest channel 0.5 above
+     * 0.2, so the ray is cast, though the channels' mean 1/6 is below 0.2: blue is again 0.5 x 6 = 3. */
+    path_knobs strict = knobs_of(PATH_DEFAULT_DEPTH, (real)0.2);
+    uint64_t strict_rays[RAY_KINDS] = {0};
+    L = trace_one(&desc, &strict, (ray){eye, d}, strict_rays);
+    assert_close_why(0.5 * 6, L.b, TOL(6),
+                     "an eye ray onto a tilted mirror of blue alone (k_m = (0, 0, 0.5)), min_weight 0.2, a probe of "
+                     "colour (2.5, 1.25, 6) in its mirror direction: the radiance the eye sees, blue",
+                     "path_next compares the largest channel of the path's weight, max(w_r, w_g, w_b), with "
+                     "min_weight, not the channels' mean: a ray is dropped only when its weight is below min_weight in "
+                     "every channel (README, --min-weight)",
+                     NULL, 0);
     scene_free(&desc);
 
     /* The mirror ray's window is (0, infinity): a probe as far away as a sky, centred 1e32 r away (radius 1e31,

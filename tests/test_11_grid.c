@@ -745,6 +745,45 @@ static void expect_entry(const grid *g)
     expect_entry_edges(g);
 }
 
+/* The first cell when the entry point lies a hair below a plane of cells: spheres of radius 0.1 at
+ * (0, 0, 0) and (1, 1, 1) set the box, a triangle in the plane y = b - delta / 2 just below the plane
+ * y = b of cells k - 1 and k (delta = 1000 REAL_EPSILON: half of it is several times the margin, 70
+ * REAL_EPSILON here, so the triangle is listed in the cells below b only), and a ray from x = -100 that
+ * climbs delta / 2 in y over 100.3 units of x enters the box about 500 REAL_EPSILON below b and meets
+ * the triangle at t = 100.3, x = 0.3.  Moving the entry point by the rounding allowance (about 3200
+ * REAL_EPSILON for an origin 100 away) forwards along the ray instead of backwards starts the march in
+ * the row above b, which never holds the triangle. */
+static void expect_first_cell_below_a_plane(void)
+{
+    surface_list list;
+    surface_list_init(&list, SPHERE_ROBUST, TRIANGLE_CRAMER);
+    surface_list_add_sphere(&list, (sphere){{0, 0, 0}, (real)0.1}, 0, 0);
+    surface_list_add_sphere(&list, (sphere){{1, 1, 1}, (real)0.1}, 0, 1);
+    surface_list_add_triangle(&list, (triangle){{0, (real)0.5, 0}, {1, (real)0.5, 0}, {(real)0.5, (real)0.5, 1}}, 0, 2);
+    const grid_options opt = {.density = 100, .max_cells = 1000};
+    grid g;
+    build_grid(&g, &list, opt);
+    const int k = g.n[1] / 2;
+    const real b = g.lo.y + (real)k * g.cell.y, delta = 1000 * REAL_EPSILON, y0 = b - delta / 2;
+    grid_free(&g);
+    /* the same box and count: the same cells */
+    list.items[2].triangle = (triangle){{0, y0, 0}, {1, y0, 0}, {(real)0.5, y0, 1}};
+    build_grid(&g, &list, opt);
+    const ray r = {{-100, b - delta, (real)0.5}, {1, delta / 2 / (real)100.3, 0}};
+    hit_record want, got;
+    assert_true(surfaces_intersect(&list, r, 0, REAL_INFINITY, &want) && want.surface == 2);
+    if (!grid_intersect_counted(&g, r, 0, REAL_INFINITY, &got, NULL) || got.surface != 2 || got.t != want.t)
+        fail_msg("a ray from (-100, b - %.3g, 0.5) along (1, %.3g, 0), b the plane of y cells %d and %d (%d x %d x %d "
+                 "cells), towards a triangle in the plane y = b - %.3g listed below b only\n    expected surface 2 "
+                 "at t = %.17g\n    got      %s\n    likely mistake: the first cell from p + t0 d moved forwards "
+                 "along the ray by the rounding allowance: move it back, x_a -= step_a back (README, \"Entering "
+                 "the grid\")",
+                 (double)delta, (double)r.d.y, k - 1, k, g.n[0], g.n[1], g.n[2], (double)(delta / 2), (double)want.t,
+                 found_what(grid_intersect_counted(&g, r, 0, REAL_INFINITY, &got, NULL), &got));
+    grid_free(&g);
+    surface_list_free(&list);
+}
+
 /* dda_step: the cells a ray visits, counted against the plane crossings:
  * a ray through the whole grid that hits nothing visits one cell more than
  * the cell planes it crosses inside the grid's box. */
@@ -780,6 +819,7 @@ static void test_dda_cells(void **state)
     expect_entry_tiny_component(&g); /* after the rays above, which name the march's own mistakes first */
     grid_free(&g);
     surface_list_free(&list);
+    expect_first_cell_below_a_plane();
 }
 
 /* dda_step along one axis at a time: tiny spheres on a lattice 5 x 4 x 3
