@@ -304,10 +304,13 @@ grade_links = $1: $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addpr
 # A graded suite is linked before its student's objects are checked (tools/check-exercise.sh), and
 # without -fno-lto the linker would compile, as root, any .gnu.lto_ sections an object holds (a
 # top-level asm makes them) with the options they name: -Xassembler --MD=FILE wrote FILE anywhere.
+# The link has a compile's limits (tools/compile-as.sh): an empty section of the object's that the
+# output must hold as zeros (a 6 GiB NOBITS .interp) had root's linker hold 6 GiB, twice.
 define grade_rules
 $(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call seeded,$1)) $(call grade_stages,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(QLINK)$$(call link,$$^) -fno-lto -lcmocka -o $$@
+	$$(QLINK)ulimit -v $$$$(($(GRADE_MEMORY) * 1024)) -f $$$$((64 * 1024)) && \
+	    timeout -k 5 120 $$(call link,$$^) -fno-lto -lcmocka -o $$@
 endef
 $(foreach c,$(CHAPTER_TESTS:test_%=%),$(eval $(call grade_rules,$c)))
 
@@ -317,6 +320,9 @@ $(BUILD)/tools/%: $(BUILD)/obj/tools/%.o
 
 grade:
 	@$(if $(GRADE_CHAPTERS),,echo "make grade: $(if $(CHAPTER),no chapter '$(CHAPTER)' has a test suite,no chapter has a test suite) (chapters with one: $(or $(CHAPTER_TESTS:test_%=%),none))" >&2; exit 2)
+	@$(if $(GRADE_USER),! setpriv --reuid=$(GRADE_USER) --regid="$$(id -g $(GRADE_USER))" --clear-groups -- test -x "$(CURDIR)" || { \
+	    echo "make grade: the user $(GRADE_USER) can enter $(CURDIR): a submission's #include could read its files" \
+	        "($(if $(HANDOUT),the builds,solutions/ and the builds)); make it root's alone (chmod go-rwx)$(comma) as the autograder's setup.sh does" >&2; exit 2; })
 	@$(call locked,$(MAKE) --no-print-directory -s BUILD=$(GRADE_BUILD) STUDENT=0 REAL=double SANITIZE=0 grade-run)
 
 # Run by `grade` in the grading build.  A chapter whose reference suite does

@@ -16,14 +16,18 @@
 # quotes in pragmas (which the compiler only warns of); an asm statement in a
 # correct lambert, written as the C library renames a declaration; a correct
 # lambert called through a static indirect function; the compiled
-# reference's bytes copied into memory made executable at run time; and one
+# reference's bytes copied into memory made executable at run time, or into
+# a file mapped executable; and one
 # the grader's own
 # design invites: running the reference's suite to write the records), a
 # symlink tree with a
-# newline in a folder's name aimed at the grader's grade.conf, and the
-# resource attacks (memory, files left in HOME, /tmp and /run/lock, folders deeper than PATH_MAX,
+# newline in a folder's name aimed at the grader's grade.conf, an #include of
+# grade.conf when the grader's folder is left open to the grading user, and the
+# resource attacks (memory, files left in HOME, /tmp and /run/lock, 4 GiB of 64 MiB files on disk,
+# folders deeper than PATH_MAX,
 # System V and POSIX IPC objects, bytes that are not
-# UTF-8, a test that never ends), escape sequences for the terminal, a line typed into the terminal the
+# UTF-8, characters XML does not allow (U+FFFF, in junit.xml), a test that
+# never ends), escape sequences for the terminal, a line typed into the terminal the
 # grading runs in (graded in one, for that), answers asked of a server
 # over the network; and what outlives or outgrows a test or the compile: a
 # process that stops the grader's clean-up (SIGSTOP to every process of its
@@ -32,7 +36,8 @@
 # terminal controls in a compile error and a file's name, an assembler that
 # never ends, a preprocessor that takes 9 GB, 60000 files in the submission,
 # 100000 global symbols, .gnu.lto_ sections whose options make root's link
-# write a file where they say, memory in child processes and in memory files
+# write a file where they say, an empty section that root's link must write
+# out as 6 GiB of zeros, memory in child processes and in memory files
 # (memfd) and in local sockets' buffers, a test's lines that read as the grader's notes and hid them (no
 # newline at the end, a right-to-left override); besides the correct solution, a correct
 # one written otherwise and an empty submission.  Prints one line per
@@ -146,13 +151,15 @@ make_submission() {
     many_files) # a correct lambert.c among 60000 other files (a zip of some 6 MB)
         cp "$here/alternative.c" "$sub/lambert.c"
         (cd "$sub" && mkdir junk && cd junk && seq -f 'notes-%05g.txt' 1 60000 | xargs touch) ;;
-    compile_memory | many_symbols) cat "$here/$name.c.in" "$here/alternative.c" >"$sub/lambert.c" ;;
+    compile_memory | many_symbols | link_memory) cat "$here/$name.c.in" "$here/alternative.c" >"$sub/lambert.c" ;;
     keyring) sed "s/\"rt-litter\"/\"rt-litter-$run_id\"/" "$here/keyring.c" >"$sub/lambert.c" ;; # a key of an earlier run may stay
     lto_root) # a correct lambert compiled with -flto on the student's machine, its options writing a file anywhere
         (cd "$repo" && gcc -O2 -flto -I common -I chapters -c "$here/alternative.c" -o "$work/lto.o" \
             -Xassembler --MD="$root/source/written-by-the-link") &&
             "$here/lto-from-object.sh" "$work/lto.o" >"$sub/lambert.c" &&
             rm -f "$root/source/written-by-the-link" ;; # (written by that compile too, on the student's machine)
+    readable_source) # the grader's folder left open to the grading user (an instructor grading by hand)
+        printf '#include "%s/source/grade.conf"\n' "$root" >"$sub/lambert.c" ;;
     *) cp "$here/$name.c" "$sub/lambert.c" ;;
     esac
 }
@@ -162,7 +169,7 @@ cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:
 asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 copy:0 exec_reference:0 symlink:0 memory:0 litter:0
 bad_utf8:0 escape:0 tty:0 oracle:0 hang:0 quote_asm:0 hasinc_asm:0 pragma_quote_asm:0 pragma_quote_nop:0
 asm_statement:0 stop_killer:0 keyring:0 nul:0 c1_escape:0 compile_hang:0 compile_memory:0 many_files:14 many_symbols:0 shm_memory:0 userns_memory:0
-lto_root:0 fork_memory:0 memfd_memory:0 report_spoof:0 socket_memory:0"
+lto_root:0 fork_memory:0 memfd_memory:0 report_spoof:0 socket_memory:0 link_memory:0 junit_nonchar:0 disk_fill:0 readable_source:0 file_exec:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -187,7 +194,9 @@ sys.exit(1)' || problem "oracle: its server does not answer"
             echo \"after grading the terminal gave: \${typed:-nothing}\"" /dev/null <&7
         exec 7<&-
     else
+        [ "$name" != readable_source ] || { chmod go+x "$work" && chmod -R go+rX "$root/source"; }
         (cd "$root/source" && AUTOGRADER_ROOT=$root bash run_autograder)
+        chmod 700 "$work" && chmod -R go-rwx "$root/source"
     fi >"$work/$name.out" 2>&1
     took=$(($(date +%s) - start))
     [ -z "$server" ] || { kill "$server"; wait "$server"; } 2>/dev/null
@@ -254,6 +263,12 @@ for ring in (-4, -5, libc.syscall(keyctl, 22, -1, -4)):
         grep -q "refused: it holds a definition of v00000, .*, and 99995 more definitions" "$work/$name.out" ||
             problem "many_symbols: not refused as 100000 definitions" ;;
     many_files) [ "$took" -le 60 ] || problem "many_files: grading took ${took}s (a budget of 40 s)" ;;
+    disk_fill)
+        wrote=$(grep -ho 'disk fill: wrote [0-9]* MiB' "$json" | awk '{ print $4 }' | sort -n | tail -n 1)
+        [ -n "$wrote" ] && [ "$wrote" -le 64 ] || problem "disk_fill: a test wrote ${wrote:-?} MiB of files (64 MiB files)" ;;
+    junit_nonchar) python3 -c 'import sys, xml.etree.ElementTree as x; x.parse(sys.argv[1])' \
+        "$root/source/build-grade/junit.xml" 2>/dev/null || problem "junit_nonchar: junit.xml is not well-formed XML" ;;
+    link_memory) [ "$took" -le 30 ] || problem "link_memory: grading took ${took}s (root's link of a 6 GiB section)" ;;
     compile_hang) [ "$took" -le 90 ] || problem "compile_hang: grading took ${took}s (a budget of 40 s)" ;;
     stop_killer) [ "$took" -le 60 ] || problem "stop_killer: grading took ${took}s (a stopped clean-up waited for?)" ;;
     hang)

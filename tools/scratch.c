@@ -1,5 +1,5 @@
 /* scratch.c - the grader's scratch folders, and what the tests leave behind (scratch.h). */
-#define _GNU_SOURCE /* nftw, unshare */
+#define _GNU_SOURCE /* nftw, unshare, O_PATH */
 #include "scratch.h"
 
 #include <fcntl.h>
@@ -139,4 +139,35 @@ int scratch_private_shm(void)
         mount("rt-shm", "/dev/shm", "tmpfs", MS_NOSUID | MS_NODEV | MS_NOEXEC, "size=64m,mode=1777") != 0)
         return -1;
     return 0;
+}
+
+int scratch_private_tmp(const char *sandbox, const char *folder, uid_t uid, gid_t gid)
+{
+    /* the sandbox, kept open: the tmpfs hides it, and it comes back at its own path */
+    int kept = open(sandbox, O_PATH | O_DIRECTORY | O_CLOEXEC);
+    if (kept < 0)
+        return -1;
+    char from[64];
+    snprintf(from, sizeof from, "/proc/self/fd/%d", kept);
+    /* what is mounted, in order: undone from the last on should a step fail */
+    const char *mounted[6];
+    int n = 0;
+    if (mount("rt-tmp", "/tmp", "tmpfs", MS_NOSUID | MS_NODEV | MS_NOEXEC, "size=64m,mode=1777") == 0 &&
+        (mounted[n++] = "/tmp") &&
+        mkdir(sandbox, 0711) == 0 && mount(from, sandbox, NULL, MS_BIND, NULL) == 0 && (mounted[n++] = sandbox) &&
+        mkdir("/tmp/.run", 0700) == 0 && chown("/tmp/.run", uid, gid) == 0 &&
+        mount("/tmp/.run", folder, NULL, MS_BIND, NULL) == 0 && (mounted[n++] = folder) &&
+        mkdir("/tmp/.var-tmp", 0700) == 0 && chmod("/tmp/.var-tmp", 01777) == 0 &&
+        mount("/tmp/.var-tmp", "/var/tmp", NULL, MS_BIND, NULL) == 0 && (mounted[n++] = "/var/tmp") &&
+        mkdir("/tmp/.run-lock", 0700) == 0 && chmod("/tmp/.run-lock", 01777) == 0 &&
+        mount("/tmp/.run-lock", "/run/lock", NULL, MS_BIND, NULL) == 0 && (mounted[n++] = "/run/lock") &&
+        mkdir("/tmp/.shm", 0700) == 0 && chmod("/tmp/.shm", 01777) == 0 &&
+        mount("/tmp/.shm", "/dev/shm", NULL, MS_BIND, NULL) == 0 && (mounted[n++] = "/dev/shm")) {
+        close(kept);
+        return 0;
+    }
+    close(kept);
+    while (n > 0) /* the folders as they were: the clean-up after the run removes what is left on disk */
+        umount2(mounted[--n], MNT_DETACH);
+    return -1;
 }

@@ -39,4 +39,17 @@ int scratch_private_ipc(void);
  * of all, which scratch_remove_owned clears after the run. */
 int scratch_private_shm(void);
 
+/* After scratch_private_shm, in the same process and namespace: /tmp a tmpfs
+ * of its own of at most 64 MB, not executable, which holds the run's folder
+ * (mounted on `folder`, owned by uid:gid), /var/tmp, /run/lock and /dev/shm,
+ * with `sandbox`, a folder of /tmp, mounted back at its own path (the
+ * suites' copies).  A file's size is limited (RLIMIT_FSIZE), the number of
+ * files is not: 64 MB files written on disk, 5.6 GB in a test of 3 s, could
+ * fill the machine's disk.  Every folder the test may write to is then one
+ * of 64 MB in all, and no file written there can be mapped executable.  The
+ * caller enters `folder` again (its working folder was the one on disk).
+ * -1 where the system allows no new namespace: the folders of all, which
+ * scratch_remove_owned clears after the run. */
+int scratch_private_tmp(const char *sandbox, const char *folder, uid_t uid, gid_t gid);
+
 #endif
