@@ -341,9 +341,10 @@ static void exec_test(char *const argv[], const char *folder, run_kind kind)
             struct rlimit files = {256, 256};
             setrlimit(RLIMIT_NOFILE, &files);
             scratch_private_ipc();           /* no System V or POSIX IPC (scratch.h) */
-            scratch_private_shm();           /* a /dev/shm of its own, of 64 MB */
-            /* a /tmp of its own, of 64 MB, not executable: its folder, /var/tmp, /run/lock, /dev/shm */
-            if (scratch_private_tmp(sandbox, folder, user_uid, user_gid) == 0 && chdir(folder) != 0) {
+            const int own_mounts = scratch_private_shm() == 0; /* a /dev/shm of its own, of 64 MB */
+            /* a /tmp of its own, of 64 MB, not executable: its folder, /var/tmp, /run/lock, /dev/shm; only
+             * in a mount namespace of its own, never over the grader's /tmp */
+            if (own_mounts && scratch_private_tmp(sandbox, folder, user_uid, user_gid) == 0 && chdir(folder) != 0) {
                 fprintf(stderr, "grade: cannot enter the test's folder\n");
                 _exit(127);
             }

