@@ -1096,6 +1096,25 @@ plant "hint: the surfaces without finite bounds never tested" 11_grid grid_march
 plant "hint: a scene's sphere with its shader and source swapped" 04_many_shapes chapters/04_many_shapes/surface.c \
     's|(sphere){s->center, s->radius}, s->shader, s->source)|(sphere){s->center, s->radius}, s->source, s->shader)|' \
     test_box_in_scene "" "each in its own place"
+# A light just above the surface's plane is in front: no tolerance of one's own on n . (light_pos - point) > 0.
+plant "hint: a tolerance on the light behind" 06_shadows shadow.c \
+    's|vec3_dot(sp->n, vec3_sub(light_pos, sp->hit.point)) > 0|vec3_dot(sp->n, vec3_normalize(vec3_sub(light_pos, sp->hit.point))) > (real)1e-6|' \
+    test_light_behind_the_surface "" "a tolerance of one's own in the test of a light behind"
+# The resolution: e_max is the largest of all three extents.
+plant "hint: e_max over x and y only" 11_grid grid_build.c \
+    's|const double largest = fmax(fmax(extent\[0\], extent\[1\]), extent\[2\]);|const double largest = fmax(extent[0], extent[1]);|' \
+    test_resolution "" "e_max, the largest extent, taken over two axes only"
+# The resolution: lambda N is any real, not cut to an integer.
+plant "hint: lambda N cut to an integer" 11_grid grid_build.c \
+    's|double wanted = fmin(density \* (double)surfaces, (double)max_cells);|double wanted = fmin((double)(long)(density * (double)surfaces), (double)max_cells);|' \
+    test_resolution "" "lambda N cut to an integer"
+# The resolution's shrink: by a tenth at most a try, and again until the cap holds.
+plant "hint: the shrink without its floor of 0.9" 11_grid grid_build.c \
+    's|s \*= fmax(0.9, 0.99 \* pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1)));|s *= 0.99 * pow((double)max_cells / cells, 1.0 / (spanned ? spanned : 1));|' \
+    test_resolution "" "s shrinks by a tenth at most a try"
+plant "hint: the cap given up after three tries" 11_grid grid_build.c \
+    's|^    for (;;) {|    for (int tries = 0; tries < 3; tries++) {|' \
+    test_resolution "" "shrink s and round again, as many times as it takes"
 # The untouched skeleton: no guessed mistake, the placeholder named.
 plant "hint: an untouched exercise is named, not guessed at" 07_blinn_phong skeleton "" \
     test_exponent_behaviour "likely mistake: [^n]" "is still an exercise" "likely mistake: none yet"

@@ -189,6 +189,18 @@ static void test_light_behind_the_surface(void **state)
                  "expected blocked, no shadow ray\n    likely mistake: a light with n . (light_pos - point) = 0 "
                  "is blocked as one behind: only n . (light_pos - point) > 0 is in front (> 0, not >= 0)",
                  blocked ? "blocked" : "not blocked", (unsigned long long)rays[RAY_SHADOW]);
+    /* A light just above that plane, 1e-3 up and 36000 away (n . l = 2.8e-8): in front, however grazing.  Its
+     * shadow ray runs above the plane all the way: it starts above the point (by eps_bound, 8.3e-5 at most in
+     * float, far less than 1e-3) and rises to the light: not blocked, one ray. */
+    rays[RAY_SHADOW] = 0;
+    blocked = light_blocked(&view->tr, &sp, vec3_add(sp.hit.point, vec3_make(30000, (real)1e-3, 20000)), EPS_BOUND,
+                            rays);
+    if (blocked || rays[RAY_SHADOW] != 1)
+        fail_msg("light_blocked with a light 1e-3 above the floor's plane, 36000 from the point: %s, %llu shadow rays; "
+                 "expected not blocked, one shadow ray\n    likely mistake: a tolerance of one's own in the test of a "
+                 "light behind: only n . (light_pos - point) <= 0 is behind, and any n . (light_pos - point) > 0, "
+                 "however small, is in front",
+                 blocked ? "blocked" : "not blocked", (unsigned long long)rays[RAY_SHADOW]);
     shading_release(view);
     scene_free(&desc);
 }

@@ -138,6 +138,9 @@ static void expect_resolution(const double extent[3], long surfaces, double dens
                                             "cells, at least one (README, \"The grid's box and resolution\", step 1)"},
         {fmax(trunc(density) * (double)surfaces, 1), 0, S_RIGHT, round, true,
          "the density cut to an integer: lambda is any real above 0, lambda N cells (README, \"Knobs\")"},
+        {fmax(trunc(lambda_n), 1), 0, S_RIGHT, round, true,
+         "lambda N cut to an integer (the cells wanted held in an integer type): the first try is s for lambda N "
+         "cells, any real (README, \"The grid's box and resolution\", step 1)"},
         {fmax(round(density) * (double)surfaces, 1), 0, S_RIGHT, round, true,
          "the density rounded to an integer: lambda is any real above 0, lambda N cells (README, \"Knobs\")"},
     };
@@ -221,6 +224,22 @@ static void expect_capped_resolution(void)
                      ? "s shrinks by a tenth at most a try (a factor from 0.9 to 1), from the s of min(lambda N, cap) "
                        "cells"
                      : "one s for every axis, n_a = round(e_a s): the cells stay cubic");
+    /* Many shrinks: a box 8 x 4 x 0.01 capped at 3 (1000 surfaces, density 1).  The first try, s0 = (3 / (1 x 0.5 x
+     * 0.00125))^(1/3) = 16.87 cells per e_max, gives 17 x 8 x 1 = 136 (z's 0.02 raised to one cell).  The product
+     * is 1 below s = 1.5, 2 x 1 x 1 from there, 3 x 1 x 1 from 2.5 and 3 x 2 x 1 = 6 from 3: every try before the
+     * last had s >= 3, the last is below 3 and at least 0.9 of the one before, so 2.7 <= s < 3: 3 x 1 x 1, some
+     * fifteen tries from s0 whatever the factors from 0.9 to 1.  One shrink by 0.99 (3 / 136)^(1/3) = 0.28 and two
+     * more of its kind land at s = 2.44, 2 x 1 x 1; a loop that gives up after a few tries stays above the cap. */
+    grid_resolution((const double[3]){8, 4, 0.01}, 1000, 1, 3, n);
+    if (n[0] != 3 || n[1] != 1 || n[2] != 1)
+        fail_msg("grid_resolution(extent 8 x 4 x 0.01, 1000 surfaces, density 1, cap 3)\n    expected 3 x 1 x 1 cells "
+                 "(the first try 17 x 8 x 1, then some fifteen shrinks)\n    got      %d x %d x %d\n    likely "
+                 "mistake: %s",
+                 n[0], n[1], n[2],
+                 (double)n[0] * n[1] * n[2] > 3
+                     ? "the cap: while n_x n_y n_z is above it, shrink s and round again, as many times as it takes"
+                     : "s shrinks by a tenth at most a try (a factor from 0.9 to 1): a larger shrink jumps past the "
+                       "counts that fit");
 }
 
 /* The resolution follows the density and the box's shape, within the cap. */
@@ -232,6 +251,9 @@ static void test_resolution(void **state)
     /* A density need not be an integer: 2.5 per surface, 2500 cells, s = (2500 / 64)^(1/3) = 3.393 cells per
      * unit, n = round of 27.14, 6.79 and 13.57 (2 or 3 per surface would give 25 x 6 x 13 or 29 x 7 x 14) */
     expect_resolution((const double[3]){8, 2, 4}, 1000, 2.5, 1L << 20, (const int[3]){27, 7, 14});
+    /* Nor need lambda N be one: 3 surfaces at 1.9 want 5.7 cells, s = (5.7 / 64)^(1/3) = 0.4465 cells per unit,
+     * n = round of 3.572, 0.893 and 1.786: 4 x 1 x 2 (lambda N cut to 5 cells: s = 0.4275, 3 x 1 x 2) */
+    expect_resolution((const double[3]){8, 2, 4}, 3, 1.9, 1L << 20, (const int[3]){4, 1, 2});
     /* The same box 2^1000 and 2^-990 times as large: its extents relative to the largest are again exactly 1,
      * 1/4 and 1/2, and so are the counts.  The extents' own product, 2^3006 or 2^-2964, overflows to infinity
      * (s = 0: one cell an axis) or underflows to 0 (s infinite, held at 1e300: counts set by that bound). */
@@ -251,6 +273,19 @@ static void test_resolution(void **state)
     /* flat in y: x and z share 1024 cells, s = (1024 / 32)^(1/2) = sqrt 32 = 5.657: round(45.25) = 45 and
      * round(22.63) = 23 */
     expect_resolution((const double[3]){8, 0, 4}, 512, 2, 1L << 20, (const int[3]){45, 1, 23});
+    /* flat in x and y, a line along z: k = 1, s = 100 cells per e_max = e_z, 1 x 1 x 100.  e_max is the largest
+     * of all three extents: taken over two axes it is 0 here, and e_z / 0 is infinite */
+    {
+        int line[3];
+        grid_resolution((const double[3]){0, 0, 8}, 100, 1, 1L << 20, line);
+        if (line[0] != 1 || line[1] != 1 || line[2] != 100)
+            fail_msg("grid_resolution(extent 0 x 0 x 8, 100 surfaces, density 1, cap 2^20: a line along z)\n"
+                     "    expected 1 x 1 x 100 cells\n    got      %d x %d x %d\n    likely mistake: %s",
+                     line[0], line[1], line[2],
+                     line[2] == 1 ? "e_max, the largest extent, taken over two axes only: it is the largest of all "
+                                    "three (here z's, the one axis above 0)"
+                                  : "one spanned axis: s = min(lambda N, cap) / (e_z / e_max), n_z = round(e_z s)");
+    }
     /* thin in y: s = (8000 / 0.32)^(1/3) = 29.24, e_y s = 0.29 rounds to 0, yet y is spanned: one cell;
      * round(233.92) = 234, round(116.96) = 117 */
     expect_resolution((const double[3]){8, 0.01, 4}, 1000, 8, 1L << 20, (const int[3]){234, 1, 117});
