@@ -374,12 +374,17 @@ rparen := )
 # chapter $$c (files $$ex) checked before their suite is run
 # (tools/check-exercise.sh): a refusal removes SUITE and goes into its log
 # (and, with print, on the terminal); a match of the reference's code is
-# flagged on the terminal (with print) only, for the instructor.
+# flagged on the terminal (with print) only, for the instructor.  The check
+# runs as root on the student's text: it has what is left of the grading's
+# budget, as a compile does, so that no slow path of it outlasts the budget.
 grade_check = $(if $(filter chapters,$(SOURCE)),if [ -x $1 ]; then \
+	    left=$$(( GRADE_DEADLINE - $$(date +%s) )); [ "$$left" -ge 1 ] || left=1; \
 	    CC="$(CC)" CPPFLAGS="$(CPPFLAGS) $(filter-out -Werror,$(CFLAGS)) $(if $(findstring float,$3),-DRT_REAL_FLOAT)" \
 	        COMPILE_AS=$(GRADE_USER) \
-	        tools/check-exercise.sh $2 chapters/$$c $3/obj/chapters/$$c $$ex >$1.check || { rm -f $1; \
-	        grep refused $1.check >>$1.log; }; \
+	        timeout -k 5 $$left tools/check-exercise.sh $2 chapters/$$c $3/obj/chapters/$$c $$ex >$1.check || { \
+	        rc=$$?; [ $$rc -ne 124 ] && [ $$rc -ne 137 ] || \
+	            echo "$$c: refused: the check of its files took longer than the grading's budget" >>$1.check; \
+	        rm -f $1; grep refused $1.check >>$1.log; }; \
 	    $(if $4,$(BUILD)/tools/grade --clean <$1.check;) fi,true)
 
 # The grader: tools/grade.c, the verdict (judge.c), the scratch folders (scratch.c), the tests' seal (seal.c).

@@ -158,6 +158,9 @@ make_submission() {
             -Xassembler --MD="$root/source/written-by-the-link") &&
             "$here/lto-from-object.sh" "$work/lto.o" >"$sub/lambert.c" &&
             rm -f "$root/source/written-by-the-link" ;; # (written by that compile too, on the student's machine)
+    quote_quadratic) # a pragma's quote that nothing closes, then 80000 \' for QUOTES (its last line's end)
+        { sed '$ s/QUOTES$//' "$here/quote_quadratic.c.in" | head -c -1; yes "\\'" | head -n 80000 | tr -d '\n'
+            echo; } >"$sub/lambert.c" ;;
     readable_source) # the grader's folder left open to the grading user (an instructor grading by hand)
         printf '#include "%s/source/grade.conf"\n' "$root" >"$sub/lambert.c" ;;
     *) cp "$here/$name.c" "$sub/lambert.c" ;;
@@ -169,7 +172,8 @@ cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:
 asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 copy:0 exec_reference:0 symlink:0 memory:0 litter:0
 bad_utf8:0 escape:0 tty:0 oracle:0 hang:0 quote_asm:0 hasinc_asm:0 pragma_quote_asm:0 pragma_quote_nop:0
 asm_statement:0 stop_killer:0 keyring:0 nul:0 c1_escape:0 compile_hang:0 compile_memory:0 many_files:14 many_symbols:0 shm_memory:0 userns_memory:0
-lto_root:0 fork_memory:0 memfd_memory:0 report_spoof:0 socket_memory:0 link_memory:0 junit_nonchar:0 disk_fill:0 readable_source:0 file_exec:0"
+lto_root:0 fork_memory:0 memfd_memory:0 report_spoof:0 socket_memory:0 link_memory:0 junit_nonchar:0 disk_fill:0 readable_source:0 file_exec:0
+quote_quadratic:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -268,6 +272,10 @@ for ring in (-4, -5, libc.syscall(keyctl, 22, -1, -4)):
         [ -n "$wrote" ] && [ "$wrote" -le 64 ] || problem "disk_fill: a test wrote ${wrote:-?} MiB of files (64 MiB files)" ;;
     junit_nonchar) python3 -c 'import sys, xml.etree.ElementTree as x; x.parse(sys.argv[1])' \
         "$root/source/build-grade/junit.xml" 2>/dev/null || problem "junit_nonchar: junit.xml is not well-formed XML" ;;
+    quote_quadratic) [ "$took" -le 30 ] ||
+            problem "quote_quadratic: grading took ${took}s (the check of the file, as root, outside every limit)"
+        grep -q "refused: it holds an unterminated character or string literal" "$work/$name.out" ||
+            problem "quote_quadratic: not refused as an unterminated literal" ;;
     link_memory) [ "$took" -le 30 ] || problem "link_memory: grading took ${took}s (root's link of a 6 GiB section)" ;;
     compile_hang) [ "$took" -le 90 ] || problem "compile_hang: grading took ${took}s (a budget of 40 s)" ;;
     stop_killer) [ "$took" -le 60 ] || problem "stop_killer: grading took ${took}s (a stopped clean-up waited for?)" ;;
