@@ -304,13 +304,16 @@ grade_links = $1: $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addpr
 # A graded suite is linked before its student's objects are checked (tools/check-exercise.sh), and
 # without -fno-lto the linker would compile, as root, any .gnu.lto_ sections an object holds (a
 # top-level asm makes them) with the options they name: -Xassembler --MD=FILE wrote FILE anywhere.
-# The link has a compile's limits (tools/compile-as.sh): an empty section of the object's that the
-# output must hold as zeros (a 6 GiB NOBITS .interp) had root's linker hold 6 GiB, twice.
+# The link has a compile's limits (tools/compile-as.sh), its time included (120 s, or what is left of
+# the grading's budget): an empty section of the object's that the output must hold as zeros (a 6 GiB
+# NOBITS .interp) had root's linker hold 6 GiB, twice.
 define grade_rules
 $(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call seeded,$1)) $(call grade_stages,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
-	$$(QLINK)ulimit -v $$$$(($(GRADE_MEMORY) * 1024)) -f $$$$((64 * 1024)) && \
-	    timeout -k 5 120 $$(call link,$$^) -fno-lto -lcmocka -o $$@
+	$$(QLINK)ulimit -v $$$$(($(GRADE_MEMORY) * 1024)) -f $$$$((64 * 1024)) && limit=120 && \
+	    if [ -n "$$$${GRADE_DEADLINE:-}" ]; then left=$$$$((GRADE_DEADLINE - $$$$(date +%s))); \
+	        [ "$$$$left" -ge "$$$$limit" ] || limit=$$$$left; [ "$$$$limit" -ge 1 ] || limit=1; fi && \
+	    timeout -k 5 $$$$limit $$(call link,$$^) -fno-lto -lcmocka -o $$@
 endef
 $(foreach c,$(CHAPTER_TESTS:test_%=%),$(eval $(call grade_rules,$c)))
 
