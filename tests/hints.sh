@@ -200,6 +200,10 @@ plant "hint: the normal NaN at the centre" 02_sphere sphere.c \
 plant "hint: the normal's guard a fixed epsilon" 02_sphere sphere.c \
     's|return length > 0 ? vec3_scale(m, 1 / length) : m;|return length > REAL_EPSILON ? vec3_scale(m, 1 / length) : m;|' \
     test_normal_unit_far_from_origin "" "a fixed epsilon takes every point of a small"
+# |x - c| by its squares: zero or not unit for a sphere at either end of the range.
+plant "hint: |x - c| as sqrt((x - c).(x - c))" 02_sphere sphere.c \
+    's|real length = vec3_length(m);|real length = real_sqrt(vec3_dot(m, m));|' \
+    test_normal_unit_far_from_origin "" "the squares underflowed to 0"
 plant "hint: the sphere's t == t_min accepted" 02_sphere sphere.c \
     's|if (near > t_min \&\& near < t_max)|if (near >= t_min \&\& near < t_max)|; s|if (far > t_min \&\& far < t_max)|if (far >= t_min \&\& far < t_max)|' \
     test_nearest_root "" "accepted t == t_min: the window \(t_min, t_max\) is open"
@@ -1039,6 +1043,9 @@ plant "hint: t_best a distance, not t" 04_many_shapes closest_hit.c \
 plant "hint: the sphere's normal at the ray's start" 04_many_shapes chapters/04_many_shapes/surface.c \
     's|\*hit = surface_hit_record(s, r, t, n, 0, 0);|*hit = surface_hit_record(s, r, t, vec3_normalize(vec3_sub(r.p, s->sphere.center)), 0, 0);|' \
     test_hit_record_fields "" "pointing out of the sphere"
+plant "hint: the sphere's normal turned towards the ray" 04_many_shapes chapters/04_many_shapes/surface.c \
+    's|\*hit = surface_hit_record(s, r, t, n, 0, 0);|*hit = surface_hit_record(s, r, t, vec3_dot(n, r.d) > 0 ? vec3_neg(n) : n, 0, 0);|' \
+    test_hit_record_fields "" "normal turned towards the ray"
 plant "hint: the shape's face not recorded" 04_many_shapes chapters/04_many_shapes/surface.c \
     's|((surface_list \*)list)->items\[i\].face = s->face;|(void)0;|' \
     test_box_in_scene "" "a Box's triangle"

@@ -771,6 +771,27 @@ static void test_normal_unit_far_from_origin(void **state)
                              "n must be a unit vector: divide by |x - c|", NULL, 0);
         }
     }
+    /* Spheres of radius 2^k and 2^-k at the origin, k three quarters of the exponent range (2^768 in
+     * double, 2^96 in float), whose hits sphere_roots (given) finds at any size: at x = R (0.75, 1, 0),
+     * (x - c).(x - c) overflows to infinity or underflows to 0, while vec3_length (common/vec3.h)
+     * divides by the largest component first and gives |x - c| = 1.25 R exactly.  Then n = (0.6, 0.8, 0)
+     * within two roundings (1 / |x - c|, and the product): 4 eps, as above. */
+    const int k = (REAL_EPSILON < 1e-10 ? 1024 : 128) * 3 / 4;
+    for (int j = 0; j < 2; j++) {
+        const real R = (real)ldexp(1, j ? k : -k);
+        const sphere s = {{0, 0, 0}, R};
+        const vec3 x = vec3_make((real)0.75 * R, R, 0);
+        const char *in = describe("sphere_normal(c = (0, 0, 0), R = 2^%d; x = R (0.75, 1, 0))", j ? k : -k);
+        const suspect_vec3 squared[] = {
+            {j ? vec3_make(0, 0, 0) : x,
+             j ? "|x - c| as sqrt((x - c).(x - c)): the squares overflowed to infinity and n = (x - c) / inf = 0; "
+                 "take |x - c| from vec3_length, which divides by the largest component first"
+               : "|x - c| as sqrt((x - c).(x - c)): the squares underflowed to 0 and the guard returned x - c; take "
+                 "|x - c| from vec3_length, which divides by the largest component first"}};
+        assert_vec3_why(vec3_make((real)0.6, (real)0.8, 0), sphere_normal(&s, x), 4 * REAL_EPSILON,
+                        describe("%s: n", in), "n = (x - c) / |x - c|, |x - c| without overflow or underflow",
+                        squared, N(squared));
+    }
 }
 
 /* ---- graded tests --------------------------------------------------------- */

@@ -437,6 +437,22 @@ static void test_hit_record_fields(void **state)
                     "the sphere's unit normal at the hit point x = p + t d, pointing out of the sphere (README, \"The "
                     "hit record\")",
                     NULL, 0);
+    /* From the sphere's centre up +y (in the triangle's plane z = 0, beside it: M = 0, no hit there): the
+     * ray leaves the sphere at (3, 0.5, 0), t 0.5, and the normal there is still the outward +y, along d.
+     * f = 0, B = 0, disc = 0.25, the roots -0.5 and C / q = 0.5: every number is exact, TOL(1) as above. */
+    const ray from_centre = {{3, 0, 0}, {0, 1, 0}};
+    expect_a_hit(&list, from_centre, 0, REAL_INFINITY, 0, "a hit on surface 0, the sphere seen from inside, at t 0.5",
+                 NO_HIT_HINT, &hit);
+    assert_int_equal(0, hit.surface);
+    assert_close(0.5, hit.t, TOL(1));
+    const suspect_vec3 turned[] = {{vec3_make(0, -1, 0), "the sphere's normal turned towards the ray: a sphere's "
+                                                          "normal points out of the sphere from whichever side the "
+                                                          "ray comes (README, \"The hit record\")"}};
+    assert_vec3_why(vec3_make(0, 1, 0), hit.normal, TOL(1),
+                    "the sphere centre (3, 0, 0), radius 0.5, ray p (3, 0, 0) (its centre), d (0, 1, 0): hit.normal",
+                    "the sphere's unit normal at the hit point, pointing out of the sphere, not turned towards the "
+                    "ray (README, \"The hit record\")",
+                    turned, 1);
     surface_list_free(&list);
 }
 
