@@ -307,8 +307,12 @@ grade_links = $1: $(if $(filter chapters,$(SOURCE)),$(if $(EXERCISES_$1),$(addpr
 # The link has a compile's limits (tools/compile-as.sh), its time included (120 s, or what is left of
 # the grading's budget): an empty section of the object's that the output must hold as zeros (a 6 GiB
 # NOBITS .interp) had root's linker hold 6 GiB, twice.
+# A graded suite links its chapter's lab only when the suite uses it (chapters 03 and 06): any global
+# function of the lab is the student's to call, and chapter 11's fast grid holds the exercise's own
+# grid_cell_range ("the same arithmetic and the same answers").
+grade_lab_objs = $(if $(shell grep -l '$1/lab/' tests/test_$1.c $(call seeded,$1) 2>/dev/null),$(call lab_objs,$1))
 define grade_rules
-$(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call seeded,$1)) $(call grade_stages,$1) $(call lab_objs,$1) $(call objs,$(COMMON_SRC))
+$(GRADE_DIR)/test_$1: $(call objs,tests/test_$1.c $(TEST_SUPPORT) $(call seeded,$1)) $(call grade_stages,$1) $(call grade_lab_objs,$1) $(call objs,$(COMMON_SRC))
 	@mkdir -p $$(@D)
 	$$(QLINK)ulimit -v $$$$(($(GRADE_MEMORY) * 1024)) -f $$$$((64 * 1024)) && limit=120 && \
 	    if [ -n "$$$${GRADE_DEADLINE:-}" ]; then left=$$$$((GRADE_DEADLINE - $$$$(date +%s))); \

@@ -202,7 +202,7 @@ plant "hint: the normal's guard a fixed epsilon" 02_sphere sphere.c \
     test_normal_unit_far_from_origin "" "a fixed epsilon takes every point of a small"
 # |x - c| by its squares: zero or not unit for a sphere at either end of the range.
 plant "hint: |x - c| as sqrt((x - c).(x - c))" 02_sphere sphere.c \
-    's|real length = vec3_length(m);|real length = real_sqrt(vec3_dot(m, m));|' \
+    's|length = vec3_length(m)|length = real_sqrt(vec3_dot(m, m))|' \
     test_normal_unit_far_from_origin "" "the squares underflowed to 0"
 plant "hint: the sphere's t == t_min accepted" 02_sphere sphere.c \
     's|if (near > t_min \&\& near < t_max)|if (near >= t_min \&\& near < t_max)|; s|if (far > t_min \&\& far < t_max)|if (far >= t_min \&\& far < t_max)|' \

@@ -172,7 +172,7 @@ cases="correct:14 alternative:14 empty:0 ctor_token:0 stack_token:0 define_fail:
 asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 copy:0 exec_reference:0 symlink:0 memory:0 litter:0
 bad_utf8:0 escape:0 tty:0 oracle:0 hang:0 quote_asm:0 hasinc_asm:0 pragma_quote_asm:0 pragma_quote_nop:0
 asm_statement:0 stop_killer:0 keyring:0 nul:0 c1_escape:0 compile_hang:0 compile_memory:0 many_files:14 many_symbols:0 shm_memory:0 userns_memory:0
-lto_root:0 fork_memory:0 memfd_memory:0 report_spoof:0 socket_memory:0 link_memory:0 junit_nonchar:0 disk_fill:0 readable_source:0 file_exec:0
+lto_root:0 fork_memory:0 memfd_memory:0 report_spoof:0 socket_memory:0 link_memory:0 junit_nonchar:0 disk_fill:0 readable_source:0 file_exec:0 devzero_exec:0
 quote_quadratic:0"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }

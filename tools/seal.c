@@ -52,6 +52,10 @@ int seal(int one_process)
 #endif
         IF_EQUAL(SYS_io_uring_setup, 0, 1),
         REFUSE(ENOSYS),
+#ifdef SYS_userfaultfd
+        IF_EQUAL(SYS_userfaultfd, 0, 1), /* pages filled by the process itself: no test needs them */
+        REFUSE(ENOSYS),
+#endif
         IF_EQUAL(SYS_memfd_create, 0, 1), /* a file held in memory, outside RLIMIT_AS */
         REFUSE(EACCES),
         IF_EQUAL(SYS_socket, 0, 4), /* any family but AF_UNIX */
@@ -59,12 +63,15 @@ int seal(int one_process)
         IF_EQUAL(AF_UNIX, 0, 1),
         ALLOW,
         REFUSE(EACCES),
-        IF_EQUAL(SYS_mmap, 0, 8), /* PROT_EXEC of anonymous or writable memory */
+        /* PROT_EXEC of anonymous or writable memory, or of a shared mapping: mremap with an old size of 0
+         * makes a second mapping of a shared one's pages (of /dev/zero: memory), which mprotect may make
+         * writable, and what is written through it runs through the first */
+        IF_EQUAL(SYS_mmap, 0, 8),
         ARG(2),
         IF_BITS(PROT_EXEC, 0, 5),
         IF_BITS(PROT_WRITE, 3, 0),
         ARG(3),
-        IF_BITS(MAP_ANONYMOUS, 1, 0),
+        IF_BITS(MAP_ANONYMOUS | MAP_SHARED, 1, 0), /* MAP_SHARED_VALIDATE holds MAP_SHARED's bit */
         ALLOW,
         REFUSE(EACCES),
         ALLOW,
