@@ -170,6 +170,20 @@ static void expect_resolution(const double extent[3], long surfaces, double dens
              extent[0], extent[1], extent[2], surfaces, density, cap, want[0], want[1], want[2], n[0], n[1], n[2], why);
 }
 
+/* grid_resolution(box, surfaces, density, cap) must give exactly `want` (`why`, in the message); a product
+ * above the cap names `over_cap` as the likely mistake, any other count `otherwise`. */
+static void expect_cells(const double box[3], long surfaces, double density, long cap, const int want[3],
+                         const char *why, const char *over_cap, const char *otherwise)
+{
+    int n[3];
+    grid_resolution(box, surfaces, density, cap, n);
+    if (n[0] != want[0] || n[1] != want[1] || n[2] != want[2])
+        fail_msg("grid_resolution(extent %g x %g x %g, %ld surfaces, density %g, cap %ld)\n    expected %d x %d x %d "
+                 "cells (%s)\n    got      %d x %d x %d\n    likely mistake: %s",
+                 box[0], box[1], box[2], surfaces, density, cap, want[0], want[1], want[2], why, n[0], n[1], n[2],
+                 (double)n[0] * n[1] * n[2] > (double)cap ? over_cap : otherwise);
+}
+
 /* The cap, on a box 8 x 2 x 4 (volume 64) with 1000 surfaces at density 8.
  * Capped at 1000 the first try fits: s0 = (1000 / 64)^(1/3) = 2.5 gives
  * exactly 20 x 5 x 10.  Capped at 990, s0 = 2.4915 gives 20 x 5 x 10 too,
@@ -197,16 +211,10 @@ static void expect_capped_resolution(void)
     /* lambda N = 5000 over the cap 4096: the first try is s for the cap's 4096 cells, (4096 / 64)^(1/3) = 4,
      * and 32 x 8 x 16 = 4096 fits at once.  A first try for lambda N = 5000 cells, s = 4.27, gives 34 x 9 x
      * 17 = 5202, and one shrink by 0.99 (4096 / 5202)^(1/3) = 0.914 lands below: 31 x 8 x 16. */
-    grid_resolution(box, 1000, 5, 4096, n);
-    if (n[0] != 32 || n[1] != 8 || n[2] != 16)
-        fail_msg("grid_resolution(extent 8 x 2 x 4, 1000 surfaces, density 5, cap 4096)\n    expected 32 x 8 x 16 "
-                 "cells (s = (4096 / 64)^(1/3) = 4: the first try fits)\n    got      %d x %d x %d\n    likely "
-                 "mistake: %s",
-                 n[0], n[1], n[2],
-                 (double)n[0] * n[1] * n[2] > 4096
-                     ? "the cap: while n_x n_y n_z is above it, shrink s and round again"
-                     : "the first try's s from lambda N cells, above the cap: it is s for min(lambda N, C) cells, "
-                       "here the cap's 4096, which fit at once (or a product equal to the cap shrunk: > C, not >= C)");
+    expect_cells(box, 1000, 5, 4096, (const int[3]){32, 8, 16}, "s = (4096 / 64)^(1/3) = 4: the first try fits",
+                  "the cap: while n_x n_y n_z is above it, shrink s and round again",
+                  "the first try's s from lambda N cells, above the cap: it is s for min(lambda N, C) cells, here the "
+                  "cap's 4096, which fit at once (or a product equal to the cap shrunk: > C, not >= C)");
     grid_resolution(box, 1000, 8, 990, n);
     const int lowest[3] = {18, 4, 9}, highest[3] = {20, 5, 10};
     const double cells = (double)n[0] * n[1] * n[2];
@@ -230,16 +238,11 @@ static void expect_capped_resolution(void)
      * last had s >= 3, the last is below 3 and at least 0.9 of the one before, so 2.7 <= s < 3: 3 x 1 x 1, some
      * fifteen tries from s0 whatever the factors from 0.9 to 1.  One shrink by 0.99 (3 / 136)^(1/3) = 0.28 and two
      * more of its kind land at s = 2.44, 2 x 1 x 1; a loop that gives up after a few tries stays above the cap. */
-    grid_resolution((const double[3]){8, 4, 0.01}, 1000, 1, 3, n);
-    if (n[0] != 3 || n[1] != 1 || n[2] != 1)
-        fail_msg("grid_resolution(extent 8 x 4 x 0.01, 1000 surfaces, density 1, cap 3)\n    expected 3 x 1 x 1 cells "
-                 "(the first try 17 x 8 x 1, then some fifteen shrinks)\n    got      %d x %d x %d\n    likely "
-                 "mistake: %s",
-                 n[0], n[1], n[2],
-                 (double)n[0] * n[1] * n[2] > 3
-                     ? "the cap: while n_x n_y n_z is above it, shrink s and round again, as many times as it takes"
-                     : "s shrinks by a tenth at most a try (a factor from 0.9 to 1): a larger shrink jumps past the "
-                       "counts that fit");
+    expect_cells((const double[3]){8, 4, 0.01}, 1000, 1, 3, (const int[3]){3, 1, 1},
+                  "the first try 17 x 8 x 1, then some fifteen shrinks",
+                  "the cap: while n_x n_y n_z is above it, shrink s and round again, as many times as it takes",
+                  "s shrinks by a tenth at most a try (a factor from 0.9 to 1): a larger shrink jumps past the counts "
+                  "that fit");
 }
 
 /* The resolution follows the density and the box's shape, within the cap. */
