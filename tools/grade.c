@@ -283,7 +283,11 @@ static int drain(int fd, buffer *b, size_t limit)
 /* The lines a test printed, from b->s + from on, made to read as its own:
  * one that begins as the grader's notes do ("grade: ", "float build") gets
  * "the test printed: " before it, and the last ends in a newline, so that
- * the grader's note that follows starts a line of its own.  Otherwise a test
+ * the grader's note that follows starts a line of its own.  A line that
+ * holds those words anywhere is marked so: one after a space, or after a
+ * character that shows as nothing (U+200B), read as the grader's too (and
+ * the print and the reports show such a character as '?', U+FFFD: see
+ * bidi_control).  Otherwise a test
  * could print "grade: passed" and end its output without a newline, and the
  * terminal then showed its line as the grader's and left out the grader's
  * own, glued to the test's fifth line (print_reason). */
@@ -297,9 +301,13 @@ static void own_lines(buffer *b, size_t from)
     for (size_t at = from; at < b->len;) {
         const char *end = memchr(b->s + at, '\n', b->len - at);
         size_t n = end ? (size_t)(end - (b->s + at)) + 1 : b->len - at;
-        for (int k = 0; reserved[k]; k++)
-            if (strncmp(b->s + at, reserved[k], strlen(reserved[k])) == 0)
-                buf_str(&mine, "the test printed: ");
+        int marked = 0; /* the reserved words anywhere in the line: after a space or a character
+                           that shows as nothing, the line read as the grader's all the same */
+        for (int k = 0; reserved[k] && !marked; k++)
+            for (size_t i = at, len = strlen(reserved[k]); !marked && i + len <= at + n; i++)
+                marked = memcmp(b->s + i, reserved[k], len) == 0;
+        if (marked)
+            buf_str(&mine, "the test printed: ");
         buf_add(&mine, b->s + at, n);
         at += n;
     }
@@ -535,14 +543,24 @@ static int utf8_length(const unsigned char *p);
  * (U+061C, U+200E, U+200F, U+202A to U+202E, U+2066 to U+2069): an override
  * turns the rest of its line around on screen, in a terminal that follows
  * them and in a browser, so that a test's line, or the compiler's quote of a
- * submitted line, would show other words than it holds. */
+ * submitted line, would show other words than it holds; or is a format
+ * character that shows as nothing (U+00AD, U+034F, U+180E, U+200B to U+200D,
+ * U+2060 to U+2064, U+206A to U+206F, U+FEFF, U+FFF9 to U+FFFB, the tags
+ * U+E0001 and U+E0020 to U+E007F): before "grade: passed" it made a test's
+ * line read as the grader's note, which a test's line may not begin as
+ * (own_lines), and inside the words it hid them from that comparison. */
 static int bidi_control(const unsigned char *p, int len)
 {
     if (len == 2)
-        return p[0] == 0xD8 && p[1] == 0x9C;
-    return len == 3 && p[0] == 0xE2 &&
-           ((p[1] == 0x80 && (p[2] == 0x8E || p[2] == 0x8F || (p[2] >= 0xAA && p[2] <= 0xAE))) ||
-            (p[1] == 0x81 && p[2] >= 0xA6 && p[2] <= 0xA9));
+        return (p[0] == 0xD8 && p[1] == 0x9C) || (p[0] == 0xC2 && p[1] == 0xAD) || (p[0] == 0xCD && p[1] == 0x8F);
+    if (len == 4) /* the tags: U+E0001, U+E0020 to U+E007F */
+        return p[0] == 0xF3 && p[1] == 0xA0 && ((p[2] == 0x80 && (p[3] == 0x81 || p[3] >= 0xA0)) || p[2] == 0x81);
+    return len == 3 && ((p[0] == 0xE2 && ((p[1] == 0x80 && p[2] >= 0x8B && p[2] <= 0x8F) ||
+                                          (p[1] == 0x80 && p[2] >= 0xAA && p[2] <= 0xAE) ||
+                                          (p[1] == 0x81 && p[2] >= 0xA0 && p[2] <= 0xAF && p[2] != 0xA5))) ||
+                        (p[0] == 0xE1 && p[1] == 0xA0 && p[2] == 0x8E) ||
+                        (p[0] == 0xEF && p[1] == 0xBB && p[2] == 0xBF) ||
+                        (p[0] == 0xEF && p[1] == 0xBF && p[2] >= 0xB9 && p[2] <= 0xBB));
 }
 
 /* Prints at most n bytes of s, a text of the test's or the compiler's, for a

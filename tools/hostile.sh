@@ -39,7 +39,9 @@
 # write a file where they say, an empty section that root's link must write
 # out as 6 GiB of zeros, memory in child processes and in memory files
 # (memfd) and in local sockets' buffers, a test's lines that read as the grader's notes and hid them (no
-# newline at the end, a right-to-left override); besides the correct solution, a correct
+# newline at the end, a right-to-left override, a character that shows as
+# nothing before them), a flood of control characters from threads (the cap on
+# a test's output, in results.json); besides the correct solution, a correct
 # one written otherwise and an empty submission.  Prints one line per
 # submission (score, expected, what was checked) and fails naming every
 # expectation that does not hold (HOSTILE_ONLY="table hang" runs only
@@ -173,7 +175,7 @@ asm_reference:0 line_asm:0 ansi_asm:0 section_asm:0 local_ifunc:0 copy:0 exec_re
 bad_utf8:0 escape:0 tty:0 oracle:0 hang:0 quote_asm:0 hasinc_asm:0 pragma_quote_asm:0 pragma_quote_nop:0
 asm_statement:0 stop_killer:0 keyring:0 nul:0 c1_escape:0 compile_hang:0 compile_memory:0 many_files:14 many_symbols:0 shm_memory:0 userns_memory:0
 lto_root:0 fork_memory:0 memfd_memory:0 report_spoof:0 socket_memory:0 link_memory:0 junit_nonchar:0 disk_fill:0 readable_source:0 file_exec:0 devzero_exec:0
-quote_quadratic:0"
+quote_quadratic:0 zw_spoof:0 output_flood:14"
 problems=0
 problem() { echo "  PROBLEM: $*"; problems=$((problems + 1)); }
 printf '%-18s %6s %8s %6s  %s\n' submission score expected time notes
@@ -276,6 +278,21 @@ for ring in (-4, -5, libc.syscall(keyctl, 22, -1, -4)):
             problem "quote_quadratic: grading took ${took}s (the check of the file, as root, outside every limit)"
         grep -q "refused: it holds an unterminated character or string literal" "$work/$name.out" ||
             problem "quote_quadratic: not refused as an unterminated literal" ;;
+    zw_spoof) # no line of the test's reads as the grader's once invisible characters (Unicode format, Cf) are left out
+        python3 -c 'import json, re, sys, unicodedata
+seen = lambda line: "".join(c for c in line if unicodedata.category(c) != "Cf")
+spoof = re.compile(r"(grade: passed|float build \(REAL=float\): passed)")
+out = [l for l in open(sys.argv[1], encoding="utf-8", errors="replace").read().split("\n") if spoof.match(seen(l)[8:])
+       and seen(l).startswith(" " * 8) and not seen(l).startswith(" " * 9) and not spoof.match(l[8:])]
+res = [l for t in json.load(open(sys.argv[2]))["tests"] for l in t["output"].split("\n")
+       if spoof.match(seen(l)) and not spoof.match(l)]
+print(len(out), len(res)); sys.exit(bool(out or res))' "$work/$name.out" "$json" >"$work/$name.spoof" ||
+            problem "zw_spoof: a test's line shown as the grader's (terminal, results.json):" \
+                "$(cat "$work/$name.spoof")" ;;
+    output_flood) size=$(stat -c %s "$json" 2>/dev/null || echo 0)
+        echo "  (results.json: $size bytes, junit.xml: $(stat -c %s "$root/source/build-grade/junit.xml") bytes)"
+        [ "$size" -le 2097152 ] || problem "output_flood: results.json holds $size bytes" \
+            "(9 tests, 16 KiB of output a run, 6 bytes a control character: under 2 MiB)" ;;
     link_memory) [ "$took" -le 30 ] || problem "link_memory: grading took ${took}s (root's link of a 6 GiB section)" ;;
     compile_hang) [ "$took" -le 90 ] || problem "compile_hang: grading took ${took}s (a budget of 40 s)" ;;
     stop_killer) [ "$took" -le 60 ] || problem "stop_killer: grading took ${took}s (a stopped clean-up waited for?)" ;;
