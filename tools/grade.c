@@ -287,7 +287,7 @@ static int drain(int fd, buffer *b, size_t limit)
  * holds those words anywhere is marked so: one after a space, or after a
  * character that shows as nothing (U+200B), read as the grader's too (and
  * the print and the reports show such a character as '?', U+FFFD: see
- * bidi_control).  Otherwise a test
+ * format_control).  Otherwise a test
  * could print "grade: passed" and end its output without a newline, and the
  * terminal then showed its line as the grader's and left out the grader's
  * own, glued to the test's fifth line (print_reason). */
@@ -549,7 +549,7 @@ static int utf8_length(const unsigned char *p);
  * U+E0001 and U+E0020 to U+E007F): before "grade: passed" it made a test's
  * line read as the grader's note, which a test's line may not begin as
  * (own_lines), and inside the words it hid them from that comparison. */
-static int bidi_control(const unsigned char *p, int len)
+static int format_control(const unsigned char *p, int len)
 {
     if (len == 2)
         return (p[0] == 0xD8 && p[1] == 0x9C) || (p[0] == 0xC2 && p[1] == 0xAD) || (p[0] == 0xCD && p[1] == 0x8F);
@@ -565,17 +565,17 @@ static int bidi_control(const unsigned char *p, int len)
 
 /* Prints at most n bytes of s, a text of the test's or the compiler's, for a
  * terminal: a control character but tab and newline, a C1 control (U+0080
- * to U+009F, which terminals obey too), a control of the text's direction
- * (bidi_control) and a byte that is not well-formed UTF-8 each as '?', so
- * that no escape sequence of a submission's reaches the terminal (to clear
- * it, or hide the score table that follows). */
+ * to U+009F, which terminals obey too), a control of the text's direction or
+ * a character that shows as nothing (format_control) and a byte that is not
+ * well-formed UTF-8 each as '?', so that no escape sequence of a submission's
+ * reaches the terminal (to clear it, or hide the score table that follows). */
 static void print_clean(const char *s, size_t n)
 {
     const unsigned char *p = (const unsigned char *)s, *end = p + n;
     while (p < end && *p) {
         int len = utf8_length(p);
         if (len == 0 || (len == 1 && ((*p < 0x20 && *p != '\t' && *p != '\n') || *p == 0x7F)) ||
-            (p[0] == 0xC2 && p[1] <= 0x9F) || bidi_control(p, len) || p + len > end) {
+            (p[0] == 0xC2 && p[1] <= 0x9F) || format_control(p, len) || p + len > end) {
             putchar('?');
             p += len ? len : 1;
         } else {
@@ -821,7 +821,8 @@ static int utf8_length(const unsigned char *p)
 /* Writes s as the body of a JSON string (or XML text when xml): control
  * characters escaped (XML: replaced), and every byte that is not part of
  * well-formed UTF-8 replaced by U+FFFD, so the file is always valid UTF-8;
- * a control of the text's direction (bidi_control) is replaced too. */
+ * a control of the text's direction or a character that shows as nothing
+ * (format_control) is replaced too. */
 static void put_escaped(FILE *f, const char *s, int xml)
 {
     const unsigned char *p = (const unsigned char *)s;
@@ -834,7 +835,7 @@ static void put_escaped(FILE *f, const char *s, int xml)
             continue;
         }
         if (n > 1) {
-            if (bidi_control(p, n) || (xml && n == 3 && p[0] == 0xEF && p[1] == 0xBF && p[2] >= 0xBE))
+            if (format_control(p, n) || (xml && n == 3 && p[0] == 0xEF && p[1] == 0xBF && p[2] >= 0xBE))
                 fputs("\xEF\xBF\xBD", f); /* U+FFFD: the direction of text is not the test's to set, and
                                                 XML 1.0 allows no U+FFFE or U+FFFF */
             else
