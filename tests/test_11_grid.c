@@ -212,9 +212,9 @@ static void expect_capped_resolution(void)
      * and 32 x 8 x 16 = 4096 fits at once.  A first try for lambda N = 5000 cells, s = 4.27, gives 34 x 9 x
      * 17 = 5202, and one shrink by 0.99 (4096 / 5202)^(1/3) = 0.914 lands below: 31 x 8 x 16. */
     expect_cells(box, 1000, 5, 4096, (const int[3]){32, 8, 16}, "s = (4096 / 64)^(1/3) = 4: the first try fits",
-                  "the cap: while n_x n_y n_z is above it, shrink s and round again",
-                  "the first try's s from lambda N cells, above the cap: it is s for min(lambda N, C) cells, here the "
-                  "cap's 4096, which fit at once (or a product equal to the cap shrunk: > C, not >= C)");
+                 "the cap: while n_x n_y n_z is above it, shrink s and round again",
+                 "the first try's s from lambda N cells, above the cap: it is s for min(lambda N, C) cells, here the "
+                 "cap's 4096, which fit at once (or a product equal to the cap shrunk: > C, not >= C)");
     grid_resolution(box, 1000, 8, 990, n);
     const int lowest[3] = {18, 4, 9}, highest[3] = {20, 5, 10};
     const double cells = (double)n[0] * n[1] * n[2];
@@ -239,10 +239,10 @@ static void expect_capped_resolution(void)
      * fifteen tries from s0 whatever the factors from 0.9 to 1.  One shrink by 0.99 (3 / 136)^(1/3) = 0.28 and two
      * more of its kind land at s = 2.44, 2 x 1 x 1; a loop that gives up after a few tries stays above the cap. */
     expect_cells((const double[3]){8, 4, 0.01}, 1000, 1, 3, (const int[3]){3, 1, 1},
-                  "the first try 17 x 8 x 1, then some fifteen shrinks",
-                  "the cap: while n_x n_y n_z is above it, shrink s and round again, as many times as it takes",
-                  "s shrinks by a tenth at most a try (a factor from 0.9 to 1): a larger shrink jumps past the counts "
-                  "that fit");
+                 "the first try 17 x 8 x 1, then some fifteen shrinks",
+                 "the cap: while n_x n_y n_z is above it, shrink s and round again, as many times as it takes",
+                 "s shrinks by a tenth at most a try (a factor from 0.9 to 1): a larger shrink jumps past the counts "
+                 "that fit");
 }
 
 /* The resolution follows the density and the box's shape, within the cap. */
